@@ -1,0 +1,68 @@
+#include "core/baselines/optimal_search.h"
+
+#include <limits>
+#include <set>
+#include <utility>
+
+#include "core/baselines/greedy_policy.h"
+#include "core/env/reward.h"
+#include "core/geometry/part_boundary.h"
+
+namespace autoblock {
+
+OptimalSearch::OptimalSearch(double face_size, double seconds)
+    : face_size_(face_size),
+      limited_(seconds > 0),
+      deadline_(std::chrono::steady_clock::now() +
+                std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(
+                    seconds > 0 ? seconds : 0.0))) {}
+
+double OptimalSearch::value(const Part& part) { return part.is_rectangle() ? 0.0 : solve(part).value; }
+
+AxisLine OptimalSearch::best_line(const Part& part) { return solve(part).line; }
+
+const OptimalSearch::Entry& OptimalSearch::solve(const Part& part) {
+  const auto found = memo_.find(part);
+  if (found != memo_.end()) return found->second;
+  if (limited_ && (++calls_ & 255) == 0 && std::chrono::steady_clock::now() > deadline_) throw TimeLimit();
+
+  std::set<std::pair<int, int>> lines;  // (direction, index), each line once
+  for (const CornerRing& loop : part_boundary(part)) {
+    for (const Corner& c : loop) {
+      lines.emplace(static_cast<int>(CutDirection::Horizontal), c.j);
+      lines.emplace(static_cast<int>(CutDirection::Vertical), c.i);
+    }
+  }
+  Entry best{-std::numeric_limits<double>::infinity(), AxisLine{}};
+  for (const auto& [direction, index] : lines) {
+    const AxisLine line{static_cast<CutDirection>(direction), index};
+    if (!line_crosses_interior(part, line)) continue;
+    const std::vector<Part> pieces = cut_part(part, line);
+    double total = paper_reward(pieces, face_size_);
+    for (const Part& piece : pieces) total += value(piece);
+    if (total > best.value) best = Entry{total, line};
+  }
+  return memo_.emplace(part, best).first->second;
+}
+
+OptimalPolicy::OptimalPolicy(double face_size, double seconds) : search_(face_size, seconds) {}
+
+Action OptimalPolicy::choose(const Episode& episode) {
+  if (!capped_) {
+    try {
+      const AxisLine line = search_.best_line(episode.current_part());
+      const auto& vertices = episode.current_vertices();
+      for (int v = 0; v < static_cast<int>(vertices.size()); ++v) {
+        const Corner& c = vertices[static_cast<size_t>(v)].corner;
+        if ((line.direction == CutDirection::Vertical ? c.i : c.j) == line.index) return Action{v, line.direction};
+      }
+      throw std::logic_error("OptimalPolicy: the best line passes through no vertex");
+    } catch (const OptimalSearch::TimeLimit&) {
+      capped_ = true;
+    }
+  }
+  GreedyPolicy greedy;
+  return greedy.choose(episode);
+}
+
+}  // namespace autoblock

@@ -1,0 +1,67 @@
+// The maximum episode return, by exact search.
+//
+// A cut's reward depends only on the part it cuts, so the return of an episode is a sum over the
+// tree of parts and does not depend on the order parts are cut in:
+//   V(P) = 0 for a rectangle, else max over lines L through a corner of P that split P of
+//          reward(P, L) + sum of V(piece) over the pieces.
+// Cuts that change nothing (N = 1) never help: their reward 3/R - 6 is always negative. V is
+// memoised on the part's cells (parts recur across branches), and the search stops with
+// OptimalSearch::TimeLimit when its time budget runs out.
+#pragma once
+
+#include <chrono>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "core/env/policy.h"
+#include "core/geometry/axis_cut.h"
+#include "core/geometry/part.h"
+
+namespace autoblock {
+
+class OptimalSearch {
+ public:
+  struct TimeLimit : std::runtime_error {
+    TimeLimit() : std::runtime_error("the optimal search ran out of time") {}
+  };
+
+  // Inputs: face_size, the face's longer bounding-box side (reward scale); seconds, the time budget
+  // counted from construction (<= 0: unlimited).
+  OptimalSearch(double face_size, double seconds);
+
+  // Inputs: part. Output: V(part). Throws TimeLimit.
+  double value(const Part& part);
+  // Inputs: part, not a rectangle. Output: the first line reaching V(part). Throws TimeLimit.
+  AxisLine best_line(const Part& part);
+  size_t memo_size() const { return memo_.size(); }
+
+ private:
+  struct Entry {
+    double value;
+    AxisLine line;
+  };
+  const Entry& solve(const Part& part);
+
+  double face_size_;
+  bool limited_;
+  std::chrono::steady_clock::time_point deadline_;
+  long calls_ = 0;
+  std::unordered_map<Part, Entry, PartHash> memo_;
+};
+
+// Follows OptimalSearch's best lines; when the time budget runs out it finishes greedily and
+// time_capped() turns true.
+class OptimalPolicy : public Policy {
+ public:
+  // Inputs: face_size (see OptimalSearch); seconds, the budget for the whole episode.
+  OptimalPolicy(double face_size, double seconds);
+  std::string name() const override { return "optimal"; }
+  Action choose(const Episode& episode) override;
+  bool time_capped() const override { return capped_; }
+
+ private:
+  OptimalSearch search_;
+  bool capped_ = false;
+};
+
+}  // namespace autoblock

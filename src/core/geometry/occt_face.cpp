@@ -1,0 +1,152 @@
+#include "core/geometry/occt_face.h"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepTools.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomLib_IsPlanarSurface.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <TopoDS_Wire.hxx>
+#include <gp_Pln.hxx>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/common/error.h"
+#include "core/common/format.h"
+#include "core/geometry/tolerance.h"
+#include "core/geometry/validate_polygon.h"
+
+namespace autoblock {
+namespace {
+
+std::string surface_type_name(GeomAbs_SurfaceType type) {
+  switch (type) {
+    case GeomAbs_Plane: return "plane";
+    case GeomAbs_Cylinder: return "cylinder";
+    case GeomAbs_Cone: return "cone";
+    case GeomAbs_Sphere: return "sphere";
+    case GeomAbs_Torus: return "torus";
+    case GeomAbs_BezierSurface: return "Bezier surface";
+    case GeomAbs_BSplineSurface: return "B-spline surface";
+    case GeomAbs_SurfaceOfRevolution: return "surface of revolution";
+    case GeomAbs_SurfaceOfExtrusion: return "surface of extrusion";
+    case GeomAbs_OffsetSurface: return "offset surface";
+    default: return "general surface";
+  }
+}
+
+std::string curve_type_name(GeomAbs_CurveType type) {
+  switch (type) {
+    case GeomAbs_Line: return "line";
+    case GeomAbs_Circle: return "circular arc";
+    case GeomAbs_Ellipse: return "elliptical arc";
+    case GeomAbs_Hyperbola: return "hyperbola";
+    case GeomAbs_Parabola: return "parabola";
+    case GeomAbs_BezierCurve: return "Bezier curve";
+    case GeomAbs_BSplineCurve: return "B-spline curve";
+    case GeomAbs_OffsetCurve: return "offset curve";
+    default: return "general curve";
+  }
+}
+
+gp_Pln face_plane(const TopoDS_Face& face) {
+  BRepAdaptor_Surface surface(face, false);
+  if (surface.GetType() == GeomAbs_Plane) return surface.Plane();
+  GeomLib_IsPlanarSurface planar(BRep_Tool::Surface(face), 1e-7);
+  if (!planar.IsPlanar()) {
+    throw InputError("the face is not planar: its surface is a " + surface_type_name(surface.GetType()));
+  }
+  return planar.Plan();
+}
+
+TopoDS_Wire polygon_wire(const Ring& ring, double z) {
+  BRepBuilderAPI_MakePolygon polygon;
+  for (const Point2& p : ring) polygon.Add(gp_Pnt(p.x, p.y, z));
+  polygon.Close();
+  return polygon.Wire();
+}
+
+}  // namespace
+
+PlanarFace planar_face_from_occt(const TopoDS_Face& face) {
+  if (face.IsNull()) throw InputError("the face is empty (a null shape)");
+  const gp_Pln plane = face_plane(face);
+  gp_Dir normal = plane.Axis().Direction();
+  if (face.Orientation() == TopAbs_REVERSED) normal.Reverse();
+  if (std::fabs(normal.Z()) < 1.0 - 1e-9) {
+    throw InputError("the face lies in a plane with normal (" + format_number(normal.X()) + ", " +
+                     format_number(normal.Y()) + ", " + format_number(normal.Z()) +
+                     "); only faces parallel to the XY plane are supported for now");
+  }
+  PlanarFace result;
+  result.normal_up = normal.Z() > 0;
+  result.z = plane.Location().Z();
+
+  const TopoDS_Wire outer = BRepTools::OuterWire(face);
+  std::vector<RawRing> rings;
+  std::vector<double> zs;
+  int inner_count = 0;
+  for (TopExp_Explorer wires(face, TopAbs_WIRE); wires.More(); wires.Next()) {
+    const TopoDS_Wire wire = TopoDS::Wire(wires.Current());
+    RawRing ring;
+    ring.name = wire.IsSame(outer) ? "outer wire" : "inner wire " + std::to_string(++inner_count);
+    int edge_count = 0;
+    for (TopExp_Explorer edges(wire, TopAbs_EDGE); edges.More(); edges.Next()) {
+      if (!BRep_Tool::Degenerated(TopoDS::Edge(edges.Current()))) ++edge_count;
+    }
+    int walked = 0;
+    for (BRepTools_WireExplorer walk(wire, face); walk.More(); walk.Next()) {
+      const TopoDS_Edge& edge = walk.Current();
+      if (BRep_Tool::Degenerated(edge)) continue;
+      ++walked;
+      const gp_Pnt start = BRep_Tool::Pnt(walk.CurrentVertex());
+      BRepAdaptor_Curve curve(edge);
+      if (curve.GetType() != GeomAbs_Line) {
+        TopoDS_Vertex v1, v2;
+        TopExp::Vertices(edge, v1, v2, true);
+        const gp_Pnt a = BRep_Tool::Pnt(v1), b = BRep_Tool::Pnt(v2);
+        throw InputError("edge " + std::to_string(walked) + " of the " + ring.name + ", from " +
+                         format_point(a.X(), a.Y()) + " to " + format_point(b.X(), b.Y()) + ", is a " +
+                         curve_type_name(curve.GetType()) + "; only straight edges are supported");
+      }
+      ring.points.push_back(Point2{start.X(), start.Y()});
+      zs.push_back(start.Z());
+    }
+    if (walked != edge_count || !BRep_Tool::IsClosed(wire)) {
+      throw InputError("the " + ring.name + " is not a closed chain of edges");
+    }
+    rings.push_back(std::move(ring));
+  }
+  result.polygon = validate_rings(rings, &result.tolerance);
+  for (double z : zs) {
+    if (std::fabs(z - result.z) > std::max(result.tolerance, 1e-7)) {
+      throw InputError("a vertex of the face lies off its plane z = " + format_number(result.z));
+    }
+  }
+  return result;
+}
+
+TopoDS_Face occt_face_from_polygon(const RectilinearPolygon& polygon, double z, bool normal_up) {
+  const gp_Pln plane(gp_Pnt(0, 0, z), gp_Dir(0, 0, 1));
+  BRepBuilderAPI_MakeFace maker(plane, polygon_wire(polygon.outer, z), true);
+  for (const Ring& hole : polygon.holes) maker.Add(polygon_wire(hole, z));
+  TopoDS_Face face = maker.Face();
+  if (!normal_up) face.Reverse();
+  return face;
+}
+
+TopoDS_Face occt_rectangle(const Box& box, double z, bool normal_up) {
+  RectilinearPolygon polygon;
+  polygon.outer = {{box.xmin, box.ymin}, {box.xmax, box.ymin}, {box.xmax, box.ymax}, {box.xmin, box.ymax}};
+  return occt_face_from_polygon(polygon, z, normal_up);
+}
+
+}  // namespace autoblock

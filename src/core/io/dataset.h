@@ -1,0 +1,27 @@
+// Data sets on disk: a folder of face files plus an index.json describing them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/data/shape_generator.h"
+
+namespace autoblock {
+
+// Inputs:  paths, files and folders.
+// Outputs: the shape files: each file as given, and each folder's .brep, .step and .stp files
+//          sorted by name.
+// Throws InputError for a missing path or a folder holding no shape file.
+std::vector<std::string> collect_shape_files(const std::vector<std::string>& paths);
+
+// Inputs:  folder (created when missing); shapes; generator, how they were made (stored in the
+//          index).
+// Outputs: folder/shape_0000.brep, ... (faces at z = 0, each checked with BRepCheck_Analyzer) and
+//          folder/index.json: {"format": "autoblock-dataset", "version": 1, "generator": ...,
+//          "shapes": [{"file", "rectangles", "corners", "holes", "area", "min_blocks"}]}.
+void write_dataset(const std::string& folder, const std::vector<GeneratedShape>& shapes,
+                   const nlohmann::json& generator);
+
+}  // namespace autoblock

@@ -1,0 +1,140 @@
+// The `autoblock` command line as a contract: exit codes, one-line errors, report fields.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+
+#include <nlohmann/json.hpp>
+
+#include "core/io/shape_file.h"
+#include "support/bad_shapes.h"
+#include "support/run_command.h"
+#include "support/test_shapes.h"
+
+using namespace autoblock;
+using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
+
+namespace {
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+void check_usage_error(const test::CommandResult& r) {
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.err, StartsWith("error: "));
+  CHECK(test::line_count(r.err) == 1);
+}
+}  // namespace
+
+TEST_CASE("autoblock --help works for every command", "[cli]") {
+  for (const std::string command : {"", "generate", "decompose", "eval"}) {
+    const auto r = test::run_autoblock(command + " --help");
+    INFO(command);
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, Contains("Usage") || Contains("USAGE") || Contains("usage"));
+  }
+}
+
+TEST_CASE("autoblock generate, decompose and eval work end to end", "[cli]") {
+  const std::string folder = test::temporary_folder("cli");
+  const auto gen = test::run_autoblock("generate --count 6 --seed 3 --holes --out '" + folder + "/set'");
+  REQUIRE(gen.exit_code == 0);
+  const nlohmann::json index = read_json(folder + "/set/index.json");
+  REQUIRE(index["shapes"].size() == 6);
+  CHECK(index["generator"]["seed"] == 3);
+  CHECK(index["shapes"][0]["holes"].get<int>() >= 1);
+
+  const std::string shape = folder + "/set/" + index["shapes"][0]["file"].get<std::string>();
+  for (const std::string policy : {"random", "random-split", "greedy", "optimal"}) {
+    INFO(policy);
+    const auto r = test::run_autoblock("decompose '" + shape + "' --policy " + policy + " --seed 5 --out '" + folder +
+                                       "/b.brep' --json '" + folder + "/r.json' --picture '" + folder + "/p.svg'");
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.err.empty());
+    const nlohmann::json report = read_json(folder + "/r.json");
+    for (const char* key : {"input", "policy", "blocks", "cuts", "return", "n_blocks", "min_blocks", "complete",
+                            "truncated", "seconds"}) {
+      CHECK(report.contains(key));
+    }
+    CHECK(report["policy"] == policy);
+    CHECK(report["complete"] == true);
+    CHECK(report["n_blocks"] == report["blocks"].size());
+    CHECK(report["min_blocks"].get<int>() <= report["n_blocks"].get<int>());
+    double sum = 0;
+    for (const auto& cut : report["cuts"]) {
+      sum += cut["reward"].get<double>();
+      CHECK((cut["direction"] == "horizontal" || cut["direction"] == "vertical"));
+      CHECK(cut["vertex"].size() == 2);
+      CHECK(cut["n_parts"].get<int>() >= 1);
+    }
+    CHECK(report["return"].get<double>() == Approx(sum));
+    for (const auto& block : report["blocks"]) {
+      REQUIRE(block.size() == 4);
+      double twice_area = 0;  // counter-clockwise: positive shoelace area
+      for (int k = 0; k < 4; ++k) {
+        twice_area += block[k][0].get<double>() * block[(k + 1) % 4][1].get<double>() -
+                      block[(k + 1) % 4][0].get<double>() * block[k][1].get<double>();
+      }
+      CHECK(twice_area > 0);
+    }
+    const TopoDS_Shape blocks = read_shape_file(folder + "/b.brep");
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(blocks, TopAbs_FACE, faces);
+    CHECK(faces.Extent() == report["n_blocks"].get<int>());
+    CHECK(std::filesystem::file_size(folder + "/p.svg") > 100);
+  }
+
+  const auto eval = test::run_autoblock("eval '" + folder + "/set' --policy greedy --json '" + folder + "/e.json'");
+  REQUIRE(eval.exit_code == 0);
+  const nlohmann::json summary = read_json(folder + "/e.json");
+  CHECK(summary["shapes"].size() == 6);
+  CHECK(summary["summary"]["completion_rate"] == 1.0);
+  CHECK(summary["summary"]["return"].contains("median"));
+}
+
+TEST_CASE("autoblock: every bad input gets exit 2 and a one-line error", "[cli][errors]") {
+  const std::string folder = test::temporary_folder("cli-bad");
+  for (const test::BadShape& bad : test::bad_shapes()) {
+    const std::string path = folder + "/" + bad.name + ".brep";
+    write_shape_file(path, bad.shape);
+    const auto r = test::run_autoblock("decompose '" + path + "' --json '" + folder + "/r.json'");
+    INFO(bad.name << ": " << r.err);
+    check_usage_error(r);
+    CHECK_THAT(r.err, Contains(bad.expected));
+    CHECK_FALSE(std::filesystem::exists(folder + "/r.json"));  // nothing half-written
+  }
+  std::ofstream(folder + "/empty.brep").close();
+  std::ofstream(folder + "/garbage.brep") << "not a shape at all\n";
+  std::ofstream(folder + "/garbage.step") << "ISO-10303-21;\nnonsense\n";
+  const std::vector<std::pair<std::string, std::string>> files{{"missing.brep", "no such file"},
+                                                               {"empty.brep", "the file is empty"},
+                                                               {"garbage.brep", "not a readable BREP file"},
+                                                               {"garbage.step", "not a readable STEP file"}};
+  for (const auto& [name, expected] : files) {
+    const auto r = test::run_autoblock("decompose '" + folder + "/" + name + "'");
+    INFO(name);
+    check_usage_error(r);
+    CHECK_THAT(r.err, Contains(expected));
+  }
+}
+
+TEST_CASE("autoblock: usage errors get exit 2 and a one-line error", "[cli][errors]") {
+  const std::string folder = test::temporary_folder("cli-usage");
+  REQUIRE(test::run_autoblock("generate --count 2 --seed 1 --out '" + folder + "/s'").exit_code == 0);
+  const std::string shape = folder + "/s/shape_0000.brep";
+  const std::vector<std::string> cases{std::string(""), std::string("frobnicate"), std::string("generate --count 0 --seed 1 --out x"),
+        std::string("generate --seed 1 --out x"), std::string("generate --count 2 --seed 1 --min-rects 5 --max-rects 2 --out '") + folder + "/t'",
+        "decompose '" + shape + "' --policy nonsense", "decompose '" + shape + "' --out blocks.txt",
+        "decompose '" + shape + "' --max-steps -3", "decompose", "eval '" + folder + "/nowhere'",
+        "eval '" + folder + "'"};
+  for (const std::string& arguments : cases) {
+    const auto r = test::run_autoblock(arguments);
+    INFO(arguments << ": " << r.err);
+    check_usage_error(r);
+  }
+}

@@ -1,0 +1,72 @@
+#include "support/bad_shapes.h"
+
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRep_Builder.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Wire.hxx>
+#include <gp_Circ.hxx>
+#include <gp_Pln.hxx>
+
+namespace autoblock::test {
+
+TopoDS_Shape raw_polygon_face(const Ring& ring, double z) {
+  BRepBuilderAPI_MakePolygon polygon;
+  for (const Point2& p : ring) polygon.Add(gp_Pnt(p.x, p.y, z));
+  polygon.Close();
+  return BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, z), gp_Dir(0, 0, 1)), polygon.Wire(), true).Face();
+}
+
+std::vector<BadShape> bad_shapes() {
+  std::vector<BadShape> shapes;
+  {
+    const TopoDS_Edge circle = BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 1.0)).Edge();
+    const TopoDS_Wire wire = BRepBuilderAPI_MakeWire(circle).Wire();
+    shapes.push_back({"curved-edge", BRepBuilderAPI_MakeFace(wire).Face(), "is a circular arc"});
+  }
+  shapes.push_back({"slanted-edge", raw_polygon_face({{0, 0}, {2, 0}, {1, 2}}), "is not parallel to the X or Y axis"});
+  {
+    const TopoDS_Shape cylinder = BRepPrimAPI_MakeCylinder(1.0, 2.0).Shape();
+    for (TopExp_Explorer faces(cylinder, TopAbs_FACE); faces.More(); faces.Next()) {
+      const TopoDS_Face face = TopoDS::Face(faces.Current());
+      if (BRepAdaptor_Surface(face).GetType() == GeomAbs_Cylinder) {
+        shapes.push_back({"non-planar", face, "not planar"});
+        break;
+      }
+    }
+  }
+  {
+    BRepBuilderAPI_MakePolygon polygon(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0), gp_Pnt(1, 0, 1), gp_Pnt(0, 0, 1), true);
+    shapes.push_back({"other-plane", BRepBuilderAPI_MakeFace(polygon.Wire(), true).Face(),
+                      "only faces parallel to the XY plane are supported"});
+  }
+  shapes.push_back({"self-crossing", raw_polygon_face({{0, 0}, {2, 0}, {2, 2}, {1, 2}, {1, -1}, {0, -1}}),
+                    "crosses itself at (1, 0)"});
+  shapes.push_back({"self-touching", raw_polygon_face({{0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 2}, {1, 2}, {1, 1}, {0, 1}}),
+                    "touches itself at (1, 1)"});
+  shapes.push_back({"zero-area", raw_polygon_face({{0, 0}, {1, 0}, {1, 1e-12}, {0, 1e-12}}), "zero or tiny area"});
+  {
+    BRep_Builder builder;
+    TopoDS_Compound compound;
+    builder.MakeCompound(compound);
+    builder.Add(compound, raw_polygon_face({{0, 0}, {1, 0}, {1, 1}, {0, 1}}));
+    builder.Add(compound, raw_polygon_face({{2, 0}, {3, 0}, {3, 1}, {2, 1}}));
+    shapes.push_back({"two-faces", compound, "holds a compound with 2 faces"});
+  }
+  shapes.push_back({"solid", BRepPrimAPI_MakeBox(1, 2, 3).Shape(), "holds a solid with 6 faces"});
+  {
+    BRepBuilderAPI_MakePolygon polygon(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0), gp_Pnt(1, 1, 0), true);
+    shapes.push_back({"wire-only", polygon.Wire(), "holds a wire with no face"});
+  }
+  return shapes;
+}
+
+}  // namespace autoblock::test

@@ -1,0 +1,26 @@
+// Shapes that AutoBlock must reject, each with the words its error message must contain.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <TopoDS_Shape.hxx>
+
+#include "core/geometry/rectilinear_polygon.h"
+
+namespace autoblock::test {
+
+struct BadShape {
+  std::string name;      // short name, usable as a file stem
+  TopoDS_Shape shape;
+  std::string expected;  // part of the error message
+};
+
+// Inputs: ring (any orientation), z. Output: the planar face bounded by it (not validated).
+TopoDS_Shape raw_polygon_face(const Ring& ring, double z = 0.0);
+
+// One shape per class of bad geometry: curved edge, non-axis edge, non-planar face, face in another
+// plane, crossing boundary, touching boundary, zero area, two faces, a solid, no face.
+std::vector<BadShape> bad_shapes();
+
+}  // namespace autoblock::test

@@ -1,0 +1,39 @@
+#include "support/test_shapes.h"
+
+#include <filesystem>
+#include <random>
+
+#include "core/geometry/validate_polygon.h"
+
+namespace autoblock::test {
+
+RectilinearPolygon polygon_of(const Ring& outer, const std::vector<Ring>& holes) {
+  std::vector<RawRing> rings{{"outer wire", outer}};
+  for (size_t h = 0; h < holes.size(); ++h) rings.push_back({"inner wire " + std::to_string(h + 1), holes[h]});
+  return validate_rings(rings);
+}
+
+GridFace grid_face_of(const Ring& outer, const std::vector<Ring>& holes) {
+  return make_grid_face(polygon_of(outer, holes));
+}
+
+Ring l_shape() { return {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}; }
+Ring square3() { return {{0, 0}, {3, 0}, {3, 3}, {0, 3}}; }
+Ring centre_hole() { return {{1, 1}, {2, 1}, {2, 2}, {1, 2}}; }
+
+std::vector<GeneratedShape> generated_shapes(int count, std::uint64_t seed, const GeneratorOptions& options) {
+  std::mt19937_64 rng(seed);
+  std::vector<GeneratedShape> shapes;
+  for (int k = 0; k < count; ++k) shapes.push_back(generate_shape(rng, options));
+  return shapes;
+}
+
+std::string temporary_folder(const std::string& name) {
+  namespace fs = std::filesystem;
+  std::random_device random;
+  const fs::path folder = fs::temp_directory_path() / ("autoblock-test-" + name + "-" + std::to_string(random()));
+  fs::create_directories(folder);
+  return folder.string();
+}
+
+}  // namespace autoblock::test

@@ -1,0 +1,30 @@
+// Shapes and helpers shared by the tests.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/data/shape_generator.h"
+#include "core/geometry/grid_face.h"
+#include "core/geometry/rectilinear_polygon.h"
+
+namespace autoblock::test {
+
+// Inputs: outer and holes as corner lists (any orientation). Output: the validated grid face.
+GridFace grid_face_of(const Ring& outer, const std::vector<Ring>& holes = {});
+RectilinearPolygon polygon_of(const Ring& outer, const std::vector<Ring>& holes = {});
+
+// The L-shape (0,0) (2,0) (2,1) (1,1) (1,2) (0,2).
+Ring l_shape();
+// A square [0,3]^2 with the hole [1,2]^2.
+Ring square3();
+Ring centre_hole();
+
+// Inputs: count, seed, options. Output: that many generated shapes.
+std::vector<GeneratedShape> generated_shapes(int count, std::uint64_t seed, const GeneratorOptions& options);
+
+// A fresh empty temporary folder, removed by nobody (the system's temp cleaner does it).
+std::string temporary_folder(const std::string& name);
+
+}  // namespace autoblock::test
