@@ -13,18 +13,23 @@ void PolicyArguments::add_to(CLI::App& command) {
   command.add_option("--time-limit", time_limit, "optimal: search seconds per face before finishing greedily")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  command.add_option("--reward", reward, "reward preset: paper (Eq. 1) | mesh (few, fat blocks)")
+      ->check(CLI::IsMember({"paper", "mesh"}))
+      ->capture_default_str();
 }
 
 std::unique_ptr<Policy> PolicyArguments::make(const InputFace& face, std::uint64_t shape_index) const {
   BaselineOptions options;
   options.seed = seed + shape_index;
   options.optimal_seconds = time_limit;
+  options.reward = reward_preset_by_name(reward);
   return make_baseline_policy(policy, face.grid.size, options);
 }
 
 EpisodeOptions PolicyArguments::episode_options() const {
   EpisodeOptions options;
   options.max_steps = max_steps;
+  options.reward = reward_preset_by_name(reward);
   return options;
 }
 

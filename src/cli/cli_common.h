@@ -19,6 +19,7 @@ struct PolicyArguments {
   std::uint64_t seed = 0;
   int max_steps = 0;
   double time_limit = 30.0;
+  std::string reward = "paper";
 
   void add_to(CLI::App& command);
   // Inputs: face; shape_index, added to the seed so that each shape of a set has its own stream.

@@ -23,7 +23,7 @@ std::unique_ptr<Policy> make_baseline_policy(const std::string& name, double fac
   if (name == "random") return std::make_unique<RandomPolicy>(options.seed, false);
   if (name == "random-split") return std::make_unique<RandomPolicy>(options.seed, true);
   if (name == "greedy") return std::make_unique<GreedyPolicy>();
-  if (name == "optimal") return std::make_unique<OptimalPolicy>(face_size, options.optimal_seconds);
+  if (name == "optimal") return std::make_unique<OptimalPolicy>(face_size, options.optimal_seconds, options.reward);
   throw InputError("unknown policy '" + name + "' (expected random, random-split, greedy or optimal)");
 }
 

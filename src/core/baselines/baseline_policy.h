@@ -7,12 +7,14 @@
 #include <vector>
 
 #include "core/env/policy.h"
+#include "core/env/reward.h"
 
 namespace autoblock {
 
 struct BaselineOptions {
   std::uint64_t seed = 0;          // random and random-split
   double optimal_seconds = 30.0;   // optimal: time budget per face (<= 0: unlimited)
+  RewardPreset reward = RewardPreset::Paper;  // optimal: the reward it maximises (greedy uses the episode's)
 };
 
 // The names: "random", "random-split", "greedy", "optimal".

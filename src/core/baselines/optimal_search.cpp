@@ -5,13 +5,13 @@
 #include <utility>
 
 #include "core/baselines/greedy_policy.h"
-#include "core/env/reward.h"
 #include "core/geometry/part_boundary.h"
 
 namespace autoblock {
 
-OptimalSearch::OptimalSearch(double face_size, double seconds)
+OptimalSearch::OptimalSearch(double face_size, double seconds, RewardPreset reward)
     : face_size_(face_size),
+      reward_(reward),
       limited_(seconds > 0),
       deadline_(std::chrono::steady_clock::now() +
                 std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(
@@ -38,14 +38,15 @@ const OptimalSearch::Entry& OptimalSearch::solve(const Part& part) {
     const AxisLine line{static_cast<CutDirection>(direction), index};
     if (!line_crosses_interior(part, line)) continue;
     const std::vector<Part> pieces = cut_part(part, line);
-    double total = paper_reward(pieces, face_size_);
+    double total = cut_reward(reward_, pieces, face_size_);
     for (const Part& piece : pieces) total += value(piece);
     if (total > best.value) best = Entry{total, line};
   }
   return memo_.emplace(part, best).first->second;
 }
 
-OptimalPolicy::OptimalPolicy(double face_size, double seconds) : search_(face_size, seconds) {}
+OptimalPolicy::OptimalPolicy(double face_size, double seconds, RewardPreset reward)
+    : search_(face_size, seconds, reward) {}
 
 Action OptimalPolicy::choose(const Episode& episode) {
   if (!capped_) {

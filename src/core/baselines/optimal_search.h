@@ -4,7 +4,8 @@
 // tree of parts and does not depend on the order parts are cut in:
 //   V(P) = 0 for a rectangle, else max over lines L through a corner of P that split P of
 //          reward(P, L) + sum of V(piece) over the pieces.
-// Cuts that change nothing (N = 1) never help: their reward 3/R - 6 is always negative. V is
+// Cuts that change nothing (N = 1) never help: they leave the part as it was at a negative reward
+// (3/R - 6 under Eq. (1), -3 under the mesh preset). V is
 // memoised on the part's cells (parts recur across branches), and the search stops with
 // OptimalSearch::TimeLimit when its time budget runs out.
 #pragma once
@@ -14,6 +15,7 @@
 #include <unordered_map>
 
 #include "core/env/policy.h"
+#include "core/env/reward.h"
 #include "core/geometry/axis_cut.h"
 #include "core/geometry/part.h"
 
@@ -26,8 +28,8 @@ class OptimalSearch {
   };
 
   // Inputs: face_size, the face's longer bounding-box side (reward scale); seconds, the time budget
-  // counted from construction (<= 0: unlimited).
-  OptimalSearch(double face_size, double seconds);
+  // counted from construction (<= 0: unlimited); reward, the preset to maximise.
+  OptimalSearch(double face_size, double seconds, RewardPreset reward = RewardPreset::Paper);
 
   // Inputs: part. Output: V(part). Throws TimeLimit.
   double value(const Part& part);
@@ -43,6 +45,7 @@ class OptimalSearch {
   const Entry& solve(const Part& part);
 
   double face_size_;
+  RewardPreset reward_;
   bool limited_;
   std::chrono::steady_clock::time_point deadline_;
   long calls_ = 0;
@@ -53,8 +56,8 @@ class OptimalSearch {
 // time_capped() turns true.
 class OptimalPolicy : public Policy {
  public:
-  // Inputs: face_size (see OptimalSearch); seconds, the budget for the whole episode.
-  OptimalPolicy(double face_size, double seconds);
+  // Inputs: face_size, reward (see OptimalSearch); seconds, the budget for the whole episode.
+  OptimalPolicy(double face_size, double seconds, RewardPreset reward = RewardPreset::Paper);
   std::string name() const override { return "optimal"; }
   Action choose(const Episode& episode) override;
   bool time_capped() const override { return capped_; }

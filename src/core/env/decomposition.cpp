@@ -13,6 +13,7 @@ Decomposition decompose_face(const GridFace& face, Policy& policy, EpisodeOption
   Decomposition result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.policy = policy.name();
+  result.reward = options.reward;
   for (const Piece& block : episode.blocks()) result.blocks.push_back(block.part.bbox());
   for (const Piece& piece : episode.queue()) result.unfinished.push_back(piece.part);
   result.cuts = episode.cuts();

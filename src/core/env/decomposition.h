@@ -11,6 +11,7 @@ namespace autoblock {
 
 struct Decomposition {
   std::string policy;
+  RewardPreset reward = RewardPreset::Paper;  // the preset the cuts' rewards were computed with
   std::vector<Box> blocks;            // the rectangles, in model coordinates, in order set aside
   std::vector<CutRecord> cuts;
   std::vector<Part> unfinished;       // parts left when truncated

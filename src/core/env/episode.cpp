@@ -2,7 +2,6 @@
 
 #include <stdexcept>
 
-#include "core/env/reward.h"
 
 namespace autoblock {
 
@@ -15,7 +14,7 @@ std::string status_name(EpisodeStatus status) {
   return "unknown";
 }
 
-Episode::Episode(const GridFace& face, EpisodeOptions options) : face_(face) {
+Episode::Episode(const GridFace& face, EpisodeOptions options) : face_(face), reward_(options.reward) {
   if (options.max_steps > 0) {
     max_steps_ = options.max_steps;
   } else {
@@ -75,7 +74,7 @@ std::vector<Part> Episode::pieces_of(const Action& action) const {
   return cut_part(current_part(), line_of(action));
 }
 
-double Episode::reward_of(const std::vector<Part>& pieces) const { return paper_reward(pieces, face_.size); }
+double Episode::reward_of(const std::vector<Part>& pieces) const { return cut_reward(reward_, pieces, face_.size); }
 
 const CutRecord& Episode::step(const Action& action) {
   if (!running()) throw std::logic_error("Episode::step: the episode is over");

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/env/observation.h"
+#include "core/env/reward.h"
 #include "core/geometry/axis_cut.h"
 #include "core/geometry/grid_face.h"
 #include "core/geometry/part_boundary.h"
@@ -24,7 +25,8 @@ enum class EpisodeStatus { Running, Complete, Truncated };
 std::string status_name(EpisodeStatus status);
 
 struct EpisodeOptions {
-  int max_steps = 0;  // 0: automatic, 10 x (corners of the face) + 10
+  int max_steps = 0;                        // 0: automatic, 10 x (corners of the face) + 10
+  RewardPreset reward = RewardPreset::Paper;
 };
 
 // A model vertex of the current part: corner `index` of boundary loop `loop`.
@@ -46,7 +48,7 @@ struct CutRecord {
   Point2 position;           // ... and its coordinates
   CutDirection direction = CutDirection::Horizontal;
   int n_parts = 1;           // N: pieces the cut left (1: nothing changed)
-  double reward = 0.0;       // Eq. (1)
+  double reward = 0.0;       // the episode's reward preset (Eq. (1) by default)
   std::vector<int> children; // ids of the pieces ({part_id} when N = 1)
 };
 
@@ -80,7 +82,8 @@ class Episode {
   const std::vector<Piece>& blocks() const { return blocks_; }         // rectangles, in order set aside
   const std::deque<Piece>& queue() const { return queue_; }            // parts still to cut
   const std::vector<CutRecord>& cuts() const { return cuts_; }
-  double total_return() const { return return_; }                    // plain sum of Eq. (1)
+  double total_return() const { return return_; }                    // plain sum of the cuts' rewards
+  RewardPreset reward_preset() const { return reward_; }
 
  private:
   void push(Part part, std::vector<int>* ids);
@@ -88,6 +91,7 @@ class Episode {
 
   GridFace face_;
   int max_steps_ = 0;
+  RewardPreset reward_ = RewardPreset::Paper;
   EpisodeStatus status_ = EpisodeStatus::Running;
   std::deque<Piece> queue_;
   std::vector<Piece> blocks_;

@@ -2,7 +2,17 @@
 
 #include <cmath>
 
+#include "core/common/error.h"
+
 namespace autoblock {
+
+std::string reward_preset_name(RewardPreset preset) { return preset == RewardPreset::Paper ? "paper" : "mesh"; }
+
+RewardPreset reward_preset_by_name(const std::string& name) {
+  if (name == "paper") return RewardPreset::Paper;
+  if (name == "mesh") return RewardPreset::Mesh;
+  throw InputError("unknown reward preset '" + name + "' (expected paper or mesh)");
+}
 
 double paper_reward(const std::vector<Part>& pieces, double face_size) {
   const double n = static_cast<double>(pieces.size());
@@ -23,6 +33,19 @@ double paper_reward(const std::vector<Part>& pieces, double face_size) {
   }
   const double penalty = pieces.size() == 1 ? 1.0 : 0.0;
   return 3.0 * (std::sqrt(n / sum_r2) - std::sqrt(spread / sum_a)) + 10.0 * rectangles / n - 5.0 * penalty - 1.0;
+}
+
+double mesh_reward(const std::vector<Part>& pieces) {
+  if (pieces.size() == 1) return -3.0;
+  double thin = 0.0;
+  for (const Part& piece : pieces) {
+    if (piece.is_rectangle()) thin += std::log(piece.bbox().aspect_ratio());
+  }
+  return -static_cast<double>(pieces.size() - 1) - kMeshThinWeight * thin;
+}
+
+double cut_reward(RewardPreset preset, const std::vector<Part>& pieces, double face_size) {
+  return preset == RewardPreset::Paper ? paper_reward(pieces, face_size) : mesh_reward(pieces);
 }
 
 }  // namespace autoblock

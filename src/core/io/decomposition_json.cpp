@@ -18,6 +18,7 @@ nlohmann::json decomposition_json(const std::string& input, const PlanarFace& fa
   nlohmann::json report;
   report["input"] = input;
   report["policy"] = d.policy;
+  report["reward"] = reward_preset_name(d.reward);
   report["blocks"] = nlohmann::json::array();
   for (const Box& b : d.blocks) report["blocks"].push_back(box_json(b));
   report["cuts"] = nlohmann::json::array();

@@ -56,3 +56,33 @@ TEST_CASE("the optimal policy reports hitting its time limit and still finishes"
   CHECK(d.time_capped);
   CHECK(d.complete());
 }
+
+TEST_CASE("optimal under the mesh preset prefers fewer, then fatter blocks", "[baselines][optimal]") {
+  // U-shape: y = 1 leaves 3 blocks (3x1, 1x1, 1x1) for -2 - 0.5 ln 3 = -2.5493061443; x = 1 and
+  // then the L's cut also end with 3 blocks but cost -1 - 0.5 ln 2 (1x2 block) - 1 - 0.5 ln 2
+  // (2x1 and 1x1) = -2.6931471806. Optimal takes y = 1.
+  const GridFace face = test::grid_face_of({{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}});
+  OptimalSearch search(face.size, 0, RewardPreset::Mesh);
+  CHECK(search.value(face.whole) == Approx(-2.5493061443));
+  const AxisLine line = search.best_line(face.whole);
+  CHECK(line.direction == CutDirection::Horizontal);
+  CHECK(line.index == 1);
+}
+
+TEST_CASE("under the mesh preset optimal needs close to the minimum number of blocks", "[baselines][optimal]") {
+  // Not a theorem (full cuts cannot always reach the minimum partition): a measured property of
+  // the generator's shapes, checked loosely.
+  int blocks = 0, minimum = 0;
+  for (const GeneratedShape& shape : test::generated_shapes(100, 12, {})) {
+    const GridFace face = make_grid_face(shape.polygon);
+    BaselineOptions options;
+    options.reward = RewardPreset::Mesh;
+    auto policy = make_baseline_policy("optimal", face.size, options);
+    EpisodeOptions episode;
+    episode.reward = RewardPreset::Mesh;
+    const Decomposition d = decompose_face(face, *policy, episode);
+    blocks += static_cast<int>(d.blocks.size());
+    minimum += d.min_blocks;
+  }
+  CHECK(blocks <= 1.05 * minimum);
+}

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/common/error.h"
 #include "core/env/reward.h"
 #include "core/geometry/axis_cut.h"
 #include "support/test_shapes.h"
@@ -48,4 +49,19 @@ TEST_CASE("Eq. (1) does not depend on the drawing's units or position", "[env][r
   const GridFace face = test::grid_face_of(scaled);
   const auto pieces = cut_part(face.whole, AxisLine{CutDirection::Horizontal, 1});
   CHECK(paper_reward(pieces, face.size) == Approx(9.8364021603).epsilon(1e-9));
+}
+
+TEST_CASE("the mesh preset by hand", "[env][reward]") {
+  // L cut into 2x1 (R 2) and 1x1 (R 1): -(2 - 1) - 0.5 (ln 2 + ln 1) = -1.3465735903
+  const GridFace l = test::grid_face_of(test::l_shape());
+  CHECK(mesh_reward(cut_part(l.whole, AxisLine{CutDirection::Horizontal, 1})) == Approx(-1.3465735903));
+  // A cut that changes nothing: -3.
+  CHECK(mesh_reward({l.whole}) == Approx(-3.0));
+  // U cut into 3x1 (R 3) and two 1x1: -(3 - 1) - 0.5 ln 3 = -2.5493061443
+  const GridFace u = test::grid_face_of(u_shape());
+  CHECK(cut_reward(RewardPreset::Mesh, cut_part(u.whole, AxisLine{CutDirection::Horizontal, 1}), u.size) ==
+        Approx(-2.5493061443));
+  CHECK(reward_preset_by_name("mesh") == RewardPreset::Mesh);
+  CHECK(reward_preset_name(RewardPreset::Paper) == "paper");
+  CHECK_THROWS_AS(reward_preset_by_name("fast"), InputError);
 }
