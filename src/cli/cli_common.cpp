@@ -5,7 +5,9 @@
 namespace autoblock::cli {
 
 void PolicyArguments::add_to(CLI::App& command) {
-  command.add_option("--policy", policy, "random | random-split | greedy | optimal")->capture_default_str();
+  command.add_option("--policy", policy,
+                     "random | random-split | greedy | optimal | a shipped policy (sac-paper, sac-mesh) | a policy file "
+                     "(default: the shipped default, " + default_policy_name() + ")");
   command.add_option("--seed", seed, "seed of the random policies")->capture_default_str();
   command.add_option("--max-steps", max_steps, "step cap per face (0: 10 x corners + 10)")
       ->check(CLI::NonNegativeNumber)
@@ -13,23 +15,28 @@ void PolicyArguments::add_to(CLI::App& command) {
   command.add_option("--time-limit", time_limit, "optimal: search seconds per face before finishing greedily")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  command.add_option("--reward", reward, "reward preset: paper (Eq. 1) | mesh (few, fat blocks)")
-      ->check(CLI::IsMember({"paper", "mesh"}))
-      ->capture_default_str();
+  command.add_option("--reward", reward, "reward preset: paper (Eq. 1) | mesh (few, fat blocks); default: the policy's own")
+      ->check(CLI::IsMember({"paper", "mesh"}));
+}
+
+std::shared_ptr<const PolicySource> PolicyArguments::source() const {
+  if (!source_) {
+    BaselineOptions options;
+    options.optimal_seconds = time_limit;
+    options.reward = reward.empty() ? RewardPreset::Paper : reward_preset_by_name(reward);
+    source_ = std::make_shared<PolicySource>(policy, options);
+  }
+  return source_;
 }
 
 std::unique_ptr<Policy> PolicyArguments::make(const InputFace& face, std::uint64_t shape_index) const {
-  BaselineOptions options;
-  options.seed = seed + shape_index;
-  options.optimal_seconds = time_limit;
-  options.reward = reward_preset_by_name(reward);
-  return make_baseline_policy(policy, face.grid.size, options);
+  return source()->make(face.grid.size, seed + shape_index);
 }
 
 EpisodeOptions PolicyArguments::episode_options() const {
   EpisodeOptions options;
   options.max_steps = max_steps;
-  options.reward = reward_preset_by_name(reward);
+  options.reward = reward.empty() ? source()->reward() : reward_preset_by_name(reward);
   return options;
 }
 

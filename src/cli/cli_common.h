@@ -6,25 +6,30 @@
 
 #include <CLI/CLI.hpp>
 
-#include "core/baselines/baseline_policy.h"
 #include "core/env/decomposition.h"
 #include "core/env/episode.h"
 #include "core/io/input_face.h"
+#include "core/sac/policy_source.h"
 
 namespace autoblock::cli {
 
 // The options every command that runs a policy takes.
 struct PolicyArguments {
-  std::string policy = "optimal";
+  std::string policy;  // empty: the shipped default
   std::uint64_t seed = 0;
   int max_steps = 0;
   double time_limit = 30.0;
-  std::string reward = "paper";
+  std::string reward;  // empty: the policy's own preset (paper for baselines)
 
   void add_to(CLI::App& command);
+  // Loads the policy (once). Throws InputError.
+  std::shared_ptr<const PolicySource> source() const;
   // Inputs: face; shape_index, added to the seed so that each shape of a set has its own stream.
   std::unique_ptr<Policy> make(const InputFace& face, std::uint64_t shape_index = 0) const;
   EpisodeOptions episode_options() const;
+
+ private:
+  mutable std::shared_ptr<const PolicySource> source_;
 };
 
 // "7 blocks (minimum 5), 6 cuts, return 23.41, complete, 1.2 ms"

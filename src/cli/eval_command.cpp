@@ -14,6 +14,7 @@
 #include "core/io/dataset.h"
 #include "core/io/decomposition_json.h"
 #include "core/io/text_file.h"
+#include "core/sac/compute_threads.h"
 
 namespace autoblock::cli {
 namespace {
@@ -50,7 +51,7 @@ void add_eval_command(CLI::App& app) {
     const std::vector<std::string> files = collect_shape_files(args->paths);
     std::vector<InputFace> faces;
     for (const std::string& file : files) faces.push_back(load_input_face(file));
-    for (size_t k = 0; k < faces.size(); ++k) args->policy.make(faces[k], k);  // validates the policy name
+    const std::string policy_name = args->policy.source()->name();  // loads the policy, or says why not
 
     std::vector<Decomposition> results(faces.size());
     std::atomic<size_t> next{0}, done{0};
@@ -65,11 +66,12 @@ void add_eval_command(CLI::App& app) {
     const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
     const size_t thread_count =
         std::min(faces.size(), static_cast<size_t>(args->threads > 0 ? static_cast<unsigned>(args->threads) : hardware));
+    set_compute_threads(1);  // parallelism comes from the workers
     const auto start = std::chrono::steady_clock::now();
     std::vector<std::thread> workers;
     for (size_t t = 0; t < thread_count; ++t) workers.emplace_back(work);
     {
-      ProgressBar progress(static_cast<long>(faces.size()), "eval " + args->policy.policy);
+      ProgressBar progress(static_cast<long>(faces.size()), "eval " + policy_name);
       while (done < faces.size()) {
         progress.update(static_cast<long>(done), files[std::min(done.load(), faces.size() - 1)]);
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -78,7 +80,7 @@ void add_eval_command(CLI::App& app) {
     for (std::thread& worker : workers) worker.join();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    nlohmann::json report = {{"policy", results.empty() ? args->policy.policy : results[0].policy},
+    nlohmann::json report = {{"policy", policy_name},
                              {"files", files.size()}};
     report["shapes"] = nlohmann::json::array();
     std::vector<double> returns, blocks, minimum, ratio, seconds, cuts;

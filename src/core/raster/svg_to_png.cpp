@@ -1,0 +1,71 @@
+#include "core/raster/svg_to_png.h"
+
+#include <QBuffer>
+#include <QByteArray>
+#include <QGuiApplication>
+#include <QImage>
+#include <QPainter>
+#include <QSvgRenderer>
+
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <random>
+#include <stdexcept>
+
+#include "core/common/error.h"
+
+namespace autoblock {
+namespace {
+
+// Text needs a QGuiApplication; outside one (the CLI), make an offscreen one once.
+void ensure_gui_application() {
+  static std::once_flag once;
+  static std::unique_ptr<QGuiApplication> application;
+  std::call_once(once, [] {
+    if (QCoreApplication::instance()) return;
+    setenv("QT_QPA_PLATFORM", "offscreen", 0);
+    static int argc = 1;
+    static char name[] = "autoblock";
+    static char* argv[] = {name, nullptr};
+    application = std::make_unique<QGuiApplication>(argc, argv);
+  });
+}
+
+}  // namespace
+
+void write_png_from_svg(const std::string& svg, const std::string& path, int width) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path target(path);
+  if (target.has_parent_path() && !fs::is_directory(target.parent_path(), ec)) {
+    throw InputError(path + ": the folder " + target.parent_path().string() + " does not exist");
+  }
+  ensure_gui_application();
+  QSvgRenderer renderer(QByteArray(svg.data(), static_cast<int>(svg.size())));
+  if (!renderer.isValid()) throw std::runtime_error("the picture's SVG could not be rendered");
+  const QSize size = renderer.defaultSize();
+  const int height = std::max(1, static_cast<int>(static_cast<double>(width) * size.height() / std::max(1, size.width())));
+  QImage image(width, height, QImage::Format_ARGB32);
+  image.fill(Qt::white);
+  {
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setRenderHint(QPainter::TextAntialiasing);
+    renderer.render(&painter);
+  }
+  std::random_device random;
+  const std::string temporary = path + ".tmp" + std::to_string(random()) + ".png";
+  if (!image.save(QString::fromStdString(temporary), "PNG")) {
+    fs::remove(temporary, ec);
+    throw InputError(path + ": cannot write the file");
+  }
+  fs::rename(temporary, path, ec);
+  if (ec) {
+    fs::remove(temporary, ec);
+    throw InputError(path + ": cannot write the file");
+  }
+}
+
+}  // namespace autoblock

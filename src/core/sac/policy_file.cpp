@@ -1,0 +1,91 @@
+#include "core/sac/policy_file.h"
+
+#include <filesystem>
+#include <random>
+
+#include "core/common/error.h"
+
+namespace autoblock {
+
+namespace fs = std::filesystem;
+
+void save_policy_file(const std::string& path, const SacAgent& agent, const nlohmann::json& training,
+                      const ReplayBuffer* buffer) {
+  std::error_code ec;
+  const fs::path target(path);
+  if (target.has_parent_path() && !fs::is_directory(target.parent_path(), ec)) {
+    throw InputError(path + ": the folder " + target.parent_path().string() + " does not exist");
+  }
+  const nlohmann::json meta = {{"format", "autoblock-policy"},
+                               {"version", kPolicyFormatVersion},
+                               {"kind", buffer ? "checkpoint" : "policy"},
+                               {"config", sac_config_json(agent.config())},
+                               {"training", training}};
+  torch::serialize::OutputArchive archive;
+  archive.write("meta", c10::IValue(meta.dump()));
+  agent.save(archive, buffer != nullptr);
+  if (buffer) {
+    const std::string bytes = buffer->serialize();
+    torch::Tensor blob = torch::empty({static_cast<int64_t>(bytes.size())}, torch::kUInt8);
+    std::memcpy(blob.data_ptr<uint8_t>(), bytes.data(), bytes.size());
+    archive.write("replay_buffer", blob);
+  }
+  std::random_device random;
+  const std::string temporary = path + ".tmp" + std::to_string(random());
+  try {
+    archive.save_to(temporary);
+  } catch (const c10::Error&) {
+    fs::remove(temporary, ec);
+    throw InputError(path + ": cannot write the file");
+  }
+  fs::rename(temporary, path, ec);
+  if (ec) {
+    fs::remove(temporary, ec);
+    throw InputError(path + ": cannot write the file");
+  }
+}
+
+LoadedPolicy load_policy_file(const std::string& path, bool checkpoint) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path + ": no such policy file");
+  if (fs::is_directory(path, ec)) throw InputError(path + ": is a directory, not a policy file");
+  torch::serialize::InputArchive archive;
+  nlohmann::json meta;
+  try {
+    archive.load_from(path);
+    c10::IValue text;
+    archive.read("meta", text);
+    meta = nlohmann::json::parse(text.toStringRef());
+  } catch (const std::exception&) {
+    throw InputError(path + ": not a readable AutoBlock policy file (corrupt or truncated)");
+  }
+  if (meta.value("format", "") != "autoblock-policy") throw InputError(path + ": not an AutoBlock policy file");
+  const int version = meta.value("version", 0);
+  if (version < 1 || version > kPolicyFormatVersion) {
+    throw InputError(path + ": policy format version " + std::to_string(version) + " is not supported (this build reads " +
+                     std::to_string(kPolicyFormatVersion) + ")");
+  }
+  if (checkpoint && meta.value("kind", "") != "checkpoint") {
+    throw InputError(path + ": is a policy, not a training checkpoint (it cannot be resumed)");
+  }
+  LoadedPolicy loaded;
+  loaded.meta = meta;
+  try {
+    loaded.agent = std::make_shared<SacAgent>(sac_config_from_json(meta.at("config")));
+    loaded.agent->load(archive, checkpoint);
+    if (checkpoint) {
+      torch::Tensor blob;
+      archive.read("replay_buffer", blob);
+      blob = blob.contiguous();
+      const std::string bytes(reinterpret_cast<const char*>(blob.data_ptr<uint8_t>()), static_cast<size_t>(blob.numel()));
+      loaded.buffer = std::make_unique<ReplayBuffer>(ReplayBuffer::deserialize(bytes));
+    }
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
+  } catch (const std::exception&) {
+    throw InputError(path + ": the policy file does not match its network configuration (corrupt or incompatible)");
+  }
+  return loaded;
+}
+
+}  // namespace autoblock

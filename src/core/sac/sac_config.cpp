@@ -1,0 +1,60 @@
+#include "core/sac/sac_config.h"
+
+#include "core/common/error.h"
+
+namespace autoblock {
+
+nlohmann::json sac_config_json(const SacConfig& c) {
+  return {{"value_network", c.value_network},
+          {"actor_output_relu", c.actor_output_relu},
+          {"reward", reward_preset_name(c.reward)},
+          {"graph", {{"size_fraction", c.graph.size_fraction}, {"shape_bound", c.graph.shape_bound}}},
+          {"bootstrap", c.bootstrap == Bootstrap::Graph ? "graph" : "critics"},
+          {"gamma", c.gamma},
+          {"batch_size", c.batch_size},
+          {"buffer_capacity", c.buffer_capacity},
+          {"warmup_steps", c.warmup_steps},
+          {"update_every", c.update_every},
+          {"lr_value", c.lr_value},
+          {"lr_critic", c.lr_critic},
+          {"lr_actor", c.lr_actor},
+          {"lr_temperature", c.lr_temperature},
+          {"polyak", c.polyak},
+          {"direction_target_entropy", c.direction_target_entropy},
+          {"vertex_target_entropy_fraction", c.vertex_target_entropy_fraction},
+          {"initial_direction_temperature", c.initial_direction_temperature},
+          {"initial_vertex_temperature", c.initial_vertex_temperature}};
+}
+
+SacConfig sac_config_from_json(const nlohmann::json& j) {
+  try {
+    SacConfig c;
+    c.value_network = j.at("value_network").get<std::string>();
+    c.actor_output_relu = j.at("actor_output_relu").get<bool>();
+    c.reward = reward_preset_by_name(j.at("reward").get<std::string>());
+    c.graph.size_fraction = j.at("graph").at("size_fraction").get<double>();
+    c.graph.shape_bound = j.at("graph").at("shape_bound").get<double>();
+    const std::string bootstrap = j.at("bootstrap").get<std::string>();
+    if (bootstrap != "graph" && bootstrap != "critics") throw InputError("unknown bootstrap '" + bootstrap + "'");
+    c.bootstrap = bootstrap == "graph" ? Bootstrap::Graph : Bootstrap::Critics;
+    c.gamma = j.at("gamma").get<double>();
+    c.batch_size = j.at("batch_size").get<int>();
+    c.buffer_capacity = j.at("buffer_capacity").get<int>();
+    c.warmup_steps = j.at("warmup_steps").get<int>();
+    c.update_every = j.at("update_every").get<int>();
+    c.lr_value = j.at("lr_value").get<double>();
+    c.lr_critic = j.at("lr_critic").get<double>();
+    c.lr_actor = j.at("lr_actor").get<double>();
+    c.lr_temperature = j.at("lr_temperature").get<double>();
+    c.polyak = j.at("polyak").get<double>();
+    c.direction_target_entropy = j.at("direction_target_entropy").get<double>();
+    c.vertex_target_entropy_fraction = j.at("vertex_target_entropy_fraction").get<double>();
+    c.initial_direction_temperature = j.at("initial_direction_temperature").get<double>();
+    c.initial_vertex_temperature = j.at("initial_vertex_temperature").get<double>();
+    return c;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(std::string("malformed agent configuration: ") + e.what());
+  }
+}
+
+}  // namespace autoblock

@@ -1,0 +1,43 @@
+// Hyper-parameters of the Soft Actor-Critic agent and its training, with their JSON form (stored in
+// checkpoints and policy files so that a file always knows how to rebuild its networks).
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/env/reward.h"
+#include "core/graph/part_graph.h"
+
+namespace autoblock {
+
+// Where the Bellman target's value of a child part comes from (see sac_agent.h).
+enum class Bootstrap { Graph, Critics };
+
+struct SacConfig {
+  std::string value_network = "small";  // ValueNetworkConfig::by_name: "paper" or "small"
+  bool actor_output_relu = true;        // the paper: ReLU after every actor layer (logits >= 0)
+  RewardPreset reward = RewardPreset::Paper;
+  GraphOptions graph;
+  Bootstrap bootstrap = Bootstrap::Graph;
+  double gamma = 0.99;                  // discount per level of the tree of parts
+  int batch_size = 32;
+  int buffer_capacity = 20000;
+  int warmup_steps = 200;               // uniformly random cuts before learning starts
+  int update_every = 1;                 // environment steps per gradient update
+  double lr_value = 1e-3;
+  double lr_critic = 1e-3;
+  double lr_actor = 1e-3;
+  double lr_temperature = 1e-3;
+  double polyak = 0.01;                 // target networks move this fraction per update
+  double direction_target_entropy = 0.3;     // nats; ln 2 = 0.69 is the maximum for 2 directions
+  double vertex_target_entropy_fraction = 0.3;  // of ln(number of vertices of the part)
+  double initial_direction_temperature = 0.2;   // SAC's alpha
+  double initial_vertex_temperature = 1.0;      // softmax temperature of the vertex choice
+};
+
+nlohmann::json sac_config_json(const SacConfig& config);
+// Throws InputError for malformed or unknown values.
+SacConfig sac_config_from_json(const nlohmann::json& json);
+
+}  // namespace autoblock

@@ -1,0 +1,75 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "core/env/reward.h"
+#include "core/sac/sac_agent.h"
+#include "support/test_shapes.h"
+
+using namespace autoblock;
+
+namespace {
+
+double soft_value(const std::vector<float>& values, double tau) {
+  double top = -1e300;
+  for (float v : values) top = std::max(top, static_cast<double>(v));
+  double sum = 0;
+  for (float v : values) sum += std::exp((v - top) / tau);
+  return top + tau * std::log(sum);
+}
+
+}  // namespace
+
+TEST_CASE("SAC losses on a tiny hand-made batch match their formulas", "[sac]") {
+  torch::manual_seed(7);
+  SacConfig config;
+  config.gamma = 0.9;
+  SacAgent agent(config);
+  const auto l = make_part_state(test::grid_face_of(test::l_shape()).whole, config.graph);
+  const auto u = make_part_state(test::grid_face_of({{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}).whole,
+                                 config.graph);
+  // Transition 1: cut the L at its re-entrant corner (vertex 3) vertically, reward 10.28, done.
+  // Transition 2: a cut of the U that left two children (the L, twice, for the arithmetic).
+  Transition done{l, 3, 1, 10.28f, {}};
+  Transition tree{u, 4, 0, 5.58f, {l, l}};
+  // Before the update the target networks equal the online ones: W(L) = tau logsumexp(V(L)/tau).
+  const double tau = agent.vertex_temperature();
+  const double w = soft_value(agent.vertex_values(*l), tau);
+  const double y1 = 10.28, y2 = 5.58 + 0.9 * (w + w);
+  const double mean_target = (y1 + y2) / 2;
+  const auto metrics = agent.update({&done, &tree});
+  CHECK(metrics.at("mean_target") == Approx(mean_target).epsilon(1e-5));
+  CHECK(metrics.at("critic_loss") >= 0);
+  CHECK(metrics.at("value_loss") >= 0);
+  for (const char* key : {"actor_loss", "alpha", "tau", "direction_entropy", "vertex_entropy", "mean_q"}) {
+    CHECK(std::isfinite(metrics.at(key)));
+  }
+}
+
+TEST_CASE("the critics' loss is the squared error against the Bellman target", "[sac]") {
+  torch::manual_seed(3);
+  SacConfig config;
+  SacAgent agent(config);
+  const auto l = make_part_state(test::grid_face_of(test::l_shape()).whole, config.graph);
+  // Terminal transitions only: y = r. The critics are fresh: Q_i(o)[a] are their outputs now.
+  Transition a{l, 3, 1, 4.0f, {}}, b{l, 0, 0, -3.0f, {}};
+  const auto metrics = agent.update({&a, &b});
+  // Mean of y over the batch.
+  CHECK(metrics.at("mean_target") == Approx(0.5));
+  // Repeated updates on the same batch drive the critics' error down.
+  double last = metrics.at("critic_loss");
+  for (int k = 0; k < 200; ++k) last = agent.update({&a, &b}).at("critic_loss");
+  CHECK(last < 0.1 * metrics.at("critic_loss"));
+}
+
+TEST_CASE("the temperatures move towards their target entropies", "[sac]") {
+  torch::manual_seed(5);
+  SacConfig config;
+  config.direction_target_entropy = 0.05;  // far below the initial ~ln 2: alpha must fall
+  SacAgent agent(config);
+  const auto l = make_part_state(test::grid_face_of(test::l_shape()).whole, config.graph);
+  Transition a{l, 3, 1, 4.0f, {}};
+  const double alpha0 = agent.direction_temperature();
+  for (int k = 0; k < 50; ++k) agent.update({&a});
+  CHECK(agent.direction_temperature() < alpha0);
+}
