@@ -72,8 +72,9 @@ bool in_part(const Cdt& cdt, const FaceHandle& f) { return !cdt.is_infinite(f) &
 }  // namespace
 
 PartGraph part_graph(const Part& part, const GraphOptions& options) {
-  if (!(options.size_fraction > 0.0) || !(options.shape_bound > 0.0) || options.shape_bound > 0.125) {
-    throw std::invalid_argument("part_graph: size_fraction must be > 0 and shape_bound in (0, 0.125]");
+  if (!(options.size_fraction > 0.0) || !(options.shape_bound > 0.0) || options.shape_bound > 0.125 ||
+      options.max_nodes < 0) {
+    throw std::invalid_argument("part_graph: size_fraction must be > 0, shape_bound in (0, 0.125], max_nodes >= 0");
   }
   const Grid& grid = part.grid();
   const std::vector<CornerRing> loops = part_boundary(part);
@@ -100,7 +101,13 @@ PartGraph part_graph(const Part& part, const GraphOptions& options) {
   mark_part_faces(cdt);
   Mesher mesher(cdt, Criteria(options.shape_bound, options.size_fraction * part.bbox().longer_side()));
   mesher.init(/*domain_specified=*/true);
-  mesher.refine_mesh();
+  if (options.max_nodes == 0) {
+    mesher.refine_mesh();
+  } else {
+    const auto cap = static_cast<Cdt::size_type>(options.max_nodes);
+    while (cdt.number_of_vertices() < cap && mesher.step_by_step_refine_mesh()) {
+    }
+  }
 
   // Number the Steiner points that belong to the part's closed domain, in CGAL's vertex order.
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {

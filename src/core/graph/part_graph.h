@@ -17,6 +17,12 @@ namespace autoblock {
 struct GraphOptions {
   double size_fraction = 0.35;  // CGAL size criterion: triangle edges <= size_fraction * longer side of the part's bbox
   double shape_bound = 0.125;   // CGAL's shape criterion B (0.125 ~ 20.6 degrees minimum angle)
+  // Refinement stops once the triangulation has this many nodes (model vertices always stay;
+  // 0: no cap). The shape criterion makes thin parts expensive: a 1000:1 strip needs about 1000
+  // nodes, an L with 1000:1 arms about 2000; generated faces of up to 40 rectangles and their
+  // pieces need at most about 130, so the cap only bounds pathological slivers (their graph is
+  // then a valid triangulation with some triangles thinner than the bound).
+  int max_nodes = 1000;
 };
 
 // Node kinds, the positions of the one-hot feature.
@@ -33,7 +39,8 @@ struct PartGraph {
   int edge_count() const { return static_cast<int>(edges.size()); }
 };
 
-// Inputs:  part; options (size_fraction > 0, 0 < shape_bound <= 0.125 for guaranteed termination).
+// Inputs:  part; options (size_fraction > 0, 0 < shape_bound <= 0.125 for guaranteed termination,
+//          max_nodes >= 0).
 // Outputs: its coarse constrained Delaunay triangulation as a graph. Every model vertex (corner) is
 //          a node; every part edge is a constraint; holes are not meshed. Nodes 0 .. V-1 are the
 //          model vertices in part_boundary order (so vertex_nodes[k] == k), the other nodes follow;

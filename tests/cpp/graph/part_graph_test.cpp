@@ -178,7 +178,7 @@ TEST_CASE("part_graph with no effective size bound: a rectangle keeps its corner
   // The 2 x 1 rectangle: two right triangles (angles 26.6 and 63.4 degrees, above the 20.7 degree
   // bound), no edge encroached: 4 nodes and 5 edges, both ways.
   const GridFace face = test::grid_face_of({{0, 0}, {2, 0}, {2, 1}, {0, 1}});
-  const PartGraph g = part_graph(face.whole, GraphOptions{10.0, 0.125});
+  const PartGraph g = part_graph(face.whole, GraphOptions{10.0, 0.125, 0});
   CHECK(g.node_count() == 4);
   CHECK(g.edge_count() == 10);
   CHECK(graph_problem(face.whole, g) == "");
@@ -201,7 +201,7 @@ TEST_CASE("part_graph with no effective size bound splits the L-shape's encroach
   // (0,2)-(0,0) (centres (1,0) and (0,1), radius 1): CGAL's conforming refinement splits both at
   // their midpoints, and nothing else is needed. 8 nodes: 6 corners, (1,0) and (0,1) on edges.
   const GridFace face = test::grid_face_of(test::l_shape());
-  const PartGraph g = part_graph(face.whole, GraphOptions{10.0, 0.125});
+  const PartGraph g = part_graph(face.whole, GraphOptions{10.0, 0.125, 0});
   CHECK(graph_problem(face.whole, g) == "");
   REQUIRE(g.node_count() == 8);
   std::vector<std::pair<double, double>> extra;
@@ -303,5 +303,24 @@ TEST_CASE("part_graph is a valid, small triangulation of generated faces and the
     // and at most 67; 11-40 rectangle faces a median of 50-62 and at most 130.
     CHECK(median <= (large_faces ? 100 : 45));
     CHECK(top <= (large_faces ? 250 : 120));
+  }
+}
+
+TEST_CASE("part_graph caps the refinement of thin parts", "[graph]") {
+  // An L with arms 1 long and 0.001 thick: the 20.7 degree bound alone needs about 2000 nodes.
+  const GridFace face = test::grid_face_of({{0, 0}, {1, 0}, {1, 0.001}, {0.001, 0.001}, {0.001, 1}, {0, 1}});
+  GraphOptions uncapped;
+  uncapped.max_nodes = 0;
+  const PartGraph full = part_graph(face.whole, uncapped);
+  CHECK(full.node_count() > 1500);
+  CHECK(graph_problem(face.whole, full) == "");
+  const PartGraph capped = part_graph(face.whole);  // default cap: 1000 nodes
+  CHECK(capped.node_count() <= 1000);
+  CHECK(capped.node_count() >= 990);
+  CHECK(graph_problem(face.whole, capped) == "");
+  // Typical parts never reach the cap: the same graph with and without it.
+  for (const GeneratedShape& shape : test::generated_shapes(20, 31, GeneratorOptions{})) {
+    const Part part = make_grid_face(shape.polygon).whole;
+    CHECK(part_graph(part).edges == part_graph(part, uncapped).edges);
   }
 }

@@ -2,6 +2,8 @@
 
 #include <torch/torch.h>
 
+#include <sstream>
+
 #include "core/common/error.h"
 #include "core/graph/part_graph.h"
 #include "core/nn/graph_batch.h"
@@ -139,4 +141,22 @@ TEST_CASE("ValueNetwork: gradients reach every parameter", "[nn][value]") {
       CHECK(item.value().grad().abs().sum().item<double>() > 0);
     }
   }
+}
+
+TEST_CASE("ValueNetwork round-trips through torch::save and torch::load", "[nn][value]") {
+  torch::manual_seed(10);
+  const std::vector<PartGraph> graphs = some_graphs(1, 24);
+  const GraphBatch batch = graph_batch_of(graphs[0]);
+  ValueNetwork trained(ValueNetworkConfig::small());
+  trained->train();
+  trained(batch.x, batch.edge_index, batch.pseudo);  // moves the batch norms' running statistics
+  std::stringstream stream;
+  torch::save(trained, stream);
+  torch::manual_seed(11);
+  ValueNetwork loaded(ValueNetworkConfig::small());
+  torch::load(loaded, stream);
+  trained->eval();
+  loaded->eval();
+  torch::NoGradGuard no_grad;
+  CHECK(torch::equal(trained(batch.x, batch.edge_index, batch.pseudo), loaded(batch.x, batch.edge_index, batch.pseudo)));
 }
