@@ -6,7 +6,7 @@
 // times a training-like forward + backward on a batch. Prints Markdown; timings are reported,
 // never asserted.
 //
-//   build/bin/autoblock_bench_nn --faces 100 --seed 7
+//   build/bin/autoblock_bench_nn --faces 100 --large-faces 30 --seed 7   (a few minutes on 2 cores)
 #include <CLI/CLI.hpp>
 #include <torch/torch.h>
 
@@ -270,7 +270,7 @@ void time_training_steps(const std::vector<FaceParts>& faces, int batch_size, co
 
 int main(int argc, char** argv) {
   CLI::App app{"Time part_graph and the value network's forward pass as deployed."};
-  int faces = 100, large_faces = 30, repeats = 3, batch = 64;
+  int faces = 100, large_faces = 30, repeats = 1, batch = 64;
   std::uint64_t seed = 7;
   bool skip_sizes = false, skip_kernels = false;
   app.add_option("--faces", faces, "generated 2-10 rectangle faces")->capture_default_str();
