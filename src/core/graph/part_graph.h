@@ -25,9 +25,6 @@ struct GraphOptions {
   int max_nodes = 1000;
 };
 
-// Node kinds, the positions of the one-hot feature.
-enum class NodeKind { Interior = 0, OnEdge = 1, ModelVertex = 2 };
-
 struct PartGraph {
   std::vector<Point2> positions;               // node coordinates (model units)
   std::vector<std::array<float, 3>> features;  // one-hot: (1,0,0) interior, (0,1,0) on a model edge, (0,0,1) model vertex
