@@ -15,6 +15,8 @@ PACKAGES=(
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libtbb-dev
   nlohmann-json3-dev libcli11-dev catch2
+  libtorch-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+  libopenblas0-pthread
 )
 
 install_missing() {

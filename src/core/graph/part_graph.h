@@ -1,0 +1,48 @@
+// The value network's input: a coarse constrained Delaunay triangulation of a part, as a graph.
+//
+// Every model vertex (corner) of the part is a node, every boundary edge of the part is a
+// constraint, holes stay empty, and CGAL's Delaunay refinement adds a few Steiner points so that
+// triangles are neither too long (size criterion, relative to the part, so a part's graph does not
+// depend on its units) nor too thin (shape criterion). No CGAL and no torch in this header.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/geometry/part.h"
+#include "core/geometry/point.h"
+
+namespace autoblock {
+
+struct GraphOptions {
+  double size_fraction = 0.35;  // CGAL size criterion: triangle edges <= size_fraction * longer side of the part's bbox
+  double shape_bound = 0.125;   // CGAL's shape criterion B (0.125 ~ 20.6 degrees minimum angle)
+  // Refinement stops once the triangulation has this many nodes (model vertices always stay;
+  // 0: no cap). The shape criterion makes thin parts expensive: a 1000:1 strip needs about 1000
+  // nodes, an L with 1000:1 arms about 2000; generated faces of up to 40 rectangles and their
+  // pieces need at most about 130, so the cap only bounds pathological slivers (their graph is
+  // then a valid triangulation with some triangles thinner than the bound).
+  int max_nodes = 1000;
+};
+
+struct PartGraph {
+  std::vector<Point2> positions;               // node coordinates (model units)
+  std::vector<std::array<float, 3>> features;  // one-hot: (1,0,0) interior, (0,1,0) on a model edge, (0,0,1) model vertex
+  std::vector<std::array<int, 2>> edges;       // directed (source, target); every triangulation edge in both directions
+  std::vector<std::array<float, 2>> pseudo;    // per edge: (pos[source] - pos[target]) / (2 m) + 0.5, m = largest absolute component over all edges of this graph (PyG Cartesian, norm=True)
+  std::vector<int> vertex_nodes;               // node index of each model vertex, in part_boundary(part) order, loops flattened
+
+  int node_count() const { return static_cast<int>(positions.size()); }
+  int edge_count() const { return static_cast<int>(edges.size()); }
+};
+
+// Inputs:  part; options (size_fraction > 0, 0 < shape_bound <= 0.125 for guaranteed termination,
+//          max_nodes >= 0).
+// Outputs: its coarse constrained Delaunay triangulation as a graph. Every model vertex (corner) is
+//          a node; every part edge is a constraint; holes are not meshed. Nodes 0 .. V-1 are the
+//          model vertices in part_boundary order (so vertex_nodes[k] == k), the other nodes follow;
+//          edges are sorted by (source, target). Deterministic.
+// Throws std::invalid_argument for options outside those ranges.
+PartGraph part_graph(const Part& part, const GraphOptions& options = {});
+
+}  // namespace autoblock
