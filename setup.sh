@@ -17,6 +17,7 @@ PACKAGES=(
   nlohmann-json3-dev libcli11-dev catch2
   libtorch-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libopenblas0-pthread
+  qtbase5-dev libqt5svg5-dev
 )
 
 install_missing() {

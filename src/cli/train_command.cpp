@@ -59,7 +59,7 @@ double mean_return(const TrainingSet& set, const std::string& policy, RewardPres
 void add_train_command(CLI::App& app) {
   struct Arguments {
     std::string train, test, out = "policy.pt", resume, checkpoint, log, curves;
-    std::string reward = "paper", value_network, bootstrap = "graph";
+    std::string agent = "lookahead", reward = "paper", value_network, bootstrap = "graph";
     int episodes = 1500, threads = 2, eval_every = 25, batch_size = 0;
     std::uint64_t seed = 0;
   };
@@ -76,12 +76,16 @@ void add_train_command(CLI::App& app) {
   command->add_option("--threads", args->threads, "threads for the networks' arithmetic")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
+  command->add_option("--agent", args->agent,
+                      "lookahead (default: one cut of lookahead, beyond the paper) | paper (the paper's SAC, faithfully)")
+      ->check(CLI::IsMember({"lookahead", "paper"}))
+      ->capture_default_str();
   command->add_option("--reward", args->reward, "reward preset: paper (Eq. 1) | mesh")
       ->check(CLI::IsMember({"paper", "mesh"}))
       ->capture_default_str();
   command->add_option("--value-network", args->value_network, "value network preset: small | paper (default small)")
       ->check(CLI::IsMember({"small", "paper"}));
-  command->add_option("--bootstrap", args->bootstrap, "children's values in the Bellman target: graph | critics")
+  command->add_option("--bootstrap", args->bootstrap, "paper agent: children's values in the Bellman target: graph | critics")
       ->check(CLI::IsMember({"graph", "critics"}))
       ->capture_default_str();
   command->add_option("--batch-size", args->batch_size, "replay batch size (default from the configuration)")
@@ -109,7 +113,7 @@ void add_train_command(CLI::App& app) {
     if (!args->resume.empty()) {
       trainer = std::make_unique<Trainer>(Trainer::resume(args->resume, options, train, test));
     } else {
-      SacConfig config;
+      SacConfig config = default_sac_config(args->agent);
       config.reward = reward_preset_by_name(args->reward);
       if (!args->value_network.empty()) config.value_network = args->value_network;
       config.bootstrap = args->bootstrap == "graph" ? Bootstrap::Graph : Bootstrap::Critics;
@@ -176,7 +180,7 @@ void add_train_command(CLI::App& app) {
                       {"episodes_to_95", speed.episodes_to_95},
                       {"seconds_to_95", speed.seconds_to_95},
                       {"wall_seconds", trainer->history().back().wall_seconds}},
-                     nullptr);
+                     false);
     std::printf("trained %d episodes in %.1f min: final test return %.3f (optimal %.3f, greedy %.3f)\n",
                 trainer->episodes_done(), trainer->history().back().wall_seconds / 60.0, speed.final_test_return, optimal,
                 greedy);

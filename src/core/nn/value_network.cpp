@@ -20,15 +20,14 @@ ValueNetworkConfig ValueNetworkConfig::by_name(const std::string& name) {
 }
 
 ValueNetworkImpl::ValueNetworkImpl(const ValueNetworkConfig& config_) : config(config_) {
-  if (config.first_width < 1 || config.kernel_size < 2) {
+  if (config.first_width < 1 || config.kernel_size < 2 || config.inputs < 1 || config.outputs < 1) {
     throw InputError("value network '" + config.name + "': widths must be >= 1 and the kernel size >= 2");
   }
   for (int64_t width : config.block_widths) {
     if (width < 1) throw InputError("value network '" + config.name + "': widths must be >= 1");
   }
-  constexpr int64_t kFeatures = 3;  // one-hot node kinds (part_graph.h)
   const int64_t k = config.kernel_size;
-  input_conv = register_module("input_conv", SplineConv(kFeatures, config.first_width, k));
+  input_conv = register_module("input_conv", SplineConv(config.inputs, config.first_width, k));
   input_bn = register_module("input_bn", torch::nn::BatchNorm1d(config.first_width));
   blocks = register_module("blocks", torch::nn::ModuleList());
   int64_t width = config.first_width;
@@ -36,7 +35,7 @@ ValueNetworkImpl::ValueNetworkImpl(const ValueNetworkConfig& config_) : config(c
     blocks->push_back(ResidualBlock(width, next, k));
     width = next;
   }
-  output_conv = register_module("output_conv", SplineConv(width, 1, k));
+  output_conv = register_module("output_conv", SplineConv(width, config.outputs, k));
 }
 
 torch::Tensor ValueNetworkImpl::forward(const torch::Tensor& x, const torch::Tensor& edge_index,
@@ -47,7 +46,8 @@ torch::Tensor ValueNetworkImpl::forward(const torch::Tensor& x, const torch::Ten
 torch::Tensor ValueNetworkImpl::forward_on(const torch::Tensor& x, const SplineGraph& graph) {
   torch::Tensor h = torch::elu(input_bn(input_conv->forward_on(x, graph)));
   for (const auto& block : *blocks) h = block->as<ResidualBlockImpl>()->forward(h, graph);
-  return output_conv->forward_on(h, graph).squeeze(1);
+  const torch::Tensor out = output_conv->forward_on(h, graph);
+  return config.outputs == 1 ? out.squeeze(1) : out;
 }
 
 }  // namespace autoblock

@@ -9,7 +9,6 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <memory>
 #include <mutex>
 #include <random>
 #include <stdexcept>
@@ -19,17 +18,21 @@
 namespace autoblock {
 namespace {
 
-// Text needs a QGuiApplication; outside one (the CLI), make an offscreen one once.
+// Qt's chatter (e.g. about XDG_RUNTIME_DIR) is not ours to print; real failures surface as errors.
+void quiet(QtMsgType, const QMessageLogContext&, const QString&) {}
+
+// Text needs a QGuiApplication; outside one (the CLI), make an offscreen one once. It is never
+// destroyed: tearing it down during static destruction at exit would race Qt's own globals.
 void ensure_gui_application() {
   static std::once_flag once;
-  static std::unique_ptr<QGuiApplication> application;
   std::call_once(once, [] {
     if (QCoreApplication::instance()) return;
     setenv("QT_QPA_PLATFORM", "offscreen", 0);
+    qInstallMessageHandler(quiet);
     static int argc = 1;
     static char name[] = "autoblock";
     static char* argv[] = {name, nullptr};
-    application = std::make_unique<QGuiApplication>(argc, argv);
+    new QGuiApplication(argc, argv);  // NOLINT: deliberately leaked, see above
   });
 }
 

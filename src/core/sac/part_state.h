@@ -1,22 +1,40 @@
-// What the agent sees of a part: its graph (for the value network) and the local observation at
-// every model vertex (for the actor and critics), in Episode::current_vertices order.
+// What an agent sees of a part: its graph (for the value network), the local observation at every
+// model vertex (for the actor and critics), in Episode::current_vertices order, and, for the
+// lookahead agent, node features with one cut of lookahead and the candidate cuts themselves.
 #pragma once
 
 #include <memory>
 #include <vector>
 
 #include "core/env/observation.h"
+#include "core/env/reward.h"
 #include "core/geometry/part.h"
 #include "core/graph/part_graph.h"
+#include "core/sac/part_lookahead.h"
 
 namespace autoblock {
+
+struct PartStateOptions {
+  PartStateOptions(GraphOptions graph_options = {}) : graph(graph_options) {}  // NOLINT: implicit on purpose
+  GraphOptions graph;
+  bool lookahead = false;                     // add lookahead features and candidate cuts
+  RewardPreset reward = RewardPreset::Paper;  // lookahead: the rewards to look ahead with
+  double face_size = 1.0;                     // lookahead: GridFace::size of the part's face
+};
+
+// Node features: the paper's 3 one-hot kinds; with lookahead also kVertexLookahead numbers at the
+// model-vertex nodes (zero elsewhere) and kPartScale numbers at every node.
+constexpr int kLookaheadFeatures = 3 + kVertexLookahead + kPartScale;
 
 struct PartState {
   PartGraph graph;
   std::vector<Observation> observations;  // one per model vertex, graph.vertex_nodes order
+  int feature_count = 3;
+  std::vector<float> features;            // node-major [nodes x feature_count]; empty: graph.features
+  std::vector<LineCandidate> lines;       // lookahead only: the cuts that split the part
 };
 
-// Inputs: part; options, the triangulation's. Output: the part's state.
-std::shared_ptr<const PartState> make_part_state(const Part& part, const GraphOptions& options);
+// Inputs: part; options. Output: the part's state.
+std::shared_ptr<const PartState> make_part_state(const Part& part, const PartStateOptions& options);
 
 }  // namespace autoblock

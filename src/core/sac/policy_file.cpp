@@ -1,16 +1,18 @@
 #include "core/sac/policy_file.h"
 
+#include <cstring>
 #include <filesystem>
 #include <random>
 
 #include "core/common/error.h"
+#include <torch/torch.h>
 
 namespace autoblock {
 
 namespace fs = std::filesystem;
 
-void save_policy_file(const std::string& path, const SacAgent& agent, const nlohmann::json& training,
-                      const ReplayBuffer* buffer) {
+void save_policy_file(const std::string& path, const LearningAgent& agent, const nlohmann::json& training,
+                      bool checkpoint) {
   std::error_code ec;
   const fs::path target(path);
   if (target.has_parent_path() && !fs::is_directory(target.parent_path(), ec)) {
@@ -18,17 +20,17 @@ void save_policy_file(const std::string& path, const SacAgent& agent, const nloh
   }
   const nlohmann::json meta = {{"format", "autoblock-policy"},
                                {"version", kPolicyFormatVersion},
-                               {"kind", buffer ? "checkpoint" : "policy"},
+                               {"kind", checkpoint ? "checkpoint" : "policy"},
                                {"config", sac_config_json(agent.config())},
                                {"training", training}};
   torch::serialize::OutputArchive archive;
   archive.write("meta", c10::IValue(meta.dump()));
-  agent.save(archive, buffer != nullptr);
-  if (buffer) {
-    const std::string bytes = buffer->serialize();
+  agent.save(archive, checkpoint);
+  if (checkpoint) {
+    const std::string bytes = agent.serialize_memory();
     torch::Tensor blob = torch::empty({static_cast<int64_t>(bytes.size())}, torch::kUInt8);
     std::memcpy(blob.data_ptr<uint8_t>(), bytes.data(), bytes.size());
-    archive.write("replay_buffer", blob);
+    archive.write("replay_memory", blob);
   }
   std::random_device random;
   const std::string temporary = path + ".tmp" + std::to_string(random());
@@ -71,14 +73,14 @@ LoadedPolicy load_policy_file(const std::string& path, bool checkpoint) {
   LoadedPolicy loaded;
   loaded.meta = meta;
   try {
-    loaded.agent = std::make_shared<SacAgent>(sac_config_from_json(meta.at("config")));
+    loaded.agent = make_learning_agent(sac_config_from_json(meta.at("config")));
     loaded.agent->load(archive, checkpoint);
     if (checkpoint) {
       torch::Tensor blob;
-      archive.read("replay_buffer", blob);
+      archive.read("replay_memory", blob);
       blob = blob.contiguous();
       const std::string bytes(reinterpret_cast<const char*>(blob.data_ptr<uint8_t>()), static_cast<size_t>(blob.numel()));
-      loaded.buffer = std::make_unique<ReplayBuffer>(ReplayBuffer::deserialize(bytes));
+      loaded.agent->deserialize_memory(bytes);
     }
   } catch (const InputError& e) {
     throw InputError(path + ": " + e.what());

@@ -8,7 +8,6 @@
 
 #include "core/common/error.h"
 #include "core/sac/policy_file.h"
-#include "core/sac/sac_policy.h"
 
 #ifndef AUTOBLOCK_SOURCE_MODELS
 #define AUTOBLOCK_SOURCE_MODELS "models"
@@ -71,7 +70,7 @@ PolicySource::PolicySource(const std::string& name_or_path, BaselineOptions base
 RewardPreset PolicySource::reward() const { return agent_ ? agent_->config().reward : baseline_.reward; }
 
 std::unique_ptr<Policy> PolicySource::make(double face_size, std::uint64_t seed) const {
-  if (agent_) return std::make_unique<SacPolicy>(agent_, name_);
+  if (agent_) return agent_->deployed_policy(name_);
   BaselineOptions options = baseline_;
   options.seed = seed;
   return make_baseline_policy(name_, face_size, options);

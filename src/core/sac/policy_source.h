@@ -13,7 +13,7 @@
 
 #include "core/baselines/baseline_policy.h"
 #include "core/env/policy.h"
-#include "core/sac/sac_agent.h"
+#include "core/sac/learning_agent.h"
 
 namespace autoblock {
 
@@ -35,7 +35,7 @@ class PolicySource {
   bool learned() const { return agent_ != nullptr; }
   // The reward preset the policy aims at: a trained policy's own; the baseline option otherwise.
   RewardPreset reward() const;
-  std::shared_ptr<SacAgent> agent() const { return agent_; }
+  std::shared_ptr<LearningAgent> agent() const { return agent_; }
 
   // Inputs: face_size (GridFace::size); seed (random baselines). Output: a fresh policy.
   std::unique_ptr<Policy> make(double face_size, std::uint64_t seed) const;
@@ -43,7 +43,7 @@ class PolicySource {
  private:
   std::string name_;
   BaselineOptions baseline_;
-  std::shared_ptr<SacAgent> agent_;
+  std::shared_ptr<LearningAgent> agent_;
 };
 
 }  // namespace autoblock

@@ -26,7 +26,7 @@ void copy_module(torch::nn::Module& target, const torch::nn::Module& source, dou
   for (auto& item : target.named_buffers(true)) item.value().copy_(source_buffers[item.key()]);
 }
 
-torch::Tensor observations_tensor(const std::vector<const Observation*>& observations) {
+torch::Tensor stack_observations(const std::vector<const Observation*>& observations) {
   torch::Tensor t = torch::empty({static_cast<int64_t>(observations.size()), kObservation}, torch::kFloat32);
   float* data = t.data_ptr<float>();
   for (size_t b = 0; b < observations.size(); ++b) {
@@ -81,7 +81,7 @@ std::vector<float> SacAgent::vertex_values(const PartState& state) {
 
 std::array<float, 2> SacAgent::direction_probabilities(const Observation& observation) {
   torch::NoGradGuard no_grad;
-  const torch::Tensor p = torch::softmax(actor_->forward(observations_tensor({&observation})), 1).contiguous();
+  const torch::Tensor p = torch::softmax(actor_->forward(stack_observations({&observation})), 1).contiguous();
   return {p.data_ptr<float>()[0], p.data_ptr<float>()[1]};
 }
 
@@ -103,7 +103,7 @@ torch::Tensor SacAgent::child_values(const std::vector<const PartState*>& childr
     } else {
       std::vector<const Observation*> observations;
       for (const Observation& o : children[c]->observations) observations.push_back(&o);
-      const torch::Tensor obs = observations_tensor(observations);
+      const torch::Tensor obs = stack_observations(observations);
       const torch::Tensor min_q = torch::min(q1_target_->forward(obs), q2_target_->forward(obs));
       const torch::Tensor logp = torch::log_softmax(actor_->forward(obs), 1);
       const torch::Tensor soft_q = (logp.exp() * (min_q - alpha * logp)).sum(1);  // per vertex
@@ -145,7 +145,7 @@ std::map<std::string, double> SacAgent::update(const std::vector<const Transitio
   target = target.detach();
 
   // Critics.
-  const torch::Tensor obs = observations_tensor(observations);
+  const torch::Tensor obs = stack_observations(observations);
   const torch::Tensor a = actions.unsqueeze(1);
   const torch::Tensor q1 = q1_->forward(obs).gather(1, a).squeeze(1);
   const torch::Tensor q2 = q2_->forward(obs).gather(1, a).squeeze(1);

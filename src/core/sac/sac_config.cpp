@@ -4,8 +4,20 @@
 
 namespace autoblock {
 
+SacConfig default_sac_config(const std::string& agent) {
+  SacConfig config;
+  config.agent = agent;
+  if (agent == "paper") {
+    config.gamma = 0.99;
+  } else if (agent != "lookahead") {
+    throw InputError("unknown agent '" + agent + "' (expected paper or lookahead)");
+  }
+  return config;
+}
+
 nlohmann::json sac_config_json(const SacConfig& c) {
-  return {{"value_network", c.value_network},
+  return {{"agent", c.agent},
+          {"value_network", c.value_network},
           {"actor_output_relu", c.actor_output_relu},
           {"reward", reward_preset_name(c.reward)},
           {"graph", {{"size_fraction", c.graph.size_fraction}, {"shape_bound", c.graph.shape_bound}}},
@@ -20,6 +32,7 @@ nlohmann::json sac_config_json(const SacConfig& c) {
           {"lr_actor", c.lr_actor},
           {"lr_temperature", c.lr_temperature},
           {"polyak", c.polyak},
+          {"target_update_every", c.target_update_every},
           {"direction_target_entropy", c.direction_target_entropy},
           {"vertex_target_entropy_fraction", c.vertex_target_entropy_fraction},
           {"initial_direction_temperature", c.initial_direction_temperature},
@@ -29,6 +42,8 @@ nlohmann::json sac_config_json(const SacConfig& c) {
 SacConfig sac_config_from_json(const nlohmann::json& j) {
   try {
     SacConfig c;
+    c.agent = j.at("agent").get<std::string>();
+    if (c.agent != "paper" && c.agent != "lookahead") throw InputError("unknown agent '" + c.agent + "'");
     c.value_network = j.at("value_network").get<std::string>();
     c.actor_output_relu = j.at("actor_output_relu").get<bool>();
     c.reward = reward_preset_by_name(j.at("reward").get<std::string>());
@@ -47,6 +62,7 @@ SacConfig sac_config_from_json(const nlohmann::json& j) {
     c.lr_actor = j.at("lr_actor").get<double>();
     c.lr_temperature = j.at("lr_temperature").get<double>();
     c.polyak = j.at("polyak").get<double>();
+    c.target_update_every = j.at("target_update_every").get<int>();
     c.direction_target_entropy = j.at("direction_target_entropy").get<double>();
     c.vertex_target_entropy_fraction = j.at("vertex_target_entropy_fraction").get<double>();
     c.initial_direction_temperature = j.at("initial_direction_temperature").get<double>();

@@ -15,12 +15,13 @@ namespace autoblock {
 enum class Bootstrap { Graph, Critics };
 
 struct SacConfig {
+  std::string agent = "lookahead";      // "paper" (the paper's SAC) or "lookahead" (learning_agent.h)
   std::string value_network = "small";  // ValueNetworkConfig::by_name: "paper" or "small"
   bool actor_output_relu = true;        // the paper: ReLU after every actor layer (logits >= 0)
   RewardPreset reward = RewardPreset::Paper;
   GraphOptions graph;
   Bootstrap bootstrap = Bootstrap::Graph;
-  double gamma = 0.99;                  // discount per level of the tree of parts
+  double gamma = 1.0;                   // discount per level of the tree of parts
   int batch_size = 32;
   int buffer_capacity = 20000;
   int warmup_steps = 200;               // uniformly random cuts before learning starts
@@ -29,12 +30,19 @@ struct SacConfig {
   double lr_critic = 1e-3;
   double lr_actor = 1e-3;
   double lr_temperature = 1e-3;
-  double polyak = 0.01;                 // target networks move this fraction per update
+  double polyak = 0.01;                 // paper: target networks move this fraction per update
+  int target_update_every = 25;         // lookahead: the target network is copied every so many updates
   double direction_target_entropy = 0.3;     // nats; ln 2 = 0.69 is the maximum for 2 directions
-  double vertex_target_entropy_fraction = 0.3;  // of ln(number of vertices of the part)
+  double vertex_target_entropy_fraction = 0.3;  // of ln(number of vertices of the part); lookahead:
+                                                // of ln(number of candidate cuts)
   double initial_direction_temperature = 0.2;   // SAC's alpha
   double initial_vertex_temperature = 1.0;      // softmax temperature of the vertex choice
 };
+
+// The defaults of an agent kind: "paper" discounts by 0.99 (its sampled cuts include ones that
+// change nothing, whose self-loops need a discount), "lookahead" by 1 (the return is a plain sum).
+// Throws InputError for an unknown kind.
+SacConfig default_sac_config(const std::string& agent);
 
 nlohmann::json sac_config_json(const SacConfig& config);
 // Throws InputError for malformed or unknown values.

@@ -1,5 +1,5 @@
 // The paper's training loop: one face from the training set per episode, cuts chosen
-// stochastically by the agent, one SAC update per cut after a warm-up, periodic deterministic
+// stochastically by the agent, which learns as it goes (learning_agent.h), periodic deterministic
 // evaluation on the test set, checkpoints that let a killed run resume where it stopped.
 //
 // Reproducibility: every random choice (shape, vertex, direction, replay batch) comes from one
@@ -18,8 +18,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/geometry/grid_face.h"
-#include "core/sac/replay_buffer.h"
-#include "core/sac/sac_agent.h"
+#include "core/sac/episode_record.h"
+#include "core/sac/learning_agent.h"
 
 namespace autoblock {
 
@@ -37,23 +37,6 @@ struct TrainerOptions {
   int threads = 1;               // LibTorch intra-op threads
   int max_steps = 0;             // step cap per episode (0: the environment's default)
 };
-
-struct EpisodeRecord {
-  int episode = 0;               // 1-based
-  std::string shape;
-  double ret = 0.0;              // the episode's return (plain sum of the rewards)
-  int blocks = 0;
-  int steps = 0;
-  bool complete = false;
-  std::map<std::string, double> metrics;  // means over the episode's updates (empty during warm-up)
-  double alpha = 0.0, tau = 0.0;
-  bool evaluated = false;
-  double test_return = 0.0;      // mean deterministic return over the test set, when evaluated
-  double wall_seconds = 0.0;     // since training started (a resumed run continues the clock)
-};
-
-nlohmann::json episode_record_json(const EpisodeRecord& record);
-EpisodeRecord episode_record_from_json(const nlohmann::json& json);
 
 class Trainer {
  public:
@@ -73,21 +56,16 @@ class Trainer {
 
   int episodes_done() const { return episodes_done_; }
   const std::vector<EpisodeRecord>& history() const { return history_; }
-  std::shared_ptr<SacAgent> agent() const { return agent_; }
+  std::shared_ptr<LearningAgent> agent() const { return agent_; }
   const TrainerOptions& options() const { return options_; }
 
  private:
   Trainer(const TrainerOptions& options, TrainingSet train, TrainingSet test);
-  EpisodeRecord run_episode();
-
   TrainerOptions options_;
   TrainingSet train_, test_;
-  std::shared_ptr<SacAgent> agent_;
-  std::unique_ptr<ReplayBuffer> buffer_;
+  std::shared_ptr<LearningAgent> agent_;
   std::mt19937_64 rng_;
-  long total_steps_ = 0;
   int episodes_done_ = 0;
-  double elapsed_before_ = 0.0;  // seconds spent before this process's run (resumes)
   std::vector<EpisodeRecord> history_;
 };
 

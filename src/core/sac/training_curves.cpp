@@ -35,7 +35,7 @@ TrainingSpeed training_speed(const std::vector<EpisodeRecord>& history) {
 
 std::string training_curves_svg(const std::vector<EpisodeRecord>& history, const std::vector<ChartReference>& references,
                                 const std::string& title) {
-  ChartPanel train{"Training episodes: return, moving average over 10", "episode", "return", {}, references};
+  ChartPanel train{"Training episodes: return, moving average over 10", "episode", "return", {}, {}};
   ChartPanel test{"Test set: mean deterministic return", "episode", "return", {}, references};
   ChartSeries average{"training (10-episode average)", "#1f77b4", {}};
   ChartSeries raw{"training episode", "#c6dbef", {}};

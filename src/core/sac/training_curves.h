@@ -22,8 +22,8 @@ struct TrainingSpeed {
 // the mark is 0.95 x final (as the paper's curves read); otherwise initial + 0.95 (final - initial).
 TrainingSpeed training_speed(const std::vector<EpisodeRecord>& history);
 
-// Inputs: history; references, dashed lines (e.g. the test set's optimal and greedy returns);
-// title. Output: the two-panel SVG.
+// Inputs: history; references, dashed lines on the test panel (e.g. the test set's optimal and
+// greedy returns); title. Output: the two-panel SVG.
 std::string training_curves_svg(const std::vector<EpisodeRecord>& history, const std::vector<ChartReference>& references,
                                 const std::string& title);
 

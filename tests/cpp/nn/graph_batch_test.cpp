@@ -1,6 +1,5 @@
-#include <catch2/catch.hpp>
+#include "support/catch_torch.h"
 
-#include <torch/torch.h>
 
 #include "core/env/observation.h"
 #include "core/geometry/part_boundary.h"

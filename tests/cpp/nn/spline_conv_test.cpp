@@ -1,6 +1,5 @@
-#include <catch2/catch.hpp>
+#include "support/catch_torch.h"
 
-#include <torch/torch.h>
 
 #include "core/nn/spline_basis.h"
 #include "core/nn/spline_conv.h"

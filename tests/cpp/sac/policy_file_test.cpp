@@ -1,4 +1,4 @@
-#include <catch2/catch.hpp>
+#include "support/catch_torch.h"
 
 #include <filesystem>
 #include <fstream>
@@ -7,27 +7,37 @@
 #include "core/env/decomposition.h"
 #include "core/sac/policy_file.h"
 #include "core/sac/policy_source.h"
-#include "core/sac/sac_policy.h"
 #include "support/test_shapes.h"
 
 using namespace autoblock;
 using Catch::Matchers::Contains;
 
-TEST_CASE("a policy file round-trips the agent exactly", "[sac][policy]") {
-  torch::manual_seed(11);
-  SacConfig config;
-  config.reward = RewardPreset::Mesh;
-  SacAgent agent(config);
-  const std::string path = test::temporary_folder("policy") + "/p.pt";
-  save_policy_file(path, agent, {{"note", "test"}}, nullptr);
-  const LoadedPolicy loaded = load_policy_file(path, false);
-  CHECK(loaded.meta["kind"] == "policy");
-  CHECK(loaded.meta["training"]["note"] == "test");
-  CHECK(loaded.agent->config().reward == RewardPreset::Mesh);
-  const auto state = make_part_state(test::grid_face_of(test::l_shape()).whole, config.graph);
-  CHECK(loaded.agent->vertex_values(*state) == agent.vertex_values(*state));
-  CHECK(loaded.agent->direction_probabilities(state->observations[2]) == agent.direction_probabilities(state->observations[2]));
-  CHECK_THROWS_WITH(load_policy_file(path, true), Contains("not a training checkpoint"));
+TEST_CASE("a policy file round-trips either agent exactly", "[sac][policy]") {
+  for (const std::string kind : {"paper", "lookahead"}) {
+    INFO(kind);
+    torch::manual_seed(11);
+    SacConfig config = default_sac_config(kind);
+    config.reward = RewardPreset::Mesh;
+    auto agent = make_learning_agent(config);
+    const std::string path = test::temporary_folder("policy") + "/p.pt";
+    save_policy_file(path, *agent, {{"note", "test"}}, false);
+    const LoadedPolicy loaded = load_policy_file(path, false);
+    CHECK(loaded.meta["kind"] == "policy");
+    CHECK(loaded.meta["training"]["note"] == "test");
+    CHECK(loaded.agent->config().reward == RewardPreset::Mesh);
+    CHECK(loaded.agent->config().agent == kind);
+    GeneratorOptions options;
+    options.holes = true;
+    for (const GeneratedShape& shape : test::generated_shapes(3, 8, options)) {
+      const GridFace face = make_grid_face(shape.polygon);
+      Episode episode(face);
+      CHECK((loaded.agent->vertex_scores(episode) == agent->vertex_scores(episode)));
+      auto a = agent->deployed_policy("a");
+      auto b = loaded.agent->deployed_policy("b");
+      CHECK(decompose_face(face, *a).total_return == decompose_face(face, *b).total_return);
+    }
+    CHECK_THROWS_WITH(load_policy_file(path, true), Contains("not a training checkpoint"));
+  }
 }
 
 TEST_CASE("missing, corrupt, truncated and foreign policy files are clear errors", "[sac][policy][errors]") {
@@ -36,8 +46,7 @@ TEST_CASE("missing, corrupt, truncated and foreign policy files are clear errors
   std::ofstream(folder + "/garbage.pt") << "this is not a policy";
   CHECK_THROWS_WITH(load_policy_file(folder + "/garbage.pt", false), Contains("corrupt or truncated"));
   torch::manual_seed(1);
-  SacAgent agent(SacConfig{});
-  save_policy_file(folder + "/good.pt", agent, {}, nullptr);
+  save_policy_file(folder + "/good.pt", *make_learning_agent(SacConfig{}), {}, false);
   const auto size = std::filesystem::file_size(folder + "/good.pt");
   std::filesystem::copy_file(folder + "/good.pt", folder + "/cut.pt");
   std::filesystem::resize_file(folder + "/cut.pt", size / 2);
@@ -47,15 +56,18 @@ TEST_CASE("missing, corrupt, truncated and foreign policy files are clear errors
 }
 
 TEST_CASE("a deployed policy never makes a cut that changes nothing and always finishes", "[sac][policy]") {
-  torch::manual_seed(2);
-  auto agent = std::make_shared<SacAgent>(SacConfig{});  // untrained: its choices are arbitrary
-  GeneratorOptions options;
-  options.holes = true;
-  for (const GeneratedShape& shape : test::generated_shapes(20, 4, options)) {
-    const GridFace face = make_grid_face(shape.polygon);
-    SacPolicy policy(agent, "untrained");
-    const Decomposition d = decompose_face(face, policy);
-    REQUIRE(d.complete());
-    for (const CutRecord& cut : d.cuts) CHECK(cut.n_parts >= 2);
+  for (const std::string kind : {"paper", "lookahead"}) {
+    INFO(kind);
+    torch::manual_seed(2);
+    auto agent = make_learning_agent(default_sac_config(kind));  // untrained: its choices are arbitrary
+    GeneratorOptions options;
+    options.holes = true;
+    for (const GeneratedShape& shape : test::generated_shapes(20, 4, options)) {
+      const GridFace face = make_grid_face(shape.polygon);
+      auto policy = agent->deployed_policy("untrained");
+      const Decomposition d = decompose_face(face, *policy);
+      REQUIRE(d.complete());
+      for (const CutRecord& cut : d.cuts) CHECK(cut.n_parts >= 2);
+    }
   }
 }

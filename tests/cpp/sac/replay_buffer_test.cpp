@@ -1,4 +1,4 @@
-#include <catch2/catch.hpp>
+#include "support/catch_torch.h"
 
 #include "core/common/error.h"
 #include "core/sac/replay_buffer.h"
@@ -47,8 +47,8 @@ TEST_CASE("the replay buffer survives a round trip through bytes, sharing states
   CHECK(copy.at(0).reward == 1.5f);
   CHECK(copy.at(0).children.size() == 2);
   CHECK(copy.at(0).children[0] == copy.at(0).state);  // shared, not duplicated
-  CHECK(copy.at(0).state->graph.edges == s->graph.edges);
-  CHECK(copy.at(0).state->observations == s->observations);
+  CHECK((copy.at(0).state->graph.edges == s->graph.edges));
+  CHECK((copy.at(0).state->observations == s->observations));
   CHECK(copy.at(1).vertex == 3);
   CHECK(copy.at(1).direction == 1);
 }

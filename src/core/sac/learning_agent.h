@@ -1,0 +1,48 @@
+// A trainable decomposition agent, as the trainer and the policy files see it. Two exist:
+//   "paper"     the paper's SAC agent, faithfully (paper_agent.h, sac_agent.h);
+//   "lookahead" SAC-style maximum-entropy learning with a one-cut lookahead (lookahead_agent.h).
+#pragma once
+
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <torch/serialize/archive.h>
+
+#include "core/env/episode.h"
+#include "core/env/policy.h"
+#include "core/geometry/grid_face.h"
+#include "core/sac/episode_record.h"
+#include "core/sac/sac_config.h"
+
+namespace autoblock {
+
+// Agents live in shared pointers (make_learning_agent): their deployed policies share them.
+class LearningAgent : public std::enable_shared_from_this<LearningAgent> {
+ public:
+  virtual ~LearningAgent() = default;
+  virtual const SacConfig& config() const = 0;
+
+  // One training episode on face: act stochastically (uniformly during the warm-up), remember,
+  // learn. Output: the episode's record (no episode number, evaluation or clock yet).
+  virtual EpisodeRecord train_episode(const GridFace& face, std::mt19937_64& rng, int max_steps) = 0;
+
+  // The deterministic deployed policy, sharing this agent (which it does not change).
+  virtual std::unique_ptr<Policy> deployed_policy(const std::string& name) = 0;
+  // The value network's score at every model vertex of the episode's current part.
+  virtual std::vector<float> vertex_scores(const Episode& episode) = 0;
+
+  // Inputs: archive; training, true for a checkpoint (target networks, optimisers, counters).
+  virtual void save(torch::serialize::OutputArchive& archive, bool training) const = 0;
+  virtual void load(torch::serialize::InputArchive& archive, bool training) = 0;
+  // The replay memory as bytes, and back (throws InputError for malformed bytes).
+  virtual std::string serialize_memory() const = 0;
+  virtual void deserialize_memory(const std::string& bytes) = 0;
+};
+
+// Inputs: config (config.agent names the kind). Output: a fresh agent; the caller seeds torch.
+// Throws InputError for an unknown kind.
+std::shared_ptr<LearningAgent> make_learning_agent(const SacConfig& config);
+
+}  // namespace autoblock

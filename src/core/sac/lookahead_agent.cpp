@@ -1,0 +1,469 @@
+#include "core/sac/lookahead_agent.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+
+#include "core/common/error.h"
+#include "core/geometry/part_symmetry.h"
+#include "core/sac/state_batch.h"
+
+namespace autoblock {
+namespace {
+
+// Entropy of softmax(q / alpha).
+double softmax_entropy(const std::vector<double>& q, double alpha) {
+  const double top = *std::max_element(q.begin(), q.end());
+  double z = 0.0;
+  for (double v : q) z += std::exp((v - top) / alpha);
+  double h = 0.0;
+  for (double v : q) {
+    const double p = std::exp((v - top) / alpha) / z;
+    if (p > 0) h -= p * std::log(p);
+  }
+  return h;
+}
+
+double soft_maximum(const std::vector<double>& q, double alpha) {
+  const double top = *std::max_element(q.begin(), q.end());
+  double z = 0.0;
+  for (double v : q) z += std::exp((v - top) / alpha);
+  return top + alpha * std::log(z);
+}
+
+// The deployed policy: argmax of Q over the candidate cuts, with a cache of the states it built
+// (a cut's pieces are the next parts to cut). Owns no training state; safe to use one per thread.
+class LookaheadPolicy : public Policy {
+ public:
+  LookaheadPolicy(std::shared_ptr<LookaheadAgent> agent, std::string name) : agent_(std::move(agent)), name_(std::move(name)) {}
+  std::string name() const override { return name_; }
+
+  Action choose(const Episode& episode) override {
+    const auto state = state_of(episode.current_part(), episode.face().size);
+    const std::vector<double> q = values(*state, episode.face().size);
+    const size_t best = static_cast<size_t>(std::max_element(q.begin(), q.end()) - q.begin());
+    const LineCandidate& line = state->lines[best];
+    return Action{line.vertex, line.line.direction};
+  }
+
+  std::vector<double> values(const PartState& state, double face_size) {
+    std::vector<const PartState*> children;
+    std::vector<std::shared_ptr<const PartState>> keep;
+    for (const LineCandidate& line : state.lines) {
+      for (const Part& piece : line.to_cut) {
+        keep.push_back(state_of(piece, face_size));
+        children.push_back(keep.back().get());
+      }
+    }
+    const std::vector<double> w = children.empty() ? std::vector<double>{} : agent_->state_values(children);
+    std::vector<double> q;
+    size_t k = 0;
+    for (const LineCandidate& line : state.lines) {
+      double value = line.reward;
+      for (size_t c = 0; c < line.to_cut.size(); ++c) value += agent_->config().gamma * w[k++];
+      q.push_back(value);
+    }
+    return q;
+  }
+
+  std::shared_ptr<const PartState> state_of(const Part& part, double face_size) {
+    auto& slot = cache_[part];
+    if (!slot) slot = make_part_state(part, agent_->state_options(face_size));
+    return slot;
+  }
+
+ private:
+  std::shared_ptr<LookaheadAgent> agent_;
+  std::string name_;
+  std::unordered_map<Part, std::shared_ptr<const PartState>, PartHash> cache_;
+};
+
+}  // namespace
+
+LookaheadAgent::LookaheadAgent(const SacConfig& config)
+    : config_(config), scale_(lookahead_reward_scale(config.reward)) {
+  ValueNetworkConfig network = ValueNetworkConfig::by_name(config.value_network);
+  network.inputs = kLookaheadFeatures;
+  value_ = ValueNetwork(network);
+  target_ = ValueNetwork(network);
+  {
+    torch::NoGradGuard no_grad;
+    const auto source = value_->named_parameters(true);
+    for (auto& item : target_->named_parameters(true)) item.value().copy_(source[item.key()]);
+  }
+  target_->eval();
+  log_alpha_ = torch::full({}, std::log(config.initial_direction_temperature * scale_), torch::requires_grad());
+  value_optimizer_ = std::make_unique<torch::optim::Adam>(value_->parameters(), torch::optim::AdamOptions(config.lr_value));
+  temperature_optimizer_ = std::make_unique<torch::optim::Adam>(std::vector<torch::Tensor>{log_alpha_},
+                                                                torch::optim::AdamOptions(config.lr_temperature));
+}
+
+PartStateOptions LookaheadAgent::state_options(double face_size) const {
+  PartStateOptions options(config_.graph);
+  options.lookahead = true;
+  options.reward = config_.reward;
+  options.face_size = face_size;
+  return options;
+}
+
+double LookaheadAgent::temperature() const { return std::exp(log_alpha_.item<double>()); }
+
+torch::Tensor LookaheadAgent::forward_values(ValueNetwork& network, const std::vector<const PartState*>& states) {
+  const GraphBatch batch = batch_states(states);
+  const torch::Tensor vertex_out = network->forward(batch.x, batch.edge_index, batch.pseudo).index_select(0, batch.vertex_nodes);
+  std::vector<int64_t> owner;
+  owner.reserve(static_cast<size_t>(vertex_out.size(0)));
+  for (size_t g = 0; g + 1 < batch.vertex_offsets.size(); ++g) {
+    for (int64_t k = batch.vertex_offsets[g]; k < batch.vertex_offsets[g + 1]; ++k) owner.push_back(static_cast<int64_t>(g));
+  }
+  return torch::zeros({static_cast<int64_t>(states.size())}).index_add(0, torch::tensor(owner, torch::kInt64), vertex_out) *
+         scale_;
+}
+
+std::vector<double> LookaheadAgent::state_values(const std::vector<const PartState*>& states) {
+  torch::NoGradGuard no_grad;
+  value_->eval();
+  const torch::Tensor w = forward_values(value_, states).contiguous();
+  return std::vector<double>(w.data_ptr<float>(), w.data_ptr<float>() + w.numel());
+}
+
+std::vector<double> LookaheadAgent::cut_values(const PartState& state, double face_size) {
+  std::vector<const PartState*> children;
+  std::vector<std::shared_ptr<const PartState>> keep;
+  for (const LineCandidate& line : state.lines) {
+    for (const Part& piece : line.to_cut) {
+      keep.push_back(cached_state(piece, face_size));
+      children.push_back(keep.back().get());
+    }
+  }
+  const std::vector<double> w = children.empty() ? std::vector<double>{} : state_values(children);
+  std::vector<double> q;
+  size_t k = 0;
+  for (const LineCandidate& line : state.lines) {
+    double value = line.reward;
+    for (size_t c = 0; c < line.to_cut.size(); ++c) value += config_.gamma * w[k++];
+    q.push_back(value);
+  }
+  return q;
+}
+
+std::shared_ptr<const PartState> LookaheadAgent::cached_state(const Part& part, double face_size) {
+  if (states_.size() > 200000) states_.clear();  // a memory bound; states are rebuilt on demand
+  auto& slot = states_[part];
+  if (!slot) slot = make_part_state(part, state_options(face_size));
+  return slot;
+}
+
+void LookaheadAgent::remember(const Part& part, double face_size, int symmetry) {
+  Memory entry{part, face_size, symmetry};
+  if (memory_.size() < static_cast<size_t>(config_.buffer_capacity)) {
+    memory_.push_back(std::move(entry));
+  } else {
+    memory_[next_] = std::move(entry);
+    next_ = (next_ + 1) % memory_.size();
+  }
+}
+
+EpisodeRecord LookaheadAgent::train_episode(const GridFace& face, std::mt19937_64& rng, int max_steps) {
+  EpisodeOptions options;
+  options.reward = config_.reward;
+  options.max_steps = max_steps;
+  Episode episode(face, options);
+  std::map<std::string, double> metric_sums;
+  int updates = 0;
+  while (episode.running()) {
+    const auto state = cached_state(episode.current_part(), face.size);
+    size_t chosen;
+    if (steps_ < config_.warmup_steps) {
+      chosen = std::uniform_int_distribution<size_t>(0, state->lines.size() - 1)(rng);
+    } else {
+      const std::vector<double> q = cut_values(*state, face.size);
+      const double alpha = temperature();
+      const double top = *std::max_element(q.begin(), q.end());
+      std::vector<double> weights;
+      for (double v : q) weights.push_back(std::exp((v - top) / alpha));
+      chosen = static_cast<size_t>(std::discrete_distribution<int>(weights.begin(), weights.end())(rng));
+    }
+    remember(episode.current_part(), face.size, std::uniform_int_distribution<int>(0, 7)(rng));
+    const LineCandidate& line = state->lines[chosen];
+    episode.step(Action{line.vertex, line.line.direction});
+    ++steps_;
+    if (steps_ > config_.warmup_steps && memory_.size() >= static_cast<size_t>(config_.batch_size) &&
+        steps_ % config_.update_every == 0) {
+      for (const auto& [name, value] : update(static_cast<size_t>(config_.batch_size), rng)) metric_sums[name] += value;
+      ++updates;
+    }
+  }
+  EpisodeRecord record;
+  record.ret = episode.total_return();
+  record.blocks = static_cast<int>(episode.blocks().size());
+  record.steps = episode.steps();
+  record.complete = episode.status() == EpisodeStatus::Complete;
+  for (const auto& [name, sum] : metric_sums) record.metrics[name] = sum / updates;
+  record.alpha = temperature();
+  return record;
+}
+
+std::map<std::string, double> LookaheadAgent::update(size_t count, std::mt19937_64& rng) {
+  if (memory_.empty()) throw std::logic_error("LookaheadAgent::update: nothing remembered");
+  std::uniform_int_distribution<size_t> pick(0, memory_.size() - 1);
+  std::vector<const Memory*> batch;
+  for (size_t k = 0; k < count; ++k) batch.push_back(&memory_[pick(rng)]);
+
+  // Targets: soft maximum over each part's cuts of reward + gamma * W'(pieces).
+  std::vector<std::shared_ptr<const PartState>> parents;
+  std::vector<const PartState*> missing;
+  std::vector<Part> missing_parts;
+  std::vector<std::shared_ptr<const PartState>> keep;
+  for (const Memory* m : batch) {
+    parents.push_back(cached_state(m->part, m->face_size));
+    for (const LineCandidate& line : parents.back()->lines) {
+      for (const Part& piece : line.to_cut) {
+        if (target_values_.count(piece)) continue;
+        keep.push_back(cached_state(piece, m->face_size));
+        missing.push_back(keep.back().get());
+        missing_parts.push_back(piece);
+        target_values_[piece] = 0.0;  // placeholder, filled below (also dedupes)
+      }
+    }
+  }
+  if (!missing.empty()) {
+    torch::NoGradGuard no_grad;
+    const torch::Tensor w = forward_values(target_, missing).contiguous();
+    for (size_t k = 0; k < missing.size(); ++k) target_values_[missing_parts[k]] = w.data_ptr<float>()[k];
+  }
+  const double alpha = temperature();
+  std::vector<float> targets;
+  double entropy = 0.0, entropy_target = 0.0;
+  for (const auto& state : parents) {
+    std::vector<double> q;
+    for (const LineCandidate& line : state->lines) {
+      double value = line.reward;
+      for (const Part& piece : line.to_cut) value += config_.gamma * target_values_.at(piece);
+      q.push_back(value);
+    }
+    targets.push_back(static_cast<float>(soft_maximum(q, alpha)));
+    entropy += softmax_entropy(q, alpha);
+    entropy_target += config_.vertex_target_entropy_fraction * std::log(static_cast<double>(q.size()));
+  }
+  entropy /= static_cast<double>(batch.size());
+  entropy_target /= static_cast<double>(batch.size());
+
+  // The parts as presented: each in its remembered symmetry.
+  std::vector<std::shared_ptr<const PartState>> shown;
+  std::vector<const PartState*> shown_raw;
+  for (size_t k = 0; k < batch.size(); ++k) {
+    const Memory& m = *batch[k];
+    shown.push_back(m.symmetry == 0 ? parents[k] : make_part_state(transform_part(m.part, m.symmetry), state_options(m.face_size)));
+    shown_raw.push_back(shown.back().get());
+  }
+  value_->train();
+  const torch::Tensor w = forward_values(value_, shown_raw);
+  const torch::Tensor y = torch::tensor(targets);
+  const torch::Tensor loss = torch::mse_loss(w / scale_, y / scale_);
+  value_optimizer_->zero_grad();
+  loss.backward();
+  torch::nn::utils::clip_grad_norm_(value_->parameters(), 10.0);
+  value_optimizer_->step();
+
+  const torch::Tensor temperature_loss = log_alpha_.exp() * (entropy - entropy_target);
+  temperature_optimizer_->zero_grad();
+  temperature_loss.backward();
+  temperature_optimizer_->step();
+
+  if (++updates_ % config_.target_update_every == 0) {
+    torch::NoGradGuard no_grad;
+    const auto source = value_->named_parameters(true);
+    for (auto& item : target_->named_parameters(true)) item.value().copy_(source[item.key()]);
+    const auto buffers = value_->named_buffers(true);
+    for (auto& item : target_->named_buffers(true)) item.value().copy_(buffers[item.key()]);
+    target_values_.clear();
+  }
+  if (target_values_.size() > 200000) target_values_.clear();
+  return {{"value_loss", loss.item<double>()},
+          {"alpha", temperature()},
+          {"entropy", entropy},
+          {"mean_target", y.mean().item<double>()},
+          {"mean_value", w.mean().item<double>()}};
+}
+
+std::unique_ptr<Policy> LookaheadAgent::deployed_policy(const std::string& name) {
+  return std::make_unique<LookaheadPolicy>(std::static_pointer_cast<LookaheadAgent>(shared_from_this()), name);
+}
+
+std::vector<float> LookaheadAgent::vertex_scores(const Episode& episode) {
+  LookaheadPolicy policy(std::static_pointer_cast<LookaheadAgent>(shared_from_this()), "");
+  const auto state = policy.state_of(episode.current_part(), episode.face().size);
+  const std::vector<double> q = policy.values(*state, episode.face().size);
+  // A vertex scores the better of the cuts through it (lines through no other corner count too).
+  std::vector<float> scores(episode.current_vertices().size(), -std::numeric_limits<float>::infinity());
+  for (size_t v = 0; v < scores.size(); ++v) {
+    const Corner& c = episode.current_vertices()[v].corner;
+    for (size_t l = 0; l < state->lines.size(); ++l) {
+      const AxisLine& line = state->lines[l].line;
+      if ((line.direction == CutDirection::Vertical ? c.i : c.j) == line.index) {
+        scores[v] = std::max(scores[v], static_cast<float>(q[l]));
+      }
+    }
+  }
+  return scores;
+}
+
+void LookaheadAgent::save(torch::serialize::OutputArchive& archive, bool training) const {
+  torch::serialize::OutputArchive value;
+  value_->save(value);
+  archive.write("value", value);
+  archive.write("log_alpha", log_alpha_.detach());
+  if (!training) return;
+  torch::serialize::OutputArchive target, value_optimizer, temperature_optimizer;
+  target_->save(target);
+  archive.write("value_target", target);
+  value_optimizer_->save(value_optimizer);
+  archive.write("value_optimizer", value_optimizer);
+  temperature_optimizer_->save(temperature_optimizer);
+  archive.write("temperature_optimizer", temperature_optimizer);
+  archive.write("counters", torch::tensor({static_cast<int64_t>(steps_), static_cast<int64_t>(updates_),
+                                           static_cast<int64_t>(next_)}, torch::kInt64));
+}
+
+void LookaheadAgent::load(torch::serialize::InputArchive& archive, bool training) {
+  torch::serialize::InputArchive value;
+  archive.read("value", value);
+  value_->load(value);
+  torch::Tensor log_alpha;
+  archive.read("log_alpha", log_alpha);
+  {
+    torch::NoGradGuard no_grad;
+    log_alpha_.copy_(log_alpha);
+  }
+  target_values_.clear();
+  if (!training) {
+    torch::NoGradGuard no_grad;
+    const auto source = value_->named_parameters(true);
+    for (auto& item : target_->named_parameters(true)) item.value().copy_(source[item.key()]);
+    return;
+  }
+  torch::serialize::InputArchive target, value_optimizer, temperature_optimizer;
+  archive.read("value_target", target);
+  target_->load(target);
+  archive.read("value_optimizer", value_optimizer);
+  value_optimizer_->load(value_optimizer);
+  archive.read("temperature_optimizer", temperature_optimizer);
+  temperature_optimizer_->load(temperature_optimizer);
+  torch::Tensor counters;
+  archive.read("counters", counters);
+  steps_ = counters[0].item<int64_t>();
+  updates_ = counters[1].item<int64_t>();
+  next_ = static_cast<size_t>(counters[2].item<int64_t>());
+}
+
+namespace {
+
+void put_bytes(std::string& out, const void* data, size_t size) { out.append(static_cast<const char*>(data), size); }
+
+template <typename T>
+void put(std::string& out, const T& value) {
+  put_bytes(out, &value, sizeof(T));
+}
+
+template <typename T>
+T get(const std::string& in, size_t& offset) {
+  if (offset + sizeof(T) > in.size()) throw InputError("corrupt replay memory (truncated)");
+  T value;
+  std::memcpy(&value, in.data() + offset, sizeof(T));
+  offset += sizeof(T);
+  return value;
+}
+
+constexpr std::uint32_t kMemoryMagic = 0x4d4c4241;  // "ABLM"
+
+}  // namespace
+
+std::string LookaheadAgent::serialize_memory() const {
+  std::string out;
+  put(out, kMemoryMagic);
+  std::map<const Grid*, std::uint32_t> grid_ids;
+  std::vector<const Grid*> grids;
+  for (const Memory& m : memory_) {
+    if (grid_ids.emplace(&m.part.grid(), static_cast<std::uint32_t>(grids.size())).second) grids.push_back(&m.part.grid());
+  }
+  put<std::uint64_t>(out, grids.size());
+  for (const Grid* g : grids) {
+    put<std::uint64_t>(out, g->xs.size());
+    put_bytes(out, g->xs.data(), g->xs.size() * sizeof(double));
+    put<std::uint64_t>(out, g->ys.size());
+    put_bytes(out, g->ys.data(), g->ys.size() * sizeof(double));
+  }
+  put<std::uint64_t>(out, memory_.size());
+  for (const Memory& m : memory_) {
+    put(out, grid_ids.at(&m.part.grid()));
+    put(out, m.face_size);
+    put<std::int32_t>(out, m.symmetry);
+    std::vector<std::int32_t> cells;
+    for (int j = m.part.j0(); j < m.part.j0() + m.part.height_cells(); ++j) {
+      for (int i = m.part.i0(); i < m.part.i0() + m.part.width_cells(); ++i) {
+        if (m.part.contains(i, j)) {
+          cells.push_back(i);
+          cells.push_back(j);
+        }
+      }
+    }
+    put<std::uint64_t>(out, cells.size());
+    put_bytes(out, cells.data(), cells.size() * sizeof(std::int32_t));
+  }
+  return out;
+}
+
+void LookaheadAgent::deserialize_memory(const std::string& in) {
+  size_t offset = 0;
+  if (get<std::uint32_t>(in, offset) != kMemoryMagic) throw InputError("corrupt replay memory (bad magic)");
+  const auto grid_count = get<std::uint64_t>(in, offset);
+  if (grid_count > in.size()) throw InputError("corrupt replay memory (bad grid count)");
+  std::vector<std::shared_ptr<const Grid>> grids;
+  for (std::uint64_t g = 0; g < grid_count; ++g) {
+    auto grid = std::make_shared<Grid>();
+    for (std::vector<double>* axis : {&grid->xs, &grid->ys}) {
+      const auto n = get<std::uint64_t>(in, offset);
+      if (n < 2 || n > in.size()) throw InputError("corrupt replay memory (bad grid)");
+      axis->resize(n);
+      for (auto& v : *axis) v = get<double>(in, offset);
+      if (!std::is_sorted(axis->begin(), axis->end())) throw InputError("corrupt replay memory (bad grid)");
+    }
+    grids.push_back(grid);
+  }
+  const auto count = get<std::uint64_t>(in, offset);
+  if (count > static_cast<std::uint64_t>(config_.buffer_capacity)) throw InputError("corrupt replay memory (too many parts)");
+  std::vector<Memory> memory;
+  for (std::uint64_t k = 0; k < count; ++k) {
+    const auto grid = get<std::uint32_t>(in, offset);
+    if (grid >= grids.size()) throw InputError("corrupt replay memory (bad grid index)");
+    Memory m;
+    m.face_size = get<double>(in, offset);
+    m.symmetry = get<std::int32_t>(in, offset);
+    const auto n = get<std::uint64_t>(in, offset);
+    if (n == 0 || n % 2 || n > in.size() || m.symmetry < 0 || m.symmetry > 7) throw InputError("corrupt replay memory (bad part)");
+    std::vector<std::pair<int, int>> cells;
+    for (std::uint64_t c = 0; c < n; c += 2) {
+      const int i = get<std::int32_t>(in, offset), j = get<std::int32_t>(in, offset);
+      if (i < 0 || j < 0 || i >= grids[grid]->columns() || j >= grids[grid]->rows()) {
+        throw InputError("corrupt replay memory (cell outside the grid)");
+      }
+      cells.emplace_back(i, j);
+    }
+    m.part = Part(grids[grid], cells);
+    memory.push_back(std::move(m));
+  }
+  if (offset != in.size()) throw InputError("corrupt replay memory (trailing bytes)");
+  memory_ = std::move(memory);
+  if (memory_.size() < static_cast<size_t>(config_.buffer_capacity) ? next_ != 0 : next_ >= memory_.size()) {
+    throw InputError("corrupt replay memory (bad position)");
+  }
+  states_.clear();
+  target_values_.clear();
+}
+
+}  // namespace autoblock
