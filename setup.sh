@@ -15,6 +15,7 @@ PACKAGES=(
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libtbb-dev
   nlohmann-json3-dev libcli11-dev catch2
+  libglpk-dev libpng-dev gmsh
 )
 
 install_missing() {

@@ -8,5 +8,6 @@ namespace autoblock::cli {
 void add_generate_command(CLI::App& app);
 void add_decompose_command(CLI::App& app);
 void add_eval_command(CLI::App& app);
+void add_mesh_command(CLI::App& app);
 
 }  // namespace autoblock::cli
