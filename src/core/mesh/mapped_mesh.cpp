@@ -45,7 +45,7 @@ struct EdgeNodes {
 QuadMesh mapped_mesh(const ConformalBlocks& model, const std::vector<Box>& blocks, const GridFace& face,
                      const StripLayout& layout, const IntervalAssignment& intervals, double z) {
   if (model.faces.size() != blocks.size()) throw std::logic_error("mapped_mesh: one face per block expected");
-  const Grid& g = *face.grid;
+  const Grid& g = *layout.grid;
   const double tolerance = 1e-9 * face.size;
   QuadMesh mesh;
   mesh.z = z;

@@ -19,7 +19,7 @@
 namespace autoblock {
 
 // Inputs:  model, the merged blocks (faces in block order); blocks, the same as boxes; face, the
-//          input face on its grid; layout, strip_layout(face, blocks); intervals, counts per strip;
+//          input face on its grid (for its size); layout, strip_layout(face, blocks); intervals, counts per strip;
 //          z, the face's plane.
 // Outputs: the quad mesh, quads block by block, each block's quads row by row.
 // Throws std::logic_error when the model does not match the blocks or the grid (a face with a

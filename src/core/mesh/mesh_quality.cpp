@@ -31,8 +31,9 @@ QuadQuality quad_quality(const std::array<Point2, 4>& p) {
     q.max_angle = std::max(q.max_angle, angle);
   }
   q.aspect_ratio = shortest > 0 ? longest / shortest : INFINITY;
-  const double x1x = p[1].x + p[2].x - p[0].x - p[3].x, x1y = p[1].y + p[2].y - p[0].y - p[3].y;
-  const double x2x = p[2].x + p[3].x - p[0].x - p[1].x, x2y = p[2].y + p[3].y - p[0].y - p[1].y;
+  // Principal axes as sums of edge vectors (exactly axis-parallel for a rectangle).
+  const double x1x = (p[1].x - p[0].x) + (p[2].x - p[3].x), x1y = (p[1].y - p[0].y) + (p[2].y - p[3].y);
+  const double x2x = (p[3].x - p[0].x) + (p[2].x - p[1].x), x2y = (p[3].y - p[0].y) + (p[2].y - p[1].y);
   const double n1 = std::hypot(x1x, x1y), n2 = std::hypot(x2x, x2y);
   q.skew = n1 > 0 && n2 > 0 ? std::fabs(x1x * x2x + x1y * x2y) / (n1 * n2) : 1.0;
   return q;

@@ -4,8 +4,8 @@
 //   scaled Jacobian  min over the corners of (e1 x e2) / (|e1| |e2|), e1 and e2 the edges leaving
 //                    the corner in counter-clockwise order: 1 for a rectangle, <= 0 when inverted;
 //   aspect ratio     longest edge over shortest edge: 1 for a square;
-//   skew             |cos| of the angle between the principal axes (p1 + p2 - p0 - p3 and
-//                    p2 + p3 - p0 - p1): 0 for a rectangle (Verdict's definition);
+//   skew             |cos| of the angle between the principal axes (p1 - p0 + p2 - p3 and
+//                    p3 - p0 + p2 - p1): 0 for a rectangle (Verdict's definition);
 //   min/max angle    interior angles in degrees: 90 and 90 for a rectangle.
 // An interior node is irregular when its valence (number of quads around it) is not 4; boundary
 // nodes are the ends of edges used by one quad only.

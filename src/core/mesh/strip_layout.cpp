@@ -31,26 +31,64 @@ int grid_index(const std::vector<double>& values, double v, double tolerance) {
   return static_cast<int>(it - values.begin());
 }
 
+// The face's grid coordinates plus the blocks' (a block corner off the face's grid, as in a
+// hand-made partition, adds a coordinate; one within tolerance of an existing one snaps to it).
+std::vector<double> refined(const std::vector<double>& face_values, const std::vector<double>& extra, double tolerance) {
+  std::vector<double> values = face_values;
+  for (double v : extra) {
+    const auto it = std::lower_bound(values.begin(), values.end(), v - tolerance);
+    if (it == values.end() || std::fabs(*it - v) > tolerance) values.insert(it, v);
+  }
+  return values;
+}
+
 }  // namespace
 
 StripLayout strip_layout(const GridFace& face, const std::vector<Box>& blocks) {
-  const Grid& g = *face.grid;
-  const int nx = g.columns(), ny = g.rows();
-  const Part& whole = face.whole;
-  auto inside = [&](int i, int j) { return i >= 0 && j >= 0 && i < nx && j < ny && whole.contains(i, j); };
-  auto cell = [&](int i, int j) { return static_cast<size_t>(j) * static_cast<size_t>(nx) + static_cast<size_t>(i); };
-
-  // Block corners as grid points.
+  const Grid& face_grid = *face.grid;
   const double tolerance = 1e-9 * face.size;
+  std::vector<double> block_xs, block_ys;
+  for (const Box& b : blocks) {
+    block_xs.insert(block_xs.end(), {b.xmin, b.xmax});
+    block_ys.insert(block_ys.end(), {b.ymin, b.ymax});
+  }
+  auto grid_ptr = std::make_shared<Grid>();
+  grid_ptr->xs = refined(face_grid.xs, block_xs, tolerance);
+  grid_ptr->ys = refined(face_grid.ys, block_ys, tolerance);
+  const Grid& g = *grid_ptr;
+  const int nx = g.columns(), ny = g.rows();
+  auto cell = [&](int i, int j) { return static_cast<size_t>(j) * static_cast<size_t>(nx) + static_cast<size_t>(i); };
+  // Inside: the face's cell holding the refined cell's centre.
+  std::vector<char> inside_cell(static_cast<size_t>(nx) * static_cast<size_t>(ny), 0);
+  for (int j = 0; j < ny; ++j) {
+    const double yc = 0.5 * (g.ys[static_cast<size_t>(j)] + g.ys[static_cast<size_t>(j) + 1]);
+    const int fj = static_cast<int>(std::upper_bound(face_grid.ys.begin(), face_grid.ys.end(), yc) - face_grid.ys.begin()) - 1;
+    for (int i = 0; i < nx; ++i) {
+      const double xc = 0.5 * (g.xs[static_cast<size_t>(i)] + g.xs[static_cast<size_t>(i) + 1]);
+      const int fi = static_cast<int>(std::upper_bound(face_grid.xs.begin(), face_grid.xs.end(), xc) - face_grid.xs.begin()) - 1;
+      inside_cell[cell(i, j)] = face.whole.contains(fi, fj);
+    }
+  }
+  auto inside = [&](int i, int j) { return i >= 0 && j >= 0 && i < nx && j < ny && inside_cell[cell(i, j)]; };
+
+  // Block corners as grid points; the blocks must cover the face's cells exactly once.
   std::vector<char> corner(static_cast<size_t>(nx + 1) * static_cast<size_t>(ny + 1), 0);
   auto point = [&](int i, int j) { return static_cast<size_t>(j) * static_cast<size_t>(nx + 1) + static_cast<size_t>(i); };
+  std::vector<char> covered(inside_cell.size(), 0);
   for (const Box& b : blocks) {
     const int i0 = grid_index(g.xs, b.xmin, tolerance), i1 = grid_index(g.xs, b.xmax, tolerance);
     const int j0 = grid_index(g.ys, b.ymin, tolerance), j1 = grid_index(g.ys, b.ymax, tolerance);
     for (int i : {i0, i1}) {
       for (int j : {j0, j1}) corner[point(i, j)] = 1;
     }
+    for (int j = j0; j < j1; ++j) {
+      for (int i = i0; i < i1; ++i) {
+        if (!inside(i, j) || covered[cell(i, j)]) throw std::logic_error("strip_layout: the blocks do not partition the face");
+        covered[cell(i, j)] = 1;
+      }
+    }
   }
+  if (covered != inside_cell) throw std::logic_error("strip_layout: the blocks do not cover the face");
 
   // Forced lines. Horizontal grid segment (i, j) is [xs[i], xs[i+1]] at y = ys[j]; it is interior
   // when the cells below and above are both inside. A maximal run of interior segments is a chord
@@ -111,7 +149,7 @@ StripLayout strip_layout(const GridFace& face, const std::vector<Box>& blocks) {
   }
 
   StripLayout layout;
-  layout.grid = face.grid;
+  layout.grid = grid_ptr;
   layout.cell_column.assign(n_cells, -1);
   layout.cell_row.assign(n_cells, -1);
   std::map<size_t, int> column_id, row_id;

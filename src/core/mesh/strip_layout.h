@@ -15,8 +15,10 @@
 // the neighbours; every element is an exact axis-aligned rectangle (scaled Jacobian 1, interior
 // valence 4). Every mesh of rectangles conforming to the blocks has this form, so nothing is lost.
 //
-// Everything is exact integer work on the face's grid (grid.h): forced lines are runs of interior
-// grid segments through a block corner, strips are unions of grid cells.
+// Everything is exact integer work on a grid (grid.h): the face's grid plus the blocks'
+// coordinates (the same grid for a Decomposition, whose block corners lie on the face's grid).
+// Forced lines are runs of interior grid segments through a block corner, strips are unions of
+// grid cells.
 #pragma once
 
 #include <memory>
@@ -42,7 +44,7 @@ struct StripCell {
 };
 
 struct StripLayout {
-  std::shared_ptr<const Grid> grid;
+  std::shared_ptr<const Grid> grid;  // the face's grid refined by the blocks' coordinates
   std::vector<Strip> strips;     // column strips and row strips, one id space
   std::vector<StripCell> cells;  // every cell once
   // Per grid cell (i, j), index j * columns + i: its column and row strip, -1 outside the face.
@@ -52,10 +54,10 @@ struct StripLayout {
   int row_of(int i, int j) const { return cell_row[static_cast<size_t>(j * grid->columns() + i)]; }
 };
 
-// Inputs:  face on its grid; blocks, a partition of the face into rectangles whose corners lie on
-//          the grid (a Decomposition's blocks).
-// Outputs: the strips, the cells, and the strip of every grid cell.
-// Throws std::logic_error when a block corner is not a grid point.
+// Inputs:  face on its grid; blocks, a partition of the face into rectangles (a Decomposition's
+//          blocks, or any other).
+// Outputs: the strips, the cells, and the strip of every cell of the layout's grid.
+// Throws std::logic_error when the blocks do not partition the face.
 StripLayout strip_layout(const GridFace& face, const std::vector<Box>& blocks);
 
 // Inputs: layout; axis; grid line index (j for a horizontal line y = ys[j], i for x = xs[i]);
