@@ -11,7 +11,6 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "core/common/error.h"
-#include "core/common/format.h"
 #include "core/io/text_file.h"
 #include "core/mesh/mesh_export.h"
 #include "core/mesh/mesh_picture.h"
@@ -61,12 +60,21 @@ void require_folder(const std::string& path, const std::string& option) {
 std::string mesh_summary(const Decomposition& d, const MeshResult& r, double seconds) {
   char buf[512];
   std::snprintf(buf, sizeof buf,
-                "%zu blocks, %zu nodes, %zu quads, size %s (max deviation %.1f %%), min scaled Jacobian %.4g, "
+                "%zu blocks, %zu nodes, %zu quads, size %.4g (max deviation %.1f %%), min scaled Jacobian %.4g, "
                 "%d irregular interior vertices, %s, %.1f ms",
-                d.blocks.size(), r.mesh.nodes.size(), r.mesh.quads.size(), format_number(r.intervals.target_size).c_str(),
+                d.blocks.size(), r.mesh.nodes.size(), r.mesh.quads.size(), r.intervals.target_size,
                 100.0 * r.intervals.max_relative_deviation, r.quality.min_scaled_jacobian,
                 r.quality.irregular_interior_nodes, r.conformity.conformal ? "conformal" : "NOT conformal",
                 seconds * 1000.0);
+  return buf;
+}
+
+// The picture's second title line, short enough for its width.
+std::string picture_summary(const Decomposition& d, const MeshResult& r) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "%zu blocks, %zu quads, size %.4g, min scaled Jacobian %.4g, %d irregular vertices",
+                d.blocks.size(), r.mesh.quads.size(), r.intervals.target_size, r.quality.min_scaled_jacobian,
+                r.quality.irregular_interior_nodes);
   return buf;
 }
 
@@ -123,7 +131,7 @@ void add_mesh_command(CLI::App& app) {
     }
     const std::string mesh_text = args->out.empty() ? "" : mesh_file_text(args->out, result.mesh);
     const std::string title = std::filesystem::path(args->file).filename().string() + " - policy " +
-                              decomposition.policy + " | " + mesh_summary(decomposition, result, seconds);
+                              decomposition.policy + " | " + picture_summary(decomposition, result);
     const std::string picture = args->picture.empty() ? ""
                                                       : mesh_picture(args->picture, face.planar.polygon,
                                                                      decomposition.blocks, result.mesh, title);

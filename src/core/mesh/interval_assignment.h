@@ -35,9 +35,9 @@ namespace autoblock {
 // Largest mesh a request may ask for (quadrilaterals).
 constexpr long kMaxMeshQuads = 5'000'000;
 
-// The element size used when none is given: this fraction of the longer side of the face's
-// bounding box (20 elements along it).
-constexpr double kDefaultSizeFraction = 1.0 / 20.0;
+// The element size used when none is given: the longer side of the face's bounding box divided by
+// this (20 elements along it).
+constexpr double kDefaultSizeDivisions = 20.0;
 
 // A fixed count: the strips of one stretch of the block model get `intervals` in total.
 struct FixedIntervals {

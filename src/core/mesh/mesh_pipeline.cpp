@@ -41,7 +41,7 @@ Box vertex_box(const TopoDS_Face& face) {
 }  // namespace
 
 double target_size_for(const InputFace& face, double size) {
-  return size > 0 ? size : kDefaultSizeFraction * face.grid.size;
+  return size > 0 ? size : face.grid.size / kDefaultSizeDivisions;
 }
 
 MeshResult mesh_decomposition(const InputFace& face, const Decomposition& d, const MeshOptions& options) {

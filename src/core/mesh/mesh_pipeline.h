@@ -22,7 +22,7 @@ struct EdgeIntervals {
 };
 
 struct MeshOptions {
-  double size = 0.0;                 // target element size h; 0: kDefaultSizeFraction x the face's size
+  double size = 0.0;                 // target element size h; 0: the face's size / kDefaultSizeDivisions
   std::vector<EdgeIntervals> fixed;  // fixed interval counts
   long max_quads = kMaxMeshQuads;
   EpisodeOptions episode;            // the decomposition's options (for the replay)
