@@ -174,7 +174,9 @@ Sample gmsh_sample(const Face& f, const std::string& folder, int k, double h) {
   s.mean_sj = q.mean_scaled_jacobian;
   s.max_aspect = q.max_aspect_ratio;
   s.irregular = q.irregular_interior_nodes;
-  s.conformal = s.triangles == 0 && check_conformity(mesh, f.face.planar.polygon).conformal;
+  const Conformity c = check_conformity(mesh, f.face.planar.polygon);
+  s.conformal = s.triangles == 0 && c.conformal;
+  if (!c.conformal) std::fprintf(stderr, "gmsh mesh of face %d (size %.6g) is not conformal: %s\n", k, h, c.problem.c_str());
   return s;
 }
 

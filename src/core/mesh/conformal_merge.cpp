@@ -17,6 +17,14 @@ namespace autoblock {
 
 ConformalBlocks conformal_merge(const std::vector<TopoDS_Face>& blocks) {
   if (blocks.empty()) throw std::runtime_error("conformal_merge: no blocks");
+  if (blocks.size() == 1) {  // a rectangular face: nothing to merge (the general fuse wants two)
+    ConformalBlocks single;
+    BRep_Builder compound_builder;
+    compound_builder.MakeCompound(single.compound);
+    compound_builder.Add(single.compound, blocks[0]);
+    single.faces = blocks;
+    return single;
+  }
   TopTools_ListOfShape arguments;
   for (const TopoDS_Face& block : blocks) arguments.Append(block);
   BRepAlgoAPI_BuilderAlgo builder;

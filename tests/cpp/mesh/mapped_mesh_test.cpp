@@ -178,6 +178,20 @@ TEST_CASE("autoblock meshes hundreds of generated faces conformally with perfect
   CHECK(with_t_junctions > 50);  // the cases that matter are well represented
 }
 
+TEST_CASE("a rectangular face is one block and one structured grid", "[mesh][mapped]") {
+  const InputFace face =
+      input_face_from_occt(occt_face_from_polygon(test::polygon_of({{0, 0}, {3, 0}, {3, 2}, {0, 2}}), 1, false), "rect");
+  auto policy = make_baseline_policy("optimal", face.grid.size, BaselineOptions{});
+  const Decomposition d = decompose_face(face.grid, *policy);
+  REQUIRE(d.blocks.size() == 1);
+  MeshOptions options;
+  options.size = 0.5;
+  const MeshResult r = mesh_decomposition(face, d, options);
+  CHECK(r.mesh.quads.size() == 24);
+  CHECK(r.mesh.nodes.size() == 35);
+  check_perfect(r.mesh, face.planar.polygon);
+}
+
 TEST_CASE("meshing refuses incomplete decompositions", "[mesh][errors]") {
   const InputFace face = input_face_from_occt(occt_face_from_polygon(test::polygon_of(test::l_shape()), 0, true), "L");
   auto policy = make_baseline_policy("random", face.grid.size, BaselineOptions{});
