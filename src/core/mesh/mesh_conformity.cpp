@@ -46,6 +46,7 @@ Conformity check_conformity(const QuadMesh& mesh, const RectilinearPolygon& face
   for (const MeshEdge& e : mesh_edges(mesh)) {
     if (e.uses == 2) {
       ++c.interior_edges;
+      c.misoriented_edges += e.forward != 1;
     } else if (e.uses > 2) {
       ++c.overused_edges;
     } else {
@@ -64,6 +65,7 @@ Conformity check_conformity(const QuadMesh& mesh, const RectilinearPolygon& face
   if (mesh.quads.empty()) c.problem = "the mesh has no quads";
   else if (c.overused_edges) c.problem = std::to_string(c.overused_edges) + " edges are used by more than two quads";
   else if (c.stray_boundary_edges) c.problem = std::to_string(c.stray_boundary_edges) + " edges inside the face belong to one quad only (hanging nodes or unshared edges)";
+  else if (c.misoriented_edges) c.problem = std::to_string(c.misoriented_edges) + " interior edges are run the same way by both their quads (inconsistent orientation)";
   else if (c.inverted_quads) c.problem = std::to_string(c.inverted_quads) + " quads are inverted or degenerate";
   else if (std::fabs(c.quad_area - c.face_area) > area_tolerance) c.problem = "the quads' area differs from the face's";
   else if (std::fabs(c.boundary_length - c.face_perimeter) > length_tolerance) c.problem = "the mesh boundary does not cover the face's boundary";

@@ -34,6 +34,7 @@ nlohmann::json mesh_report_json(const std::string& input, const Decomposition& d
   report["conformal"] = c.conformal;
   report["conformity"] = {{"interior_edges", c.interior_edges},     {"boundary_edges", c.boundary_edges},
                           {"overused_edges", c.overused_edges},     {"stray_boundary_edges", c.stray_boundary_edges},
+                          {"misoriented_edges", c.misoriented_edges},
                           {"inverted_quads", c.inverted_quads},     {"quad_area", c.quad_area},
                           {"face_area", c.face_area},               {"boundary_length", c.boundary_length},
                           {"face_perimeter", c.face_perimeter},     {"problem", c.problem}};

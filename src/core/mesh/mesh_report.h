@@ -19,7 +19,7 @@ namespace autoblock {
 //                      "mean_aspect_ratio", "max_skew", "min_angle", "max_angle",
 //                      "interior_vertices", "irregular_interior_vertices"},
 //          "conformal", "conformity": {"interior_edges", "boundary_edges", "overused_edges",
-//                      "stray_boundary_edges", "inverted_quads", "quad_area", "face_area",
+//                      "stray_boundary_edges", "misoriented_edges", "inverted_quads", "quad_area", "face_area",
 //                      "boundary_length", "face_perimeter", "problem"},
 //          "seconds", "timing": {"decomposition", "merge", "intervals", "mesh", "checks"},
 //          "decomposition": {"complete", "min_blocks", "cuts", "return"}}

@@ -22,10 +22,12 @@ struct QuadMesh {
   }
 };
 
-// An edge of a mesh: its nodes (a < b) and how many quads use it.
+// An edge of a mesh: its nodes (a < b), how many quads use it, and how many of those run from a to
+// b (in a consistently oriented mesh an interior edge runs once each way).
 struct MeshEdge {
   int a = 0, b = 0;
   int uses = 0;
+  int forward = 0;
 };
 
 // Inputs: mesh. Output: its distinct edges, ordered by (a, b), with their use counts.

@@ -134,7 +134,10 @@ TEST_CASE("the conformity check catches hanging nodes, gaps and overlaps", "[mes
   CHECK_FALSE(check_conformity(gap, face).conformal);
   QuadMesh inverted = good;
   inverted.quads[0] = {0, 3, 4, 1};
-  CHECK_FALSE(check_conformity(inverted, face).conformal);
+  const Conformity i = check_conformity(inverted, face);
+  CHECK_FALSE(i.conformal);
+  CHECK(i.misoriented_edges == 1);  // the shared edge runs the same way in both quads
+  CHECK(i.inverted_quads == 1);
 }
 
 TEST_CASE("autoblock meshes hundreds of generated faces conformally with perfect quads", "[mesh][mapped][occt]") {
