@@ -86,6 +86,7 @@ TEST_CASE("autoblock mesh writes meshes, pictures and a report", "[cli][mesh]") 
     CHECK(mesh.blocks == report["blocks"].get<int>());
     const InputFace face = load_input_face(shape);
     CHECK(check_conformity(mesh, face.planar.polygon).conformal);  // the file, checked again
+    CHECK(report["target_size"].get<double>() == Approx(face.grid.size / 20));
     CHECK(std::filesystem::file_size(folder + "/" + picture) > 500);
   }
 }
