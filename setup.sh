@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # AutoBlock set-up: install what is missing (Debian 12 packages), build, then run something.
 #
-#   ./setup.sh demo    install, build, and decompose a bundled shape (writes out/demo-*)
+#   ./setup.sh demo    install, build, decompose and mesh a bundled shape (writes out/demo-*)
 #   ./setup.sh test    install, build, and run the whole test suite (what .ci/run does)
 #   ./setup.sh build   install and build only
 #
@@ -18,6 +18,7 @@ PACKAGES=(
   libtorch-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libopenblas0-pthread
   qtbase5-dev libqt5svg5-dev
+  libglpk-dev libpng-dev gmsh
 )
 
 install_missing() {
@@ -51,6 +52,8 @@ demo() {
   local shape=models/data/test/shape_0003.brep
   build/bin/autoblock decompose "$shape" \
     --out out/demo-blocks.brep --json out/demo-report.json --picture out/demo-blocks.svg
+  build/bin/autoblock mesh "$shape" \
+    --out out/demo-mesh.msh --json out/demo-mesh.json --picture out/demo-mesh.svg
 }
 
 run_tests() {

@@ -9,5 +9,6 @@ void add_generate_command(CLI::App& app);
 void add_decompose_command(CLI::App& app);
 void add_eval_command(CLI::App& app);
 void add_train_command(CLI::App& app);
+void add_mesh_command(CLI::App& app);
 
 }  // namespace autoblock::cli

@@ -1,8 +1,5 @@
 // autoblock decompose FILE [--policy NAME] [--out blocks.brep] [--json report.json]
 //                          [--picture blocks.svg] [--seed S] [--max-steps N] [--time-limit T]
-#include <BRep_Builder.hxx>
-#include <TopoDS_Compound.hxx>
-
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
@@ -11,7 +8,7 @@
 #include "cli/commands.h"
 #include "core/common/error.h"
 #include "core/env/occt_replay.h"
-#include "core/geometry/occt_properties.h"
+#include "core/mesh/conformal_merge.h"
 #include "core/io/decomposition_json.h"
 #include "core/io/shape_file.h"
 #include "core/io/svg_picture.h"
@@ -42,7 +39,7 @@ void add_decompose_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand("decompose", "Cut one planar face into rectangular blocks.");
   command->add_option("FILE", args->file, "a .brep, .step or .stp file holding one planar face")->required();
   args->policy.add_to(*command);
-  command->add_option("--out", args->out, "write the blocks (a compound of faces) to a .brep, .step or .stp file");
+  command->add_option("--out", args->out, "write the blocks (a conformal compound of faces sharing their edges) to a .brep, .step or .stp file");
   command->add_option("--json", args->json, "write the report as JSON");
   command->add_option("--picture", args->picture, "write a picture of the blocks (.svg)");
   command->callback([args] {
@@ -53,15 +50,10 @@ void add_decompose_command(CLI::App& app) {
     const EpisodeOptions options = args->policy.episode_options();
     const Decomposition result = decompose_face(face.grid, *policy, options);
     if (!args->out.empty()) {
-      // The blocks as OpenCASCADE cuts them from the input face (checked against the grid engine).
-      BRep_Builder builder;
-      TopoDS_Compound compound;
-      builder.MakeCompound(compound);
-      for (const TopoDS_Face& block : replay_cuts_occt(face.occt, face.grid, result.cuts, options)) {
-        builder.Add(compound, block);
-      }
-      if (!occt_shape_valid(compound)) throw std::runtime_error("the blocks fail BRepCheck_Analyzer");
-      write_shape_file(args->out, compound);
+      // The blocks as OpenCASCADE cuts them from the input face (checked against the grid engine at
+      // every cut), then merged into one conformal model: neighbours share edges and vertices.
+      const ConformalBlocks model = conformal_merge(replay_cuts_occt(face.occt, face.grid, result.cuts, options));
+      write_shape_file(args->out, model.compound);
     }
     if (!args->json.empty()) {
       write_text_file(args->json, decomposition_json(args->file, face.planar, result).dump(2) + "\n");

@@ -19,16 +19,20 @@ std::string slurp(const std::string& path) {
 }
 }  // namespace
 
-CommandResult run_autoblock(const std::string& arguments) {
+CommandResult run_shell(const std::string& command) {
   const std::string folder = temporary_folder("run");
   const std::string out = folder + "/out.txt", err = folder + "/err.txt";
-  const std::string command = std::string("'") + AUTOBLOCK_CLI + "' " + arguments + " >'" + out + "' 2>'" + err + "'";
-  const int status = std::system(command.c_str());
+  const std::string line = command + " >'" + out + "' 2>'" + err + "'";
+  const int status = std::system(line.c_str());
   CommandResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   result.out = slurp(out);
   result.err = slurp(err);
   return result;
+}
+
+CommandResult run_autoblock(const std::string& arguments) {
+  return run_shell(std::string("'") + AUTOBLOCK_CLI + "' " + arguments);
 }
 
 int line_count(const std::string& text) {

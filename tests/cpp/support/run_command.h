@@ -14,6 +14,9 @@ struct CommandResult {
 // Outputs: exit code, stdout and stderr.
 CommandResult run_autoblock(const std::string& arguments);
 
+// Inputs: command, a shell command line. Outputs: exit code, stdout and stderr.
+CommandResult run_shell(const std::string& command);
+
 // Number of lines in text (a final line without newline counts).
 int line_count(const std::string& text);
 

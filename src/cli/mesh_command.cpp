@@ -1,0 +1,148 @@
+// autoblock mesh FILE [--policy NAME] [--size H] [--intervals X0,Y0,X1,Y1=N ...]
+//                     [--out mesh.msh|.vtu|.inp] [--picture mesh.svg|.png] [--json report.json]
+//                     [--seed S] [--max-steps N] [--time-limit T]
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "core/common/error.h"
+#include "core/io/text_file.h"
+#include "core/mesh/mesh_export.h"
+#include "core/mesh/mesh_picture.h"
+#include "core/mesh/mesh_pipeline.h"
+#include "core/mesh/mesh_report.h"
+
+namespace autoblock::cli {
+namespace {
+
+// "X0,Y0,X1,Y1=N" -> EdgeIntervals.
+EdgeIntervals parse_edge_intervals(const std::string& text) {
+  const std::string usage = "--intervals " + text + ": expected X0,Y0,X1,Y1=N (a stretch and its interval count)";
+  const size_t eq = text.find('=');
+  if (eq == std::string::npos) throw InputError(usage);
+  std::vector<double> v;
+  std::stringstream coordinates(text.substr(0, eq));
+  std::string item;
+  while (std::getline(coordinates, item, ',')) {
+    size_t used = 0;
+    try {
+      v.push_back(std::stod(item, &used));
+    } catch (const std::exception&) {
+      throw InputError(usage);
+    }
+    if (used != item.size()) throw InputError(usage);
+  }
+  size_t used = 0;
+  long n = 0;
+  try {
+    n = std::stol(text.substr(eq + 1), &used);
+  } catch (const std::exception&) {
+    throw InputError(usage);
+  }
+  if (v.size() != 4 || used != text.size() - eq - 1 || n < 1 || n > 100000000) throw InputError(usage);
+  return EdgeIntervals{Point2{v[0], v[1]}, Point2{v[2], v[3]}, static_cast<int>(n)};
+}
+
+void require_folder(const std::string& path, const std::string& option) {
+  if (path.empty()) return;
+  const std::filesystem::path p(path);
+  std::error_code ec;
+  if (p.has_parent_path() && !std::filesystem::is_directory(p.parent_path(), ec)) {
+    throw InputError(option + " " + path + ": the folder " + p.parent_path().string() + " does not exist");
+  }
+}
+
+std::string mesh_summary(const Decomposition& d, const MeshResult& r, double seconds) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "%zu blocks, %zu nodes, %zu quads, size %.4g (max deviation %.1f %%), min scaled Jacobian %.4g, "
+                "%d irregular interior vertices, %s, %.1f ms",
+                d.blocks.size(), r.mesh.nodes.size(), r.mesh.quads.size(), r.intervals.target_size,
+                100.0 * r.intervals.max_relative_deviation, r.quality.min_scaled_jacobian,
+                r.quality.irregular_interior_nodes, r.conformity.conformal ? "conformal" : "NOT conformal",
+                seconds * 1000.0);
+  return buf;
+}
+
+// The picture's second title line, short enough for its width.
+std::string picture_summary(const Decomposition& d, const MeshResult& r) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "%zu blocks, %zu quads, size %.4g, min scaled Jacobian %.4g, %d irregular vertices",
+                d.blocks.size(), r.mesh.quads.size(), r.intervals.target_size, r.quality.min_scaled_jacobian,
+                r.quality.irregular_interior_nodes);
+  return buf;
+}
+
+}  // namespace
+
+void add_mesh_command(CLI::App& app) {
+  struct Arguments {
+    std::string file, out, json, picture;
+    double size = 0.0;
+    std::vector<std::string> intervals;
+    PolicyArguments policy;
+  };
+  auto args = std::make_shared<Arguments>();
+  CLI::App* command = app.add_subcommand("mesh", "Decompose one planar face into blocks and mesh them with quadrilaterals.");
+  command->add_option("FILE", args->file, "a .brep, .step or .stp file holding one planar face")->required();
+  args->policy.add_to(*command);
+  command->add_option("--size", args->size,
+                      "target element size (default: 1/20 of the longer side of the face's bounding box)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--intervals", args->intervals,
+                      "X0,Y0,X1,Y1=N: the stretch from (X0,Y0) to (X1,Y1) gets exactly N intervals (repeatable)");
+  command->add_option("--out", args->out, "write the mesh: .msh (Gmsh 4.1), .vtu (VTK) or .inp (Abaqus/CalculiX)");
+  command->add_option("--picture", args->picture, "write a picture of the blocks and the mesh (.svg or .png)");
+  command->add_option("--json", args->json, "write the report as JSON");
+  command->callback([args] {
+    if (!args->out.empty() && !is_mesh_file_name(args->out)) {
+      throw InputError("--out " + args->out + ": expected a .msh, .vtu or .inp file");
+    }
+    const std::string picture_ext = std::filesystem::path(args->picture).extension().string();
+    if (!args->picture.empty() && picture_ext != ".svg" && picture_ext != ".png") {
+      throw InputError("--picture " + args->picture + ": expected a .svg or .png file");
+    }
+    require_folder(args->out, "--out");
+    require_folder(args->picture, "--picture");
+    require_folder(args->json, "--json");
+    MeshOptions options;
+    options.size = args->size;
+    options.episode = args->policy.episode_options();
+    for (const std::string& text : args->intervals) options.fixed.push_back(parse_edge_intervals(text));
+
+    const InputFace face = load_input_face(args->file);
+    const auto start = std::chrono::steady_clock::now();
+    std::unique_ptr<Policy> policy = args->policy.make(face);
+    const Decomposition decomposition = decompose_face(face.grid, *policy, options.episode);
+    const MeshResult result = mesh_decomposition(face, decomposition, options);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    // Everything is made before anything is written.
+    const std::string report =
+        args->json.empty() ? "" : mesh_report_json(args->file, decomposition, result, seconds).dump(2) + "\n";
+    if (!result.conformity.conformal) {
+      if (!args->json.empty()) write_text_file(args->json, report);
+      throw std::runtime_error("the mesh failed the conformity check: " + result.conformity.problem);
+    }
+    const std::string mesh_text = args->out.empty() ? "" : mesh_file_text(args->out, result.mesh);
+    const std::string title = std::filesystem::path(args->file).filename().string() + " - policy " +
+                              decomposition.policy + " | " + picture_summary(decomposition, result);
+    const std::string picture = args->picture.empty() ? ""
+                                                      : mesh_picture(args->picture, face.planar.polygon,
+                                                                     decomposition.blocks, result.mesh, title);
+    if (!args->out.empty()) write_text_file(args->out, mesh_text);
+    if (!args->picture.empty()) write_text_file(args->picture, picture);
+    if (!args->json.empty()) write_text_file(args->json, report);
+    std::cout << args->file << ": " << decomposition.policy << ": " << mesh_summary(decomposition, result, seconds) << "\n";
+    if (!args->out.empty()) std::cout << "  mesh:    " << args->out << "\n";
+    if (!args->json.empty()) std::cout << "  report:  " << args->json << "\n";
+    if (!args->picture.empty()) std::cout << "  picture: " << args->picture << "\n";
+  });
+}
+
+}  // namespace autoblock::cli

@@ -1,0 +1,56 @@
+// From a decomposition to a checked quad mesh: replay the cuts on the CAD face, merge the blocks
+// conformally, assign intervals, mesh every block, measure quality and check conformity.
+#pragma once
+
+#include <vector>
+
+#include "core/env/decomposition.h"
+#include "core/io/input_face.h"
+#include "core/mesh/conformal_merge.h"
+#include "core/mesh/interval_assignment.h"
+#include "core/mesh/mesh_conformity.h"
+#include "core/mesh/mesh_quality.h"
+#include "core/mesh/quad_mesh.h"
+#include "core/mesh/strip_layout.h"
+
+namespace autoblock {
+
+// A user's fixed interval count on the stretch from a to b (see fixed_intervals_on).
+struct EdgeIntervals {
+  Point2 a, b;
+  int intervals = 1;
+};
+
+struct MeshOptions {
+  double size = 0.0;                 // target element size h; 0: the face's size / kDefaultSizeDivisions
+  std::vector<EdgeIntervals> fixed;  // fixed interval counts
+  long max_quads = kMaxMeshQuads;
+  EpisodeOptions episode;            // the decomposition's options (for the replay)
+};
+
+struct MeshResult {
+  ConformalBlocks model;        // the blocks merged, sharing edges
+  StripLayout layout;
+  std::vector<FixedIntervals> fixed;  // the user's fixed counts, as strips
+  IntervalAssignment intervals;
+  QuadMesh mesh;
+  MeshQuality quality;
+  Conformity conformity;        // the independent check
+  bool default_size = false;    // h was derived from the face's size
+  double merge_seconds = 0.0;   // replay of the cuts and the conformal merge (OpenCASCADE)
+  double interval_seconds = 0.0;
+  double mesh_seconds = 0.0;    // mapped meshing
+  double check_seconds = 0.0;   // quality and conformity
+};
+
+// Inputs:  face; decomposition of it (complete); options.
+// Outputs: everything above. The mesh is returned even when the conformity check fails (the
+//          caller reports it).
+// Throws InputError when the decomposition is incomplete or the request is infeasible (see
+// assign_intervals, fixed_intervals_on); std::logic_error / std::runtime_error on internal failures.
+MeshResult mesh_decomposition(const InputFace& face, const Decomposition& decomposition, const MeshOptions& options = {});
+
+// Inputs: face; size as given (<= 0: none). Output: the target size h used.
+double target_size_for(const InputFace& face, double size);
+
+}  // namespace autoblock

@@ -1,0 +1,39 @@
+// Element quality of quadrilateral meshes and the regularity of their nodes.
+//
+// Per quad (corners p0..p3 counter-clockwise):
+//   scaled Jacobian  min over the corners of (e1 x e2) / (|e1| |e2|), e1 and e2 the edges leaving
+//                    the corner in counter-clockwise order: 1 for a rectangle, <= 0 when inverted;
+//   aspect ratio     longest edge over shortest edge: 1 for a square;
+//   skew             |cos| of the angle between the principal axes (p1 - p0 + p2 - p3 and
+//                    p3 - p0 + p2 - p1): 0 for a rectangle (Verdict's definition);
+//   min/max angle    interior angles in degrees: 90 and 90 for a rectangle.
+// An interior node is irregular when its valence (number of quads around it) is not 4; boundary
+// nodes are the ends of edges used by one quad only.
+#pragma once
+
+#include <array>
+
+#include "core/mesh/quad_mesh.h"
+
+namespace autoblock {
+
+struct QuadQuality {
+  double scaled_jacobian = 0.0, aspect_ratio = 0.0, skew = 0.0, min_angle = 0.0, max_angle = 0.0;
+};
+
+struct MeshQuality {
+  double min_scaled_jacobian = 0.0, mean_scaled_jacobian = 0.0;
+  double max_aspect_ratio = 0.0, mean_aspect_ratio = 0.0;
+  double max_skew = 0.0;
+  double min_angle = 0.0, max_angle = 0.0;  // over all quads, degrees
+  int interior_nodes = 0;
+  int irregular_interior_nodes = 0;         // interior nodes whose valence is not 4
+};
+
+// Inputs: the four corners, counter-clockwise. Output: the measures above.
+QuadQuality quad_quality(const std::array<Point2, 4>& corners);
+
+// Inputs: mesh with at least one quad. Output: the statistics over all quads and nodes.
+MeshQuality mesh_quality(const QuadMesh& mesh);
+
+}  // namespace autoblock

@@ -1,0 +1,52 @@
+#include "core/mesh/mesh_report.h"
+
+namespace autoblock {
+
+nlohmann::json mesh_report_json(const std::string& input, const Decomposition& d, const MeshResult& r, double seconds) {
+  const MeshQuality& q = r.quality;
+  const Conformity& c = r.conformity;
+  nlohmann::json report;
+  report["input"] = input;
+  report["policy"] = d.policy;
+  report["blocks"] = d.blocks.size();
+  report["nodes"] = r.mesh.nodes.size();
+  report["quads"] = r.mesh.quads.size();
+  report["target_size"] = r.intervals.target_size;
+  report["default_size"] = r.default_size;
+  report["intervals"] = {{"strips", r.layout.strips.size()},
+                         {"max_deviation", r.intervals.max_deviation},
+                         {"max_relative_deviation", r.intervals.max_relative_deviation},
+                         {"mean_relative_deviation", r.intervals.mean_relative_deviation},
+                         {"optimal", r.intervals.optimal},
+                         {"fixed", nlohmann::json::array()}};
+  for (const FixedIntervals& f : r.fixed) {
+    report["intervals"]["fixed"].push_back({{"edge", f.what}, {"intervals", f.intervals}, {"strips", f.strips.size()}});
+  }
+  report["quality"] = {{"min_scaled_jacobian", q.min_scaled_jacobian},
+                       {"mean_scaled_jacobian", q.mean_scaled_jacobian},
+                       {"max_aspect_ratio", q.max_aspect_ratio},
+                       {"mean_aspect_ratio", q.mean_aspect_ratio},
+                       {"max_skew", q.max_skew},
+                       {"min_angle", q.min_angle},
+                       {"max_angle", q.max_angle},
+                       {"interior_vertices", q.interior_nodes},
+                       {"irregular_interior_vertices", q.irregular_interior_nodes}};
+  report["conformal"] = c.conformal;
+  report["conformity"] = {{"interior_edges", c.interior_edges},     {"boundary_edges", c.boundary_edges},
+                          {"overused_edges", c.overused_edges},     {"stray_boundary_edges", c.stray_boundary_edges},
+                          {"misoriented_edges", c.misoriented_edges},
+                          {"inverted_quads", c.inverted_quads},     {"quad_area", c.quad_area},
+                          {"face_area", c.face_area},               {"boundary_length", c.boundary_length},
+                          {"face_perimeter", c.face_perimeter},     {"problem", c.problem}};
+  report["seconds"] = seconds;
+  report["timing"] = {{"decomposition", d.seconds},
+                      {"merge", r.merge_seconds},
+                      {"intervals", r.interval_seconds},
+                      {"mesh", r.mesh_seconds},
+                      {"checks", r.check_seconds}};
+  report["decomposition"] = {
+      {"complete", d.complete()}, {"min_blocks", d.min_blocks}, {"cuts", d.cuts.size()}, {"return", d.total_return}};
+  return report;
+}
+
+}  // namespace autoblock

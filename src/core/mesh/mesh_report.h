@@ -1,0 +1,29 @@
+// The JSON report of one meshed face (the `autoblock mesh --json` contract).
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/env/decomposition.h"
+#include "core/mesh/mesh_pipeline.h"
+
+namespace autoblock {
+
+// Inputs:  input, the file name; decomposition; result; seconds, the whole run's wall time
+//          (decomposition and meshing, no file I/O).
+// Outputs: {"input", "policy", "blocks", "nodes", "quads", "target_size", "default_size",
+//          "intervals": {"strips", "max_deviation", "max_relative_deviation",
+//                        "mean_relative_deviation", "optimal", "fixed"},
+//          "quality": {"min_scaled_jacobian", "mean_scaled_jacobian", "max_aspect_ratio",
+//                      "mean_aspect_ratio", "max_skew", "min_angle", "max_angle",
+//                      "interior_vertices", "irregular_interior_vertices"},
+//          "conformal", "conformity": {"interior_edges", "boundary_edges", "overused_edges",
+//                      "stray_boundary_edges", "misoriented_edges", "inverted_quads", "quad_area", "face_area",
+//                      "boundary_length", "face_perimeter", "problem"},
+//          "seconds", "timing": {"decomposition", "merge", "intervals", "mesh", "checks"},
+//          "decomposition": {"complete", "min_blocks", "cuts", "return"}}
+nlohmann::json mesh_report_json(const std::string& input, const Decomposition& decomposition, const MeshResult& result,
+                                double seconds);
+
+}  // namespace autoblock

@@ -1,0 +1,58 @@
+#include "core/mesh/transfinite.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace autoblock {
+namespace {
+
+// Normalised arc length at every node of a chain: 0 at the first, 1 at the last.
+std::vector<double> arc_parameters(const std::vector<Point2>& chain) {
+  std::vector<double> t(chain.size(), 0.0);
+  for (size_t k = 1; k < chain.size(); ++k) {
+    t[k] = t[k - 1] + std::hypot(chain[k].x - chain[k - 1].x, chain[k].y - chain[k - 1].y);
+  }
+  const double total = t.back();
+  for (double& value : t) value = total > 0 ? value / total : 0.0;
+  t.back() = 1.0;
+  return t;
+}
+
+}  // namespace
+
+std::vector<Point2> transfinite_grid(const std::vector<Point2>& bottom, const std::vector<Point2>& top,
+                                     const std::vector<Point2>& left, const std::vector<Point2>& right) {
+  if (bottom.size() < 2 || left.size() < 2 || top.size() != bottom.size() || right.size() != left.size()) {
+    throw std::invalid_argument("transfinite_grid: opposite sides need the same number of nodes (>= 2)");
+  }
+  if (!(bottom.front() == left.front()) || !(bottom.back() == right.front()) || !(top.front() == left.back()) ||
+      !(top.back() == right.back())) {
+    throw std::invalid_argument("transfinite_grid: the sides do not meet at common corners");
+  }
+  const size_t nu = bottom.size() - 1, nv = left.size() - 1;
+  const std::vector<double> ub = arc_parameters(bottom), ut = arc_parameters(top);
+  const std::vector<double> vl = arc_parameters(left), vr = arc_parameters(right);
+  const Point2 p00 = bottom.front(), p10 = bottom.back(), p01 = top.front(), p11 = top.back();
+  std::vector<Point2> grid((nu + 1) * (nv + 1));
+  for (size_t j = 0; j <= nv; ++j) {
+    for (size_t i = 0; i <= nu; ++i) {
+      Point2& p = grid[j * (nu + 1) + i];
+      if (j == 0) { p = bottom[i]; continue; }
+      if (j == nv) { p = top[i]; continue; }
+      if (i == 0) { p = left[j]; continue; }
+      if (i == nu) { p = right[j]; continue; }
+      const double u = 0.5 * (ub[i] + ut[i]), v = 0.5 * (vl[j] + vr[j]);
+      const Point2 b = bottom[i], t = top[i], l = left[j], r = right[j];
+      // x: interpolate bottom-top, then correct by how far the left and right sides stray from
+      // their corners' chord (zero for straight vertical sides).
+      p.x = b.x + v * (t.x - b.x) + (1 - u) * (l.x - p00.x - v * (p01.x - p00.x)) +
+            u * (r.x - p10.x - v * (p11.x - p10.x));
+      // y: interpolate left-right, then correct by the bottom and top sides' departure.
+      p.y = l.y + u * (r.y - l.y) + (1 - v) * (b.y - p00.y - u * (p10.y - p00.y)) +
+            v * (t.y - p01.y - u * (p11.y - p01.y));
+    }
+  }
+  return grid;
+}
+
+}  // namespace autoblock

@@ -1,0 +1,25 @@
+// Transfinite interpolation (Coons patch) of a block from its four logical sides.
+#pragma once
+
+#include <vector>
+
+#include "core/geometry/point.h"
+
+namespace autoblock {
+
+// Inputs:  the four sides as node chains, bottom P00 -> P10, top P01 -> P11, left P00 -> P01,
+//          right P10 -> P11, sharing their corner nodes; bottom and top have nu + 1 >= 2 nodes,
+//          left and right nv + 1 >= 2.
+// Outputs: the (nu + 1) (nv + 1) nodes of the structured grid, node (i, j) at j (nu + 1) + i; the
+//          boundary nodes are the given ones, exactly. Interior node (i, j) is the Boolean sum
+//            P = (1-v) B(u) + v T(u) + (1-u) L(v) + u R(v) - bilinear(corners)
+//          with u_i, v_j the mean normalised arc lengths of the opposite sides. It is evaluated as
+//          "x: B + v (T - B) plus the left/right correction" and "y: L + u (R - L) plus the
+//          bottom/top correction", the same sum in an order that reproduces a straight side's
+//          coordinates bitwise: on a rectangle whose opposite sides carry equal node positions,
+//          node (i, j) is exactly (B_i.x, L_j.y), so elements are exact rectangles.
+// Throws std::invalid_argument when the chain sizes or corners do not match.
+std::vector<Point2> transfinite_grid(const std::vector<Point2>& bottom, const std::vector<Point2>& top,
+                                     const std::vector<Point2>& left, const std::vector<Point2>& right);
+
+}  // namespace autoblock

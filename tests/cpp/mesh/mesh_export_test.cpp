@@ -1,0 +1,117 @@
+// Mesh files: round trips through our readers and through Debian's gmsh; pictures.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <regex>
+#include <tuple>
+
+#include "core/baselines/baseline_policy.h"
+#include "core/env/decomposition.h"
+#include "core/geometry/occt_face.h"
+#include "core/io/text_file.h"
+#include "core/mesh/mesh_conformity.h"
+#include "core/mesh/mesh_export.h"
+#include "core/mesh/mesh_picture.h"
+#include "core/mesh/mesh_pipeline.h"
+#include "support/mesh_readers.h"
+#include "support/run_command.h"
+#include "support/test_shapes.h"
+
+using namespace autoblock;
+using Catch::Matchers::Contains;
+
+namespace {
+
+// A mesh of a generated face with holes.
+struct Sample {
+  InputFace face;
+  Decomposition decomposition;
+  QuadMesh mesh;
+};
+
+Sample sample(std::uint64_t seed, double z) {
+  GeneratorOptions options;
+  options.holes = true;
+  const auto shapes = test::generated_shapes(1, seed, options);
+  Sample s;
+  s.face = input_face_from_occt(occt_face_from_polygon(shapes[0].polygon, z, true), "generated");
+  auto policy = make_baseline_policy("greedy", s.face.grid.size, BaselineOptions{});
+  s.decomposition = decompose_face(s.face.grid, *policy);
+  s.mesh = mesh_decomposition(s.face, s.decomposition).mesh;
+  return s;
+}
+
+// Every quad as (block, its four corner positions), sorted: equal for equal meshes whatever the
+// numbering. quantum > 0 rounds coordinates to its multiples (for files written with 16 digits).
+std::vector<std::tuple<int, double, double, double, double, double, double, double, double>> canonical(const QuadMesh& m,
+                                                                                                       double quantum) {
+  std::vector<std::tuple<int, double, double, double, double, double, double, double, double>> out;
+  auto r = [&](double v) { return quantum > 0 ? std::round(v / quantum) * quantum : v; };
+  for (size_t q = 0; q < m.quads.size(); ++q) {
+    const auto c = m.corners(q);
+    out.emplace_back(m.quad_block[q], r(c[0].x), r(c[0].y), r(c[1].x), r(c[1].y), r(c[2].x), r(c[2].y), r(c[3].x), r(c[3].y));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+void check_same(const QuadMesh& got, const QuadMesh& want, double quantum = 0.0) {
+  CHECK(got.nodes.size() == want.nodes.size());
+  CHECK(got.quads.size() == want.quads.size());
+  CHECK(got.blocks == want.blocks);
+  CHECK(got.z == Approx(want.z).margin(quantum));
+  CHECK(canonical(got, quantum) == canonical(want, quantum));  // same quads in the same blocks
+}
+
+}  // namespace
+
+TEST_CASE("mesh files read back to the same mesh", "[mesh][export]") {
+  const Sample s = sample(5, 0.1 + 0.2);  // a z that is not a short decimal
+  REQUIRE(s.mesh.quads.size() > 50);
+  const QuadMesh msh = test::read_msh41(gmsh_msh41(s.mesh));
+  check_same(msh, s.mesh);
+  CHECK(msh.nodes == s.mesh.nodes);  // tags keep the numbering
+  check_same(test::read_vtu(vtk_vtu(s.mesh)), s.mesh);
+  check_same(test::read_inp(abaqus_inp(s.mesh)), s.mesh);
+  CHECK(check_conformity(test::read_inp(abaqus_inp(s.mesh)), s.face.planar.polygon).conformal);
+  CHECK_THROWS_WITH(mesh_file_text("mesh.stl", s.mesh), Contains("expected .msh, .vtu or .inp"));
+  CHECK(is_mesh_file_name("A.MSH"));
+}
+
+TEST_CASE("gmsh loads AutoBlock's .msh files and saves the same mesh", "[mesh][export][gmsh]") {
+  const std::string folder = test::temporary_folder("gmsh");
+  for (std::uint64_t seed : {11u, 12u, 13u}) {
+    const Sample s = sample(seed, -1.0);
+    const std::string mine = folder + "/mine" + std::to_string(seed) + ".msh";
+    const std::string back = folder + "/back" + std::to_string(seed) + ".msh";
+    write_mesh_file(mine, s.mesh);
+    const test::CommandResult check = test::run_shell("gmsh -check '" + mine + "'");
+    INFO(check.out << check.err);
+    REQUIRE(check.exit_code == 0);
+    const std::string said = check.out + check.err;
+    CHECK_THAT(said, Contains("Info    : " + std::to_string(s.mesh.nodes.size()) + " nodes"));
+    CHECK_THAT(said, Contains("Info    : " + std::to_string(s.mesh.quads.size()) + " elements"));
+    CHECK_THAT(said, Contains("Info    : " + std::to_string(s.mesh.blocks) + " entities"));
+    CHECK_FALSE(std::regex_search(said, std::regex("Error|Warning")));
+    // Merge into gmsh and let it save the mesh again: the physical groups survive.
+    write_text_file(folder + "/resave.geo", "Merge \"" + mine + "\";\nSave \"" + back + "\";\n");
+    const test::CommandResult resave = test::run_shell("gmsh '" + folder + "/resave.geo' -0");
+    REQUIRE(resave.exit_code == 0);
+    const std::string text = test::slurp_file(back);
+    CHECK_THAT(text, Contains("\"block_" + std::to_string(s.mesh.blocks) + "\""));
+    check_same(test::read_msh41(text), s.mesh, 1e-9);  // gmsh writes 16 significant digits
+  }
+}
+
+TEST_CASE("mesh pictures: SVG and PNG", "[mesh][export][picture]") {
+  const Sample s = sample(7, 0.0);
+  const std::string svg = mesh_picture("p.svg", s.face.planar.polygon, s.decomposition.blocks, s.mesh, "title | line 2");
+  CHECK_THAT(svg, Contains("<svg") && Contains("title") && Contains("line 2"));
+  const std::string png = mesh_picture("p.PNG", s.face.planar.polygon, s.decomposition.blocks, s.mesh, "");
+  REQUIRE(png.size() > 1000);
+  CHECK(png.substr(1, 3) == "PNG");
+  CHECK_THROWS_WITH(mesh_picture("p.jpg", s.face.planar.polygon, s.decomposition.blocks, s.mesh, ""),
+                    Contains("expected .svg or .png"));
+}
