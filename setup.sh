@@ -18,7 +18,7 @@ PACKAGES=(
   libtorch-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libopenblas0-pthread
   qtbase5-dev libqt5svg5-dev
-  libglpk-dev libpng-dev gmsh
+  libglpk-dev gmsh
 )
 
 install_missing() {

@@ -13,6 +13,7 @@
 #include "core/io/shape_file.h"
 #include "core/io/svg_picture.h"
 #include "core/io/text_file.h"
+#include "core/raster/picture_file.h"
 
 namespace autoblock::cli {
 namespace {
@@ -41,10 +42,10 @@ void add_decompose_command(CLI::App& app) {
   args->policy.add_to(*command);
   command->add_option("--out", args->out, "write the blocks (a conformal compound of faces sharing their edges) to a .brep, .step or .stp file");
   command->add_option("--json", args->json, "write the report as JSON");
-  command->add_option("--picture", args->picture, "write a picture of the blocks (.svg)");
+  command->add_option("--picture", args->picture, "write a picture of the blocks (.svg or .png)");
   command->callback([args] {
     require_extension(args->out, {".brep", ".brp", ".step", ".stp"}, "--out");
-    require_extension(args->picture, {".svg"}, "--picture");
+    if (!args->picture.empty()) check_picture_path(args->picture, "--picture");
     const InputFace face = load_input_face(args->file);
     std::unique_ptr<Policy> policy = args->policy.make(face);
     const EpisodeOptions options = args->policy.episode_options();
@@ -61,7 +62,7 @@ void add_decompose_command(CLI::App& app) {
     if (!args->picture.empty()) {
       const std::string title = std::filesystem::path(args->file).filename().string() + " - policy " + result.policy +
                                 " | " + summary_line(result);
-      write_text_file(args->picture, decomposition_svg(face.planar.polygon, result.blocks, result.cuts, title));
+      write_picture(args->picture, decomposition_svg(face.planar.polygon, result.blocks, result.cuts, title));
     }
     std::cout << args->file << ": " << result.policy << ": " << summary_line(result) << "\n";
     if (!args->out.empty()) std::cout << "  blocks:  " << args->out << "\n";

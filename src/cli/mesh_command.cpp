@@ -14,6 +14,7 @@
 #include "core/io/text_file.h"
 #include "core/mesh/mesh_export.h"
 #include "core/mesh/mesh_picture.h"
+#include "core/raster/picture_file.h"
 #include "core/mesh/mesh_pipeline.h"
 #include "core/mesh/mesh_report.h"
 
@@ -103,10 +104,7 @@ void add_mesh_command(CLI::App& app) {
     if (!args->out.empty() && !is_mesh_file_name(args->out)) {
       throw InputError("--out " + args->out + ": expected a .msh, .vtu or .inp file");
     }
-    const std::string picture_ext = std::filesystem::path(args->picture).extension().string();
-    if (!args->picture.empty() && picture_ext != ".svg" && picture_ext != ".png") {
-      throw InputError("--picture " + args->picture + ": expected a .svg or .png file");
-    }
+    if (!args->picture.empty()) check_picture_path(args->picture, "--picture");
     require_folder(args->out, "--out");
     require_folder(args->picture, "--picture");
     require_folder(args->json, "--json");
@@ -133,10 +131,9 @@ void add_mesh_command(CLI::App& app) {
     const std::string title = std::filesystem::path(args->file).filename().string() + " - policy " +
                               decomposition.policy + " | " + picture_summary(decomposition, result);
     const std::string picture = args->picture.empty() ? ""
-                                                      : mesh_picture(args->picture, face.planar.polygon,
-                                                                     decomposition.blocks, result.mesh, title);
+                                                      : mesh_svg(face.planar.polygon, decomposition.blocks, result.mesh, title);
     if (!args->out.empty()) write_text_file(args->out, mesh_text);
-    if (!args->picture.empty()) write_text_file(args->picture, picture);
+    if (!args->picture.empty()) write_picture(args->picture, picture);
     if (!args->json.empty()) write_text_file(args->json, report);
     std::cout << args->file << ": " << decomposition.policy << ": " << mesh_summary(decomposition, result, seconds) << "\n";
     if (!args->out.empty()) std::cout << "  mesh:    " << args->out << "\n";

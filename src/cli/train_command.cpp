@@ -15,7 +15,7 @@
 #include "core/io/dataset.h"
 #include "core/io/input_face.h"
 #include "core/io/text_file.h"
-#include "core/raster/svg_to_png.h"
+#include "core/raster/picture_file.h"
 #include "core/sac/policy_file.h"
 #include "core/sac/trainer.h"
 #include "core/sac/training_curves.h"
@@ -100,6 +100,7 @@ void add_train_command(CLI::App& app) {
     if (args->checkpoint.empty()) args->checkpoint = args->out + ".checkpoint";
     if (args->log.empty()) args->log = sibling(args->out, ".csv");
     if (args->curves.empty()) args->curves = sibling(args->out, "-curves.png");
+    check_picture_path(args->curves, "--curves");
     TrainingSet train = load_set(args->train);
     TrainingSet test = load_set(args->test);
     TrainerOptions options;
@@ -157,11 +158,7 @@ void add_train_command(CLI::App& app) {
                                                  {"greedy (test set)", "#ff7f0e", greedy}};
     const std::string svg = training_curves_svg(trainer->history(), references,
                                                 "AutoBlock SAC training (" + reward_preset_name(reward) + " reward)");
-    if (std::filesystem::path(args->curves).extension() == ".svg") {
-      write_text_file(args->curves, svg);
-    } else {
-      write_png_from_svg(svg, args->curves, 1400);
-    }
+    write_picture(args->curves, svg);
     if (trainer->episodes_done() < args->episodes) {
       std::cout << "stopped after " << trainer->episodes_done() << " of " << args->episodes
                 << " episodes; resume with: autoblock train --resume " << args->checkpoint << " ...\n";

@@ -1,6 +1,5 @@
 #include "core/mesh/mesh_picture.h"
 
-#include <png.h>
 
 #include <algorithm>
 #include <cctype>
@@ -36,45 +35,6 @@ struct View {
   double x(double mx) const { return left + (mx - box.xmin) * k; }
   double y(double my) const { return top + (box.ymax - my) * k; }
 };
-
-struct Raster {
-  int width = 0, height = 0;
-  std::vector<unsigned char> rgb;
-  void set(int px, int py, const unsigned char c[3]) {
-    if (px < 0 || py < 0 || px >= width || py >= height) return;
-    unsigned char* p = &rgb[3 * (static_cast<size_t>(py) * static_cast<size_t>(width) + static_cast<size_t>(px))];
-    p[0] = c[0];
-    p[1] = c[1];
-    p[2] = c[2];
-  }
-  void fill(double x0, double y0, double x1, double y1, const unsigned char c[3]) {
-    for (int py = static_cast<int>(std::lround(std::min(y0, y1))); py < std::lround(std::max(y0, y1)); ++py) {
-      for (int px = static_cast<int>(std::lround(std::min(x0, x1))); px < std::lround(std::max(x0, x1)); ++px) set(px, py, c);
-    }
-  }
-  // A segment `thickness` pixels wide (square pen).
-  void line(double x0, double y0, double x1, double y1, int thickness, const unsigned char c[3]) {
-    const int steps = static_cast<int>(std::ceil(std::max(std::fabs(x1 - x0), std::fabs(y1 - y0)))) + 1;
-    const int half = thickness / 2;
-    for (int s = 0; s <= steps; ++s) {
-      const double t = static_cast<double>(s) / steps;
-      const int px = static_cast<int>(std::lround(x0 + t * (x1 - x0))), py = static_cast<int>(std::lround(y0 + t * (y1 - y0)));
-      for (int dy = -half; dy < thickness - half; ++dy) {
-        for (int dx = -half; dx < thickness - half; ++dx) set(px + dx, py + dy, c);
-      }
-    }
-  }
-};
-
-void colour_bytes(const std::string& hex, unsigned char out[3]) {
-  for (int k = 0; k < 3; ++k) out[k] = static_cast<unsigned char>(std::stoi(hex.substr(1 + 2 * static_cast<size_t>(k), 2), nullptr, 16));
-}
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
 
 }  // namespace
 
@@ -122,70 +82,6 @@ std::string mesh_svg(const RectilinearPolygon& polygon, const std::vector<Box>& 
   for (const Ring& hole : polygon.holes) ring_path(hole);
   svg << "\"/>\n</svg>\n";
   return svg.str();
-}
-
-std::string mesh_png(const RectilinearPolygon& polygon, const std::vector<Box>& blocks, const QuadMesh& mesh,
-                     int longer_side_pixels) {
-  const int margin = 16;
-  View v;
-  v.box = ring_bbox(polygon.outer);
-  v.k = longer_side_pixels / v.box.longer_side();
-  v.left = margin;
-  v.top = margin;
-  Raster raster;
-  raster.width = static_cast<int>(std::ceil(v.box.width() * v.k)) + 2 * margin;
-  raster.height = static_cast<int>(std::ceil(v.box.height() * v.k)) + 2 * margin;
-  raster.rgb.assign(3 * static_cast<size_t>(raster.width) * static_cast<size_t>(raster.height), 255);
-  unsigned char colour[3];
-  for (size_t b = 0; b < blocks.size(); ++b) {
-    colour_bytes(block_colour(static_cast<int>(b)), colour);
-    raster.fill(v.x(blocks[b].xmin), v.y(blocks[b].ymin), v.x(blocks[b].xmax), v.y(blocks[b].ymax), colour);
-  }
-  const unsigned char edge[3] = {80, 80, 80}, side[3] = {30, 30, 30}, outline[3] = {0, 0, 0};
-  for (const MeshEdge& e : mesh_edges(mesh)) {
-    const Point2& a = mesh.nodes[static_cast<size_t>(e.a)];
-    const Point2& b = mesh.nodes[static_cast<size_t>(e.b)];
-    raster.line(v.x(a.x), v.y(a.y), v.x(b.x), v.y(b.y), 1, edge);
-  }
-  for (const Box& r : blocks) {
-    raster.line(v.x(r.xmin), v.y(r.ymin), v.x(r.xmax), v.y(r.ymin), 2, side);
-    raster.line(v.x(r.xmax), v.y(r.ymin), v.x(r.xmax), v.y(r.ymax), 2, side);
-    raster.line(v.x(r.xmax), v.y(r.ymax), v.x(r.xmin), v.y(r.ymax), 2, side);
-    raster.line(v.x(r.xmin), v.y(r.ymax), v.x(r.xmin), v.y(r.ymin), 2, side);
-  }
-  auto ring_lines = [&](const Ring& ring) {
-    for (size_t i = 0; i < ring.size(); ++i) {
-      const Point2& a = ring[i];
-      const Point2& b = ring[(i + 1) % ring.size()];
-      raster.line(v.x(a.x), v.y(a.y), v.x(b.x), v.y(b.y), 3, outline);
-    }
-  };
-  ring_lines(polygon.outer);
-  for (const Ring& hole : polygon.holes) ring_lines(hole);
-
-  png_image image{};
-  image.version = PNG_IMAGE_VERSION;
-  image.width = static_cast<png_uint_32>(raster.width);
-  image.height = static_cast<png_uint_32>(raster.height);
-  image.format = PNG_FORMAT_RGB;
-  png_alloc_size_t size = 0;
-  if (!png_image_write_to_memory(&image, nullptr, &size, 0, raster.rgb.data(), 0, nullptr)) {
-    throw std::runtime_error(std::string("libpng: ") + image.message);
-  }
-  std::string bytes(size, '\0');
-  if (!png_image_write_to_memory(&image, bytes.data(), &size, 0, raster.rgb.data(), 0, nullptr)) {
-    throw std::runtime_error(std::string("libpng: ") + image.message);
-  }
-  bytes.resize(size);
-  return bytes;
-}
-
-std::string mesh_picture(const std::string& path, const RectilinearPolygon& polygon, const std::vector<Box>& blocks,
-                         const QuadMesh& mesh, const std::string& title) {
-  const std::string ext = lower_extension(path);
-  if (ext == ".svg") return mesh_svg(polygon, blocks, mesh, title);
-  if (ext == ".png") return mesh_png(polygon, blocks, mesh);
-  throw InputError(path + ": unknown picture type '" + ext + "' (expected .svg or .png)");
 }
 
 }  // namespace autoblock

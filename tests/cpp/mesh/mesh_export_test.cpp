@@ -14,6 +14,7 @@
 #include "core/mesh/mesh_conformity.h"
 #include "core/mesh/mesh_export.h"
 #include "core/mesh/mesh_picture.h"
+#include "core/raster/picture_file.h"
 #include "core/mesh/mesh_pipeline.h"
 #include "support/mesh_readers.h"
 #include "support/run_command.h"
@@ -105,13 +106,16 @@ TEST_CASE("gmsh loads AutoBlock's .msh files and saves the same mesh", "[mesh][e
   }
 }
 
-TEST_CASE("mesh pictures: SVG and PNG", "[mesh][export][picture]") {
+TEST_CASE("mesh pictures: SVG, and PNG rasterised from it", "[mesh][export][picture]") {
   const Sample s = sample(7, 0.0);
-  const std::string svg = mesh_picture("p.svg", s.face.planar.polygon, s.decomposition.blocks, s.mesh, "title | line 2");
+  const std::string svg = mesh_svg(s.face.planar.polygon, s.decomposition.blocks, s.mesh, "title | line 2");
   CHECK_THAT(svg, Contains("<svg") && Contains("title") && Contains("line 2"));
-  const std::string png = mesh_picture("p.PNG", s.face.planar.polygon, s.decomposition.blocks, s.mesh, "");
+  const std::string folder = test::temporary_folder("picture");
+  write_picture(folder + "/p.PNG", svg);
+  const std::string png = test::slurp_file(folder + "/p.PNG");
   REQUIRE(png.size() > 1000);
   CHECK(png.substr(1, 3) == "PNG");
-  CHECK_THROWS_WITH(mesh_picture("p.jpg", s.face.planar.polygon, s.decomposition.blocks, s.mesh, ""),
-                    Contains("expected .svg or .png"));
+  write_picture(folder + "/p.svg", svg);
+  CHECK(test::slurp_file(folder + "/p.svg") == svg);
+  CHECK_THROWS_WITH(write_picture(folder + "/p.jpg", svg), Contains("expected a .svg or .png file"));
 }
