@@ -5,7 +5,9 @@
 namespace autoblock::cli {
 
 void PolicyArguments::add_to(CLI::App& command) {
-  command.add_option("--policy", policy, "random | random-split | greedy | optimal")->capture_default_str();
+  std::string names;
+  for (const std::string& name : policy_names()) names += (names.empty() ? "" : " | ") + name;
+  command.add_option("--policy", policy, names)->capture_default_str();
   command.add_option("--seed", seed, "seed of the random policies")->capture_default_str();
   command.add_option("--max-steps", max_steps, "step cap per face (0: 10 x corners + 10)")
       ->check(CLI::NonNegativeNumber)
@@ -16,10 +18,10 @@ void PolicyArguments::add_to(CLI::App& command) {
 }
 
 std::unique_ptr<Policy> PolicyArguments::make(const InputFace& face, std::uint64_t shape_index) const {
-  BaselineOptions options;
-  options.seed = seed + shape_index;
-  options.optimal_seconds = time_limit;
-  return make_baseline_policy(policy, face.grid.size, options);
+  PolicySettings settings;
+  settings.seed = seed + shape_index;
+  settings.time_limit = time_limit;
+  return make_policy(policy, face.grid, settings);
 }
 
 EpisodeOptions PolicyArguments::episode_options() const {

@@ -6,7 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "core/baselines/baseline_policy.h"
+#include "core/api/catalog.h"
 #include "core/env/decomposition.h"
 #include "core/env/episode.h"
 #include "core/io/input_face.h"
@@ -15,7 +15,7 @@ namespace autoblock::cli {
 
 // The options every command that runs a policy takes.
 struct PolicyArguments {
-  std::string policy = "optimal";
+  std::string policy = default_policy_name();
   std::uint64_t seed = 0;
   int max_steps = 0;
   double time_limit = 30.0;
