@@ -1,0 +1,68 @@
+"""Auto-Block: the selected planar faces -> one parametric AutoBlock object each."""
+
+import FreeCAD
+import FreeCADGui
+
+from .base import BaseCommand
+
+
+def selected_targets():
+    """(object, sub or None) for every selected face, or every selected object when no face of it is."""
+    targets = []
+    for selection in FreeCADGui.Selection.getSelectionEx():
+        obj = selection.Object
+        face_names = [name for name in selection.SubElementNames if name.startswith("Face")]
+        if face_names:
+            targets += [(obj, name) for name in face_names]
+        else:
+            targets.append((obj, None))
+    return targets
+
+
+class AutoBlockCommand(BaseCommand):
+    NAME = "AutoBlock_AutoBlock"
+    ICON = "AutoBlock_AutoBlock"
+    MENU_TEXT = "Auto-Block"
+    TOOL_TIP = ("Cut the selected planar faces into rectangular blocks: one parametric AutoBlock object per face "
+                "(select faces, a sketch, or objects holding one face)")
+
+    def IsActive(self):
+        return FreeCADGui.ActiveDocument is not None and bool(FreeCADGui.Selection.getSelection())
+
+    def run(self):
+        from .. import console
+        from ..gui_utils import echo, object_ref, report_error
+        from ..transactions import transaction
+
+        targets = selected_targets()
+        if not targets:
+            report_error("Auto-Block", "Select one or more planar faces (or a sketch, or an object holding one face).")
+            return
+        # Check every face first: with one bad face, nothing changes.
+        problems = []
+        for obj, sub in targets:
+            try:
+                console.check_face(obj, sub)
+            except (ValueError, TypeError) as error:
+                problems.append(str(error))
+        if problems:
+            report_error("Auto-Block", "Unsupported face{}; nothing was changed:\n\n{}".format(
+                "s" if len(problems) > 1 else "", "\n\n".join(problems)))
+            return
+        doc = targets[0][0].Document
+        before = set(o.Name for o in doc.Objects)
+        with transaction("Auto-Block"):
+            echo("import AutoBlock")
+            for obj, sub in targets:
+                if sub:
+                    echo("AutoBlock.make_autoblock({}, {!r})".format(object_ref(obj), sub))
+                else:
+                    echo("AutoBlock.make_autoblock({})".format(object_ref(obj)))
+            for obj in {o for o, _ in targets}:
+                if obj.ViewObject is not None and obj.ViewObject.Visibility:
+                    echo("Gui.getDocument({!r}).getObject({!r}).Visibility = False".format(doc.Name, obj.Name))
+        created = [doc.getObject(n) for n in set(o.Name for o in doc.Objects) - before]
+        FreeCADGui.Selection.clearSelection()
+        for obj in created:
+            FreeCADGui.Selection.addSelection(obj)
+            FreeCAD.Console.PrintMessage("AutoBlock: {}: {}\n".format(obj.Label, obj.Status))
