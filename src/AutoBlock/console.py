@@ -67,6 +67,7 @@ class DecompositionResult:
         self.max_steps = data["max_steps"]
         self._local_brep = local_face.exportBrepToString()
         self._z = data["face"]["z"]
+        self._fingerprint = face_fingerprint(data["face"])
         self.blocks = [faces.out_of_frame(_shape_from_brep(text), frame).Faces[0] for text in data["blocks"]]
         self.shape = faces.out_of_frame(_shape_from_brep(data["shape"]), frame)
         self.cuts = [
@@ -105,6 +106,7 @@ class DecompositionResult:
         """The cut sequence as stored in an AutoBlock object (JSON text, the face's frame)."""
         return json.dumps({
             "version": 1,
+            "face": self._fingerprint,
             "max_steps": self.max_steps,
             "cuts": [[c.part, c.local[0], c.local[1], c.direction, c.reward, c.n_parts] for c in self.cuts],
         })
@@ -128,6 +130,28 @@ def _shape_from_brep(text):
     if shape.isNull():
         raise RuntimeError("the native module returned an unreadable shape")
     return shape
+
+
+def face_fingerprint(figures):
+    """What identifies a checked face (native check_face / decompose figures): z, area, bounding box, corners."""
+    return {"z": figures["z"], "area": figures["area"], "bbox": list(figures["bbox"]), "corners": figures["corners"],
+            "holes": figures["holes"]}
+
+
+def same_face(fingerprint, local):
+    """True when the face `local` (in its frame) matches `fingerprint` (see face_fingerprint)."""
+    if not fingerprint:
+        return True  # saved before fingerprints existed
+    try:
+        figures = native.load().check_face(local.exportBrepToString())
+    except ValueError:
+        return False
+    now = face_fingerprint(figures)
+    size = max(abs(v) for v in fingerprint["bbox"] + [1e-300])
+    close = lambda a, b: abs(a - b) <= 1e-9 * max(size, size * size)  # noqa: E731
+    return (now["corners"] == fingerprint["corners"] and now["holes"] == fingerprint["holes"]
+            and close(now["z"], fingerprint["z"]) and close(now["area"], fingerprint["area"])
+            and all(close(a, b) for a, b in zip(now["bbox"], fingerprint["bbox"])))
 
 
 def local_face(target, sub=None):
@@ -192,16 +216,31 @@ def capabilities():
 
 
 def mesh(target, size=None):
-    """Mesh an AutoBlock object's blocks with quads (a Fem::FemMeshObject).
+    """Mesh an AutoBlock object's blocks with quads into a Fem::FemMeshObject (returned); size: target quad size
+    (None: the object's MeshSize; 0: automatic).
 
-    Needs the meshing part of the core, which this build does not have yet: raises NotImplementedError
-    saying so. (objects/fem_mesh.py already turns nodes and quads into a FEM mesh object.)
+    Needs the core's quad mesher (the meshing issue); this build has none, so this raises NotImplementedError
+    saying so. objects/fem_mesh.py already turns nodes and quads into the FEM object (tested).
     """
     if not native.has("meshing"):
         raise NotImplementedError(
             "meshing is not in this build of AutoBlock: the core has no quad mesher yet "
             "(AutoBlock.capabilities()['meshing'] is False)")
-    raise NotImplementedError("the core offers meshing but this workbench does not call it yet")
+    from .objects.autoblock_feature import is_autoblock, stepper_of
+    from .objects.fem_mesh import make_fem_mesh_object
+    from .transactions import transaction
+
+    if not is_autoblock(target):
+        raise ValueError("AutoBlock.mesh needs an AutoBlock object")
+    stepper = stepper_of(target)
+    mesh_size = float(target.MeshSize if size is None else size)
+    # The meshing issue's binding: the face (its frame) and the cut sequence in, nodes (face frame) and
+    # 4-node quads (0-based) out.
+    data = native.load().mesh(stepper.local_brep, stepper.cuts, mesh_size, stepper.max_steps, stepper.label)
+    nodes = [faces.point_out_of_frame(x, y, z, stepper.frame) for x, y, z in data["nodes"]]
+    with transaction("AutoBlock mesh"):
+        return make_fem_mesh_object(target.Document, [(p.x, p.y, p.z) for p in nodes], data["quads"],
+                                    name="AutoBlockMesh", label="{} mesh".format(target.Label))
 
 
 def train(request, progress=None):

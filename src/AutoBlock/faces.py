@@ -55,7 +55,7 @@ def face_of(target, sub=None):
 
 def _single_face(shape, label):
     if shape is None or shape.isNull():
-        raise ValueError("{} has no shape".format(label))
+        raise ValueError("{} is empty (a null shape)".format(label))
     faces = shape.Faces
     if len(faces) == 1:
         return faces[0]

@@ -117,10 +117,11 @@ class AutoBlockFeature:
 
 
 def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, seed=0, time_limit=30.0,
-                   name="AutoBlock"):
+                   name="AutoBlock", mesh=None):
     """Create the parametric AutoBlock object of `source` (a document object; sub: "FaceN" when it has several
     faces) and compute it. policy: a name or policy file (None: the preferred default); reward: a preset (None:
-    the preferred one); mesh_size (None: the preferred one).
+    the preferred one); mesh_size (None: the preferred one); mesh: also make a FEM mesh object of the blocks
+    (None: when the core can mesh, which this build cannot; True: required).
 
     One undoable transaction ("Auto-Block"), or part of the caller's when one is open. Raises ValueError for an
     unsupported face or a bad option, and then the document is left unchanged.
@@ -134,6 +135,10 @@ def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, s
     spec = policy or preferences.default_policy()
     module = native.load()
     names = list(module.policy_names())
+    reward = reward or preferences.reward_preset()
+    presets = list(module.reward_presets())
+    if reward not in presets:
+        raise ValueError("unknown reward preset '{}' (expected {})".format(reward, ", ".join(presets)))
     doc = source.Document
     created = []
     try:
@@ -150,7 +155,7 @@ def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, s
                 obj.Policy = spec
             else:
                 obj.PolicyFile = spec
-            obj.RewardPreset = reward or preferences.reward_preset()
+            obj.RewardPreset = reward
             obj.Seed = int(seed)
             obj.TimeLimit = float(time_limit)
             obj.MeshSize = preferences.mesh_size() if mesh_size is None else float(mesh_size)
@@ -161,6 +166,8 @@ def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, s
                 raise error
             if not obj.isValid():
                 raise RuntimeError("{}: recompute failed ({})".format(obj.Label, ", ".join(obj.State)))
+            if mesh or (mesh is None and native.has("meshing")):
+                created.append(console.mesh(obj).Name)
     except BaseException:
         # Without undo (freecadcmd's default) aborting the transaction leaves the object: remove it.
         for object_name in created:
@@ -175,11 +182,15 @@ def stepper_of(obj):
     changed since its last recompute) or has no result."""
     if not is_autoblock(obj):
         raise ValueError("{} is not an AutoBlock object".format(getattr(obj, "Label", obj)))
-    if "Touched" in obj.State or "Invalid" in obj.State or not obj.CutSequence:
-        raise ValueError("{} is out of date or has no result: recompute it first".format(obj.Label))
+    out_of_date = ValueError("{} is out of date or has no result: recompute it first".format(obj.Label))
+    if "Touched" in obj.State or "Invalid" in obj.State or not obj.CutSequence or not obj.Source:
+        raise out_of_date
     source, subs = obj.Source
     face, local, frame, label = console.local_face((source, list(subs)))
     data = json.loads(obj.CutSequence)
+    # The source may have changed without a recompute yet (FreeCAD marks dependents only when recomputing).
+    if not console.same_face(data.get("face"), local):
+        raise out_of_date
     cuts = [(int(c[0]), float(c[1]), float(c[2]), str(c[3])) for c in data["cuts"]]
     from ..stepping import Stepper
 

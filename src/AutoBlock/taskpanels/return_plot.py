@@ -9,7 +9,7 @@ TEST_COLOUR = QtGui.QColor(230, 120, 20)
 class ReturnPlot(QtWidgets.QWidget):
     def __init__(self, parent=None):
         super().__init__(parent)
-        self.setMinimumHeight(160)
+        self.setMinimumHeight(130)
         self.train = []  # (episode, return)
         self.test = []
 
