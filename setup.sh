@@ -8,9 +8,10 @@
 #   ./setup.sh screenshots  install, build, and run the GUI test saving the README's screenshots
 #                           into resources/readme/
 #
-# Every command also installs the FreeCAD workbench for the current user: a link
+# demo, build and screenshots also install the FreeCAD workbench for the current user: a link
 # <FreeCAD user Mod folder>/AutoBlock -> this checkout (whose build/python holds the built native
-# module), so that `freecad` shows the AutoBlock workbench.
+# module), so that `freecad` shows the AutoBlock workbench. test leaves the user's FreeCAD alone
+# (the FreeCAD tests run in a temporary FreeCAD user folder).
 #
 # Installing is idempotent and fast when everything is already there. Needs root or sudo only when
 # a package is missing.
@@ -92,7 +93,7 @@ screenshots() {
 command=${1:-demo}
 case "$command" in
   demo) install_missing; build autoblock autoblock_native; install_workbench; demo ;;
-  test) install_missing; build; install_workbench; run_tests ;;
+  test) install_missing; build; run_tests ;;
   build) install_missing; build; install_workbench ;;
   screenshots) install_missing; build autoblock autoblock_native; install_workbench; screenshots ;;
   *) echo "usage: $0 [demo|test|build|screenshots]" >&2; exit 2 ;;

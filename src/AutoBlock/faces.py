@@ -36,14 +36,17 @@ def face_of(target, sub=None):
         return _single_face(target, "the shape"), "the shape"
     if _is_document_object(target):
         label = target.Label
-        if not hasattr(target, "Shape"):
+        if not hasattr(target, "Shape") and not sub:
             raise ValueError("{} ({}) has no shape".format(label, target.TypeId))
         if sub:
-            if not sub.startswith("Face"):
+            # A sub-element ("Face6"), a path to one through containers ("Pad.Face6" of a Body), or a path
+            # to a whole object inside a container ("Sketch." of a Body).
+            element = sub.split(".")[-1]
+            if element and not element.startswith("Face"):
                 raise ValueError("{}.{} is not a face: select a face (Face1, Face2, ...)".format(label, sub))
-            label = "{}.{}".format(label, sub)
+            label = "{}.{}".format(label, sub.rstrip("."))
             try:
-                shape = Part.getShape(target, sub, needSubElement=True)
+                shape = Part.getShape(target, sub, needSubElement=bool(element))
             except Exception as error:
                 raise ValueError("{}: no such face ({})".format(label, error)) from error
         else:
@@ -51,6 +54,27 @@ def face_of(target, sub=None):
         return _single_face(shape, label), label
     raise TypeError("expected a Part.Face, a Part.Shape, a document object or (object, 'FaceN'), got {}".format(
         type(target).__name__))
+
+
+def selection_target(obj, sub):
+    """(object, sub or None) that AutoBlock should cut for a selected `obj` with sub-element path `sub`
+    (FreeCADGui.Selection.getSelectionEx("", 0): obj is the top-level object, sub a full path), and the
+    object to hide once it is cut. A face or a path to one is kept; an edge or vertex stands for its
+    whole object."""
+    element = sub.split(".")[-1] if sub else ""
+    if element.startswith("Face"):
+        path = sub
+    elif sub and "." in sub:
+        path = sub[: sub.rindex(".") + 1]  # "Sketch.Edge3" -> "Sketch."
+    else:
+        path = None
+    leaf = obj
+    if path:
+        try:
+            leaf = obj.getSubObject(path, retType=1) or obj
+        except Exception:
+            leaf = obj
+    return obj, path, leaf
 
 
 def _single_face(shape, label):

@@ -193,14 +193,14 @@ def train(request, progress=None):
     request.validate()
     run = backend(request)
     run.start()
-    while not run.done:
+    while True:
+        done = run.done  # read before draining: a finished run has queued all its events
         run.wait(0.2)
         for event in run.poll():
             if progress:
                 progress(event)
-    for event in run.poll():
-        if progress:
-            progress(event)
+        if done:
+            break
     if run.error:
         raise RuntimeError(run.error)
     return run.result

@@ -142,6 +142,49 @@ class TestDecompose(unittest.TestCase):
         finally:
             support.close_document(doc)
 
+    def test_faces_inside_containers_keep_their_placement(self):
+        doc = support.new_document("body")
+        try:
+            body = doc.addObject("PartDesign::Body", "Body")
+            sketch = support.add_l_sketch(doc)
+            body.addObject(sketch)
+            pad = doc.addObject("PartDesign::Pad", "Pad")
+            body.addObject(pad)
+            pad.Profile = sketch
+            pad.Length = 3
+            body.Placement.Base = FreeCAD.Vector(100, 0, 0)
+            doc.recompute()
+            top = [i for i, f in enumerate(pad.Shape.Faces, 1) if abs(f.BoundBox.ZMin - 3) < 1e-9
+                   and f.BoundBox.ZLength < 1e-9][0]
+            obj = AutoBlock.make_autoblock(body, "Pad.Face{}".format(top))
+            self.assertAlmostEqual(obj.Shape.BoundBox.XMin, 100.0)
+            self.assertAlmostEqual(obj.Shape.BoundBox.ZMin, 3.0)
+            pad.Length = 5
+            doc.recompute()
+            self.assertAlmostEqual(obj.Shape.BoundBox.ZMin, 5.0)
+            result = AutoBlock.decompose((body, "Sketch."))
+            self.assertAlmostEqual(result.shape.BoundBox.XMin, 100.0)
+            self.assertEqual(result.n_blocks, 2)
+        finally:
+            support.close_document(doc)
+
+    def test_selections_map_to_targets(self):
+        from AutoBlock.faces import selection_target
+
+        doc = support.new_document("selection")
+        try:
+            body = doc.addObject("PartDesign::Body", "Body")
+            sketch = support.add_l_sketch(doc)
+            body.addObject(sketch)
+            doc.recompute()
+            self.assertEqual(selection_target(body, "Sketch.Edge3")[1:], ("Sketch.", sketch))
+            self.assertEqual(selection_target(body, "Sketch.")[1:], ("Sketch.", sketch))
+            self.assertEqual(selection_target(sketch, "Edge3")[1:], (None, sketch))
+            self.assertEqual(selection_target(sketch, "")[1:], (None, sketch))
+            self.assertEqual(selection_target(body, "Pad.Face2")[1], "Pad.Face2")
+        finally:
+            support.close_document(doc)
+
     def test_bad_faces_raise_value_error(self):
         doc = support.new_document("bad")
         try:

@@ -215,6 +215,29 @@ class TestAutoBlockCommand(GuiTestCase):
         pump()
         self.assertEqual([o for o in self.doc.Objects if AutoBlock.is_autoblock(o)], [])
 
+    def test_a_face_inside_a_body(self):
+        body = self.doc.addObject("PartDesign::Body", "Body")
+        sketch = support.add_l_sketch(self.doc)
+        body.addObject(sketch)
+        pad = self.doc.addObject("PartDesign::Pad", "Pad")
+        body.addObject(pad)
+        pad.Profile = sketch
+        pad.Length = 3
+        body.Placement.Base = FreeCAD.Vector(50, 0, 0)
+        self.doc.recompute()
+        top = [i for i, f in enumerate(pad.Shape.Faces, 1) if abs(f.BoundBox.ZMin - 3) < 1e-9
+               and f.BoundBox.ZLength < 1e-9][0]
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(self.doc.Name, body.Name, "Pad.Face{}".format(top))
+        FreeCADGui.runCommand("AutoBlock_AutoBlock")
+        pump()
+        objects = [o for o in self.doc.Objects if AutoBlock.is_autoblock(o)]
+        self.assertEqual(len(objects), 1)
+        self.assertEqual(objects[0].Source[0], body)
+        self.assertEqual(list(objects[0].Source[1]), ["Pad.Face{}".format(top)])
+        self.assertAlmostEqual(objects[0].Shape.BoundBox.XMin, 50.0)
+        self.assertFalse(pad.ViewObject.Visibility)
+
     def test_an_unsupported_face_gets_a_dialog_and_changes_nothing(self):
         sphere = self.doc.addObject("Part::Sphere", "Sphere")
         sphere.Placement.Base = FreeCAD.Vector(-8, 8, 0)

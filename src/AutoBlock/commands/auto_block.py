@@ -7,15 +7,21 @@ from .base import BaseCommand
 
 
 def selected_targets():
-    """(object, sub or None) for every selected face, or every selected object when no face of it is."""
+    """[(object, sub or None, object to hide)] for every selected face, or every selected object when no face
+    of it is selected. Objects inside containers (a Body, an App::Part) are reached through their path, so
+    that the containers' placements apply."""
+    from ..faces import selection_target
+
     targets = []
-    for selection in FreeCADGui.Selection.getSelectionEx():
+    for selection in FreeCADGui.Selection.getSelectionEx("", 0):
         obj = selection.Object
-        face_names = [name for name in selection.SubElementNames if name.startswith("Face")]
-        if face_names:
-            targets += [(obj, name) for name in face_names]
-        else:
-            targets.append((obj, None))
+        names = list(selection.SubElementNames) or [""]
+        seen = set()
+        for name in names:
+            target = selection_target(obj, name)
+            if (target[0].Name, target[1]) not in seen:
+                seen.add((target[0].Name, target[1]))
+                targets.append(target)
     return targets
 
 
@@ -40,7 +46,7 @@ class AutoBlockCommand(BaseCommand):
             return
         # Check every face first: with one bad face, nothing changes.
         problems = []
-        for obj, sub in targets:
+        for obj, sub, _ in targets:
             try:
                 console.check_face(obj, sub)
             except (ValueError, TypeError) as error:
@@ -53,14 +59,15 @@ class AutoBlockCommand(BaseCommand):
         before = set(o.Name for o in doc.Objects)
         with transaction("Auto-Block"):
             echo("import AutoBlock")
-            for obj, sub in targets:
+            for obj, sub, _ in targets:
                 if sub:
                     echo("AutoBlock.make_autoblock({}, {!r})".format(object_ref(obj), sub))
                 else:
                     echo("AutoBlock.make_autoblock({})".format(object_ref(obj)))
-            for obj in {o for o, _ in targets}:
-                if obj.ViewObject is not None and obj.ViewObject.Visibility:
-                    echo("Gui.getDocument({!r}).getObject({!r}).Visibility = False".format(doc.Name, obj.Name))
+            for leaf in {t[2] for t in targets}:
+                if leaf.ViewObject is not None and leaf.ViewObject.Visibility:
+                    echo("Gui.getDocument({!r}).getObject({!r}).Visibility = False".format(leaf.Document.Name,
+                                                                                             leaf.Name))
         created = [doc.getObject(n) for n in set(o.Name for o in doc.Objects) - before]
         FreeCADGui.Selection.clearSelection()
         for obj in created:

@@ -151,6 +151,7 @@ class TrainPanel:
         if self.run is None:
             self.timer.stop()
             return
+        done = self.run.done  # read before draining: a finished run has queued all its events
         for event in self.run.poll():
             if event.episodes:
                 self.form.progressBar.setRange(0, event.episodes)
@@ -164,7 +165,7 @@ class TrainPanel:
             if event.message:
                 parts.append(event.message)
             self._status(", ".join(parts))
-        if self.run.done:
+        if done:
             self._finish()
 
     def _finish(self):
