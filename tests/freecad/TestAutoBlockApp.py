@@ -27,6 +27,18 @@ class TestNativeModule(unittest.TestCase):
         out = subprocess.run(["/usr/bin/python3", "-c", code], capture_output=True, text=True, timeout=120)
         self.assertEqual(out.stdout.strip().splitlines()[-1], "lazy", out.stderr)
 
+    def test_a_missing_native_module_is_explained(self):
+        code = ("import sys; sys.path += {!r}; import FreeCAD, Part, AutoBlock, AutoBlock.paths as p; "
+                "p.native_dirs = lambda: ['/nonexistent'];\n"
+                "try:\n    AutoBlock.decompose(Part.makePlane(1, 1))\n"
+                "except RuntimeError as e:\n    print(type(e).__name__, e)").format(
+                    ["/usr/lib/freecad-python3/lib", os.path.dirname(os.path.dirname(AutoBlock.__file__))])
+        env = dict(os.environ)
+        env.pop("AUTOBLOCK_NATIVE_DIR", None)
+        out = subprocess.run(["/usr/bin/python3", "-c", code], capture_output=True, text=True, timeout=120, env=env)
+        self.assertIn("NativeModuleMissing", out.stdout, out.stderr)
+        self.assertIn("./setup.sh build", out.stdout)
+
     def test_catalogue_comes_from_the_core(self):
         from AutoBlock import native
 

@@ -34,7 +34,7 @@ def screenshot(name, whole_screen=False):
     if not SHOTS:
         return None
     os.makedirs(SHOTS, exist_ok=True)
-    if not whole_screen:
+    if not whole_screen and os.environ.get("AUTOBLOCK_TEST_TMP"):
         hide_docks()
     pump(0.5)
     path = os.path.join(SHOTS, name + ".png")
@@ -91,21 +91,34 @@ class DialogCatcher:
         self.timer.stop()
 
 
+_previous_workbench = None
+
+
 def setUpModule():
-    window = FreeCADGui.getMainWindow()
-    window.showMaximized()
-    pump()
-    dock = window.findChild(QtWidgets.QDockWidget, "Combo View")
-    if dock is not None:
-        window.resizeDocks([dock], [400], QtCore.Qt.Horizontal)
-    hide_docks()
-    area = window.findChild(QtWidgets.QMdiArea)
-    if area is not None:
-        for sub in area.subWindowList():
-            if sub.windowTitle().startswith("Start page"):
-                sub.close()
+    global _previous_workbench
+    _previous_workbench = FreeCADGui.activeWorkbench().name()
+    if os.environ.get("AUTOBLOCK_TEST_TMP"):
+        # Under run_freecad_tests.sh (a throw-away FreeCAD): a large, clean window for the screenshots. Run
+        # from a user's own FreeCAD (Test workbench), the window is left as it is.
+        window = FreeCADGui.getMainWindow()
+        window.showMaximized()
+        pump()
+        dock = window.findChild(QtWidgets.QDockWidget, "Combo View")
+        if dock is not None:
+            window.resizeDocks([dock], [400], QtCore.Qt.Horizontal)
+        hide_docks()
+        area = window.findChild(QtWidgets.QMdiArea)
+        if area is not None:
+            for sub in area.subWindowList():
+                if sub.windowTitle().startswith("Start page"):
+                    sub.close()
     FreeCADGui.activateWorkbench("AutoBlockWorkbench")
     pump()
+
+
+def tearDownModule():
+    if _previous_workbench and _previous_workbench != "AutoBlockWorkbench":
+        FreeCADGui.activateWorkbench(_previous_workbench)
 
 
 class GuiTestCase(unittest.TestCase):
@@ -337,6 +350,34 @@ class TestStepThroughPanel(GuiTestCase):
                  list(obj.ViewObject.DiffuseColor), list(obj.State))
         self.assertEqual(after, before)
         self.assertIsNone(FreeCAD.getActiveTransaction())
+
+    def test_after_saving_and_reopening_a_double_click_opens_the_panel(self):
+        from AutoBlock.taskpanels import step_through
+        from AutoBlock.viewproviders.view_autoblock import ViewProviderAutoBlock
+
+        folder = support.temporary_folder()
+        try:
+            obj = self.auto_block(self.add_sample())[0]
+            name, colours = obj.Name, list(obj.ViewObject.DiffuseColor)
+            path = os.path.join(folder, "gui.FCStd")
+            self.doc.saveAs(path)
+            FreeCAD.closeDocument(self.doc.Name)
+            pump()
+            self.doc = FreeCAD.openDocument(path)
+            pump()
+            obj = self.doc.getObject(name)
+            self.assertIsInstance(obj.ViewObject.Proxy, ViewProviderAutoBlock)
+            self.assertEqual(list(obj.ViewObject.DiffuseColor), colours)
+            self.assertTrue(obj.ViewObject.Proxy.doubleClicked(obj.ViewObject))
+            pump()
+            panel = step_through.current_panel()
+            self.assertIsNotNone(panel)
+            self.assertEqual(panel.form.slider.maximum(), obj.NumberOfCuts)
+            panel.reject()
+            pump()
+            self.assertFalse(FreeCADGui.Control.activeDialog())
+        finally:
+            support.remove_folder(folder)
 
     def test_an_out_of_date_object_gets_a_message_instead_of_a_panel(self):
         source = self.add_sample()

@@ -15,4 +15,6 @@ class PreferencesCommand(BaseCommand):
         return True
 
     def run(self):
-        FreeCADGui.showPreferences("AutoBlock")
+        from ..gui_utils import echo
+
+        echo('Gui.showPreferences("AutoBlock")')

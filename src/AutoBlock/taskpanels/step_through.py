@@ -173,8 +173,12 @@ class StepThroughPanel:
         return True
 
     def _leave(self):
-        gui_document = FreeCADGui.getDocument(self.obj.Document.Name)
-        if gui_document.getInEdit() is not None:
+        try:
+            gui_document = FreeCADGui.getDocument(self.obj.Document.Name)
+            in_edit = gui_document.getInEdit() is not None
+        except Exception:  # the object or its document is gone
+            gui_document, in_edit = None, False
+        if in_edit:
             gui_document.resetEdit()  # -> unsetEdit -> close_step_panel
         else:
             close_step_panel()
