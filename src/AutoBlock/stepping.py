@@ -44,7 +44,8 @@ class NextCut:
 
 class StepView:
     """The episode after `step` of `steps` cuts: pieces, blocks (count), ret (return so far), status,
-    next (NextCut, or None after the last cut), frame, z (in the frame), size (the face's longer side)."""
+    next (NextCut, or None after the last cut), frame, z (in the frame), normal (the face's, global), size
+    (the face's longer side)."""
 
     def __init__(self, **values):
         for key, value in values.items():
@@ -98,9 +99,10 @@ class Stepper:
                 chosen=n["chosen"], vertex=to_global(n["vertex"]), direction=n["direction"],
                 line=[(to_global(a), to_global(b)) for a, b in n["line"]], reward=n["reward"],
                 n_parts=n["n_parts"], scores=scores, scores_note=note)
+        normal = self.frame.Rotation.multVec(FreeCAD.Vector(0, 0, 1 if data["normal_up"] else -1))
         view = StepView(step=data["step"], steps=data["steps"], pieces=pieces, blocks=data["blocks"],
                         ret=data["return"], status=data["status"], next=nxt, frame=self.frame, z=z,
-                        size=size, label=self.label)
+                        normal=normal, size=size, label=self.label)
         self._cache[k] = view
         return view
 

@@ -340,6 +340,19 @@ class TestStepThroughPanel(GuiTestCase):
         self.assertIn("learned policy", form.scoresLabel.text())
         FreeCADGui.Selection.clearSelection()
         screenshot("step-through")
+        # The value-score overlay, fed made-up scores (no learned policy in this build): it draws a disc and
+        # a label per vertex and names the best vertex.
+        import copy
+
+        scored = copy.copy(view)
+        scored.next = copy.copy(view.next)
+        scored.next.scores = [0.1 * i for i in range(len(view.next.vertices))]
+        nodes_before = panel.scene.content.getNumChildren()
+        panel.scene.show(scored, panel.colours)
+        panel.update_labels(scored)
+        self.assertGreater(panel.scene.content.getNumChildren(), nodes_before + len(scored.next.vertices))
+        self.assertIn("highest {:.3f}".format(scored.next.scores[-1]), form.scoresLabel.text())
+        panel.show_step(2)
         panel.reject()
         pump()
         self.assertFalse(FreeCADGui.Control.activeDialog())

@@ -131,6 +131,12 @@ class StepScene:
         node.addChild(self._lines([outline], ring, 2, lift * 0.1))
         return node
 
+    @staticmethod
+    def _translation(offset):
+        translation = coin.SoTranslation()
+        translation.translation.setValue(offset.x, offset.y, offset.z)
+        return translation
+
     def _text(self, point, text, colour, lift):
         node = coin.SoSeparator()
         node.addChild(self._material(colour))
@@ -146,13 +152,14 @@ class StepScene:
     def show(self, view, colours):
         """Draw `view` (a stepping.StepView); colours: (r, g, b) per block, in the order set aside."""
         self.content.removeAllChildren()
-        normal = view.frame.Rotation.multVec(FreeCAD.Vector(0, 0, 1))
-        lift = normal * (1e-3 * max(view.size, 1e-9))
+        # Everything is drawn a little above the face (on the side its normal points to), layer by layer, so
+        # that the source face or a solid's face in the same place cannot hide it.
+        lift = view.normal * (1e-3 * max(view.size, 1e-9))
         current = view.next.part if view.next is not None else None
 
-        offset = coin.SoPolygonOffset()
         faces_node = coin.SoSeparator()
-        faces_node.addChild(offset)
+        faces_node.addChild(self._translation(lift * 0.5))
+        faces_node.addChild(coin.SoPolygonOffset())
         outlines, current_outline = [], []
         for piece in view.pieces:
             if piece.block:
