@@ -10,7 +10,7 @@ frame (faces.py), passes it as BREP text, and turns the answer into FreeCAD shap
 
 import json
 
-import FreeCAD
+import FreeCAD  # noqa: F401  (before Part)
 import Part
 
 from . import faces, native, preferences

@@ -5,7 +5,6 @@ loads and saves them itself: the policy and reward lists come from the core, and
 name (FreeCAD's PrefComboBox would store an index, which breaks when the core's list grows).
 """
 
-import FreeCAD
 import FreeCADGui
 
 from . import paths, preferences

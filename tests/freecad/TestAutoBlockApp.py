@@ -7,7 +7,6 @@ write-back, bad faces, stepping, FEM mesh objects, the training protocol.
 import json
 import os
 import subprocess
-import sys
 import threading
 import time
 import unittest
@@ -138,8 +137,7 @@ class TestDecompose(unittest.TestCase):
         self.check_partition(result, face)
         self.assertEqual(result.n_blocks, 2)
         # The blocks lie where the face does.
-        self.assertAlmostEqual(result.shape.fuse(result.blocks).Area if False else face.common(result.shape).Area,
-                               face.Area, places=6)
+        self.assertAlmostEqual(face.common(result.shape).Area, face.Area, places=6)
 
     def test_a_face_of_an_object(self):
         doc = support.new_document("sub")

@@ -60,7 +60,7 @@ def l_points(width=4.0, height=4.0, notch=2.0):
 
 
 def add_l_sketch(doc, placement=None, name="Sketch", **size):
-    import Sketcher  # noqa: F401
+    import Sketcher  # noqa: F401  (registers Sketcher::SketchObject)
 
     sketch = doc.addObject("Sketcher::SketchObject", name)
     if placement is not None:

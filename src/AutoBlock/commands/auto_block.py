@@ -38,6 +38,7 @@ class AutoBlockCommand(BaseCommand):
     def run(self):
         from .. import console
         from ..gui_utils import echo, object_ref, report_error
+        from ..objects.autoblock_feature import is_autoblock
         from ..transactions import transaction
 
         targets = selected_targets()
@@ -72,4 +73,5 @@ class AutoBlockCommand(BaseCommand):
         FreeCADGui.Selection.clearSelection()
         for obj in created:
             FreeCADGui.Selection.addSelection(obj)
-            FreeCAD.Console.PrintMessage("AutoBlock: {}: {}\n".format(obj.Label, obj.Status))
+            if is_autoblock(obj):
+                FreeCAD.Console.PrintMessage("AutoBlock: {}: {}\n".format(obj.Label, obj.Status))

@@ -1,7 +1,5 @@
 """Open AutoBlock's preferences page."""
 
-import FreeCADGui
-
 from .base import BaseCommand
 
 

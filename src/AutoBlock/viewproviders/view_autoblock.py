@@ -61,7 +61,7 @@ class ViewProviderAutoBlock:
         return True
 
     def setupContextMenu(self, vobj, menu):
-        from PySide2 import QtGui, QtWidgets  # noqa: F401
+        from PySide2 import QtGui
 
         action = menu.addAction(QtGui.QIcon(paths.icon("AutoBlock_StepThrough")), "Step through the cuts")
         action.triggered.connect(lambda: FreeCADGui.runCommand("AutoBlock_StepThrough"))
