@@ -1,0 +1,57 @@
+"""AutoBlock for FreeCAD: cut planar rectilinear faces into rectangular blocks.
+
+Console API (freecadcmd or FreeCAD's Python console):
+
+    import AutoBlock
+    result = AutoBlock.decompose(face_or_object, policy=None)   # or (object, "Face3")
+    result.blocks       # list of Part.Face
+    result.shape        # their compound: the partitioned face
+    result.cuts         # list of AutoBlock.Cut
+    result.ret          # return (sum of the cuts' rewards, Eq. (1))
+    result.n_blocks
+    obj = AutoBlock.make_autoblock(source_object, "Face3")     # the parametric object (Auto-Block button)
+    AutoBlock.write_back(obj, mode="new")                       # or "replace"
+    AutoBlock.stepper_of(obj).step(2)                           # the decomposition after 2 cuts
+    AutoBlock.policy_names(), AutoBlock.reward_presets(), AutoBlock.capabilities()
+    AutoBlock.mesh(obj), AutoBlock.train(request)               # once the core offers them
+
+Importing this package is cheap: the names above load their modules (and the native module) on
+first use.
+"""
+
+__version__ = "0.1.0"
+
+_LAZY = {
+    "decompose": ("console", "decompose"),
+    "check_face": ("console", "check_face"),
+    "policy_names": ("console", "policy_names"),
+    "reward_presets": ("console", "reward_presets"),
+    "capabilities": ("console", "capabilities"),
+    "mesh": ("console", "mesh"),
+    "train": ("console", "train"),
+    "Cut": ("console", "Cut"),
+    "DecompositionResult": ("console", "DecompositionResult"),
+    "Stepper": ("stepping", "Stepper"),
+    "make_autoblock": ("objects.autoblock_feature", "make_autoblock"),
+    "stepper_of": ("objects.autoblock_feature", "stepper_of"),
+    "is_autoblock": ("objects.autoblock_feature", "is_autoblock"),
+    "write_back": ("objects.write_back", "write_back"),
+    "TrainingRequest": ("training", "TrainingRequest"),
+}
+
+__all__ = sorted(_LAZY)
+
+
+def __getattr__(name):
+    if name in _LAZY:
+        import importlib
+
+        module_name, attribute = _LAZY[name]
+        value = getattr(importlib.import_module("." + module_name, __name__), attribute)
+        globals()[name] = value
+        return value
+    raise AttributeError("module 'AutoBlock' has no attribute '{}'".format(name))
+
+
+def __dir__():
+    return sorted(list(globals()) + list(_LAZY))

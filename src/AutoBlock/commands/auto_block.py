@@ -1,0 +1,77 @@
+"""Auto-Block: the selected planar faces -> one parametric AutoBlock object each."""
+
+import FreeCAD
+import FreeCADGui
+
+from .base import BaseCommand
+
+
+def selected_targets():
+    """[(object, sub or None, object to hide)] for every selected face, or every selected object when no face
+    of it is selected. Objects inside containers (a Body, an App::Part) are reached through their path, so
+    that the containers' placements apply."""
+    from ..faces import selection_target
+
+    targets = []
+    for selection in FreeCADGui.Selection.getSelectionEx("", 0):
+        obj = selection.Object
+        names = list(selection.SubElementNames) or [""]
+        seen = set()
+        for name in names:
+            target = selection_target(obj, name)
+            if (target[0].Name, target[1]) not in seen:
+                seen.add((target[0].Name, target[1]))
+                targets.append(target)
+    return targets
+
+
+class AutoBlockCommand(BaseCommand):
+    NAME = "AutoBlock_AutoBlock"
+    ICON = "AutoBlock_AutoBlock"
+    MENU_TEXT = "Auto-Block"
+    TOOL_TIP = ("Cut the selected planar faces into rectangular blocks: one parametric AutoBlock object per face "
+                "(select faces, a sketch, or objects holding one face)")
+
+    def IsActive(self):
+        return FreeCADGui.ActiveDocument is not None and bool(FreeCADGui.Selection.getSelection())
+
+    def run(self):
+        from .. import console
+        from ..gui_utils import echo, object_ref, report_error
+        from ..objects.autoblock_feature import is_autoblock
+        from ..transactions import transaction
+
+        targets = selected_targets()
+        if not targets:
+            report_error("Auto-Block", "Select one or more planar faces (or a sketch, or an object holding one face).")
+            return
+        # Check every face first: with one bad face, nothing changes.
+        problems = []
+        for obj, sub, _ in targets:
+            try:
+                console.check_face(obj, sub)
+            except (ValueError, TypeError) as error:
+                problems.append(str(error))
+        if problems:
+            report_error("Auto-Block", "Unsupported face{}; nothing was changed:\n\n{}".format(
+                "s" if len(problems) > 1 else "", "\n\n".join(problems)))
+            return
+        doc = targets[0][0].Document
+        before = set(o.Name for o in doc.Objects)
+        with transaction("Auto-Block"):
+            echo("import AutoBlock")
+            for obj, sub, _ in targets:
+                if sub:
+                    echo("AutoBlock.make_autoblock({}, {!r})".format(object_ref(obj), sub))
+                else:
+                    echo("AutoBlock.make_autoblock({})".format(object_ref(obj)))
+            for leaf in {t[2] for t in targets}:
+                if leaf.ViewObject is not None and leaf.ViewObject.Visibility:
+                    echo("Gui.getDocument({!r}).getObject({!r}).Visibility = False".format(leaf.Document.Name,
+                                                                                             leaf.Name))
+        created = [doc.getObject(n) for n in set(o.Name for o in doc.Objects) - before]
+        FreeCADGui.Selection.clearSelection()
+        for obj in created:
+            FreeCADGui.Selection.addSelection(obj)
+            if is_autoblock(obj):
+                FreeCAD.Console.PrintMessage("AutoBlock: {}: {}\n".format(obj.Label, obj.Status))

@@ -1,0 +1,36 @@
+# Decompose every .brep/.step face of a folder with AutoBlock, writing the blocks and a summary.
+#   freecadcmd batch_decompose.py INPUT_FOLDER OUTPUT_FOLDER [POLICY]
+import json
+import os
+import sys
+
+import FreeCAD  # noqa: F401  (before Part)
+import Part
+
+import AutoBlock
+
+
+def main(folder, out, policy=None):
+    names = sorted(n for n in os.listdir(folder) if n.lower().endswith((".brep", ".brp", ".step", ".stp")))
+    os.makedirs(out, exist_ok=True)
+    summary, failed = [], 0
+    for i, name in enumerate(names, 1):
+        try:
+            result = AutoBlock.decompose(Part.read(os.path.join(folder, name)), policy=policy)
+        except Exception as error:  # unreadable file or unsupported face: report it and go on
+            failed += 1
+            print("[{}/{}] {}: skipped: {}".format(i, len(names), name, error), flush=True)
+            continue
+        result.shape.exportBrep(os.path.join(out, os.path.splitext(name)[0] + "-blocks.brep"))
+        summary.append(dict(result.to_dict(), file=name))
+        print("[{}/{}] {}: {}".format(i, len(names), name, result.summary()), flush=True)
+    with open(os.path.join(out, "summary.json"), "w") as f:
+        json.dump(summary, f, indent=1)
+    print("{} decomposed, {} skipped; results in {}".format(len(summary), failed, out), flush=True)
+    return 1 if failed else 0
+
+
+if len(sys.argv) < 3:
+    print("usage: freecadcmd batch_decompose.py INPUT_FOLDER OUTPUT_FOLDER [POLICY]", flush=True)
+    sys.exit(2)
+sys.exit(main(sys.argv[1], sys.argv[2], sys.argv[3] if len(sys.argv) > 3 else None))

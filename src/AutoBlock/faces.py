@@ -1,0 +1,169 @@
+"""Which face to cut, and the face's own frame.
+
+A face can be given as a Part.Face, any Part.Shape holding one face (or closed planar wires, as a
+sketch holds), a document object with such a shape, or an object with a sub-element name
+((obj, "Face3")). The core cuts faces parallel to the XY plane with edges along X and Y; a face in
+any other plane (a sketch on XZ, the side of a box) or turned within its plane is carried into its
+own frame first (face_frame), cut there, and the blocks carried back.
+"""
+
+import FreeCAD
+import Part
+
+IDENTITY = FreeCAD.Placement()
+
+
+def _is_document_object(target):
+    return hasattr(target, "TypeId") and hasattr(target, "Document") and hasattr(target, "Name")
+
+
+def face_of(target, sub=None):
+    """Returns (face, label): the face `target` designates (global coordinates) and a name for messages.
+
+    Raises ValueError when it designates no face or several, and TypeError for other objects.
+    """
+    if isinstance(target, tuple) and len(target) == 2 and sub is None:
+        target, sub = target
+    if isinstance(sub, (list, tuple)):
+        if len(sub) > 1:
+            raise ValueError("one face at a time: got the sub-elements {}".format(", ".join(sub)))
+        sub = sub[0] if sub else None
+    if sub == "":
+        sub = None
+    if isinstance(target, Part.Shape):
+        if sub:
+            return _single_face(target.getElement(sub), sub), sub
+        return _single_face(target, "the shape"), "the shape"
+    if _is_document_object(target):
+        label = target.Label
+        if not hasattr(target, "Shape") and not sub:
+            raise ValueError("{} ({}) has no shape".format(label, target.TypeId))
+        if sub:
+            # A sub-element ("Face6"), a path to one through containers ("Pad.Face6" of a Body), or a path
+            # to a whole object inside a container ("Sketch." of a Body).
+            element = sub.split(".")[-1]
+            if element and not element.startswith("Face"):
+                raise ValueError("{}.{} is not a face: select a face (Face1, Face2, ...)".format(label, sub))
+            label = "{}.{}".format(label, sub.rstrip("."))
+            try:
+                shape = Part.getShape(target, sub, needSubElement=bool(element))
+            except Exception as error:
+                raise ValueError("{}: no such face ({})".format(label, error)) from error
+        else:
+            shape = Part.getShape(target)
+        return _single_face(shape, label), label
+    raise TypeError("expected a Part.Face, a Part.Shape, a document object or (object, 'FaceN'), got {}".format(
+        type(target).__name__))
+
+
+def selection_target(obj, sub):
+    """(object, sub or None) that AutoBlock should cut for a selected `obj` with sub-element path `sub`
+    (FreeCADGui.Selection.getSelectionEx("", 0): obj is the top-level object, sub a full path), and the
+    object to hide once it is cut. A face or a path to one is kept; an edge or vertex stands for its
+    whole object."""
+    element = sub.split(".")[-1] if sub else ""
+    if element.startswith("Face"):
+        path = sub
+    elif sub and "." in sub:
+        path = sub[: sub.rindex(".") + 1]  # "Sketch.Edge3" -> "Sketch."
+    else:
+        path = None
+    leaf = obj
+    if path:
+        try:
+            leaf = obj.getSubObject(path, retType=1) or obj
+        except Exception:
+            leaf = obj
+    return obj, path, leaf
+
+
+def _single_face(shape, label):
+    if shape is None or shape.isNull():
+        raise ValueError("{} is empty (a null shape)".format(label))
+    faces = shape.Faces
+    if len(faces) == 1:
+        return faces[0]
+    if len(faces) > 1:
+        raise ValueError("{} has {} faces: choose one (select a face, or pass (object, 'Face1'))".format(
+            label, len(faces)))
+    wires = shape.Wires
+    if not wires:
+        raise ValueError("{} holds no face and no closed wire".format(label))
+    if not all(w.isClosed() for w in wires):
+        raise ValueError("{} holds no face, and not all of its {} wire(s) are closed".format(label, len(wires)))
+    try:
+        made = Part.makeFace(wires, "Part::FaceMakerBullseye")
+    except Exception as error:
+        raise ValueError("{}: its closed wires do not make a planar face ({})".format(label, error)) from error
+    if len(made.Faces) != 1:
+        raise ValueError("{}: its closed wires make {} faces, expected one".format(label, len(made.Faces)))
+    return made.Faces[0]
+
+
+def _line_edges(face):
+    return [e for e in face.Edges if isinstance(e.Curve, Part.Line) and e.Length > 0]
+
+
+def face_frame(face):
+    """The placement of the face's own frame: identity when the face lies parallel to XY with an edge
+    along X or Y (coordinates stay the model's); otherwise origin at the start of its longest straight
+    edge, X along that edge, Z along the face's normal. Faces that are not planar or have no straight
+    edge keep the identity (the core then says what is wrong)."""
+    surface = face.Surface
+    if not isinstance(surface, Part.Plane):
+        return FreeCAD.Placement()
+    lines = _line_edges(face)
+    if not lines:
+        return FreeCAD.Placement()
+    normal = FreeCAD.Vector(surface.Axis)
+    normal.normalize()
+    size = max(face.BoundBox.XLength, face.BoundBox.YLength, face.BoundBox.ZLength, 1e-300)
+    tolerance = 1e-7 * size
+    if abs(abs(normal.z) - 1.0) < 1e-12:
+        for edge in lines:
+            d = edge.Vertexes[-1].Point - edge.Vertexes[0].Point
+            if abs(d.x) <= tolerance or abs(d.y) <= tolerance:
+                return FreeCAD.Placement()
+    longest = max(lines, key=lambda e: e.Length)
+    u = longest.Vertexes[-1].Point - longest.Vertexes[0].Point
+    u = u - normal * u.dot(normal)
+    u.normalize()
+    v = normal.cross(u)
+    rotation = FreeCAD.Rotation(u, v, normal, "ZXY")
+    return FreeCAD.Placement(longest.Vertexes[0].Point, rotation)
+
+
+def is_identity(placement):
+    return placement.isIdentity() if hasattr(placement, "isIdentity") else placement == FreeCAD.Placement()
+
+
+def into_frame(shape, frame):
+    """A copy of `shape` (global coordinates) in `frame`'s coordinates."""
+    copy = shape.copy()
+    if not is_identity(frame):
+        copy.transformShape(frame.inverse().toMatrix(), True)  # True: move the geometry, not the location
+    return copy
+
+
+def out_of_frame(shape, frame):
+    """A copy of `shape` (in `frame`'s coordinates) in global coordinates."""
+    copy = shape.copy()
+    if not is_identity(frame):
+        # Move the geometry itself: a Part feature replaces its shape's location by its Placement.
+        copy.transformShape(frame.toMatrix(), True)
+    return copy
+
+
+def point_out_of_frame(x, y, z, frame):
+    """The global point of (x, y, z) in `frame`."""
+    return frame.multVec(FreeCAD.Vector(x, y, z))
+
+
+def polygon_face(outer, holes, z):
+    """A planar face at height z bounded by `outer` and `holes` (lists of (x, y) corners)."""
+    def wire(ring):
+        points = [FreeCAD.Vector(x, y, z) for x, y in ring]
+        return Part.makePolygon(points + points[:1])
+
+    wires = [wire(outer)] + [wire(h) for h in holes]
+    return Part.makeFace(wires, "Part::FaceMakerBullseye").Faces[0]

@@ -1,0 +1,43 @@
+"""Small GUI helpers: reporting errors (report view and a dialog), echoing console calls."""
+
+import FreeCAD
+import FreeCADGui
+from PySide2 import QtWidgets
+
+from . import native
+
+
+def main_window():
+    return FreeCADGui.getMainWindow()
+
+
+def message_of(error):
+    """A user-facing line for an exception: the message for ValueError and friends, the type otherwise."""
+    if isinstance(error, (ValueError, NotImplementedError, native.NativeModuleMissing)):
+        return str(error)
+    return "{}: {}".format(type(error).__name__, error)
+
+
+def report_error(title, message):
+    """Print `message` to the report view and show it in a dialog."""
+    FreeCAD.Console.PrintError("AutoBlock: {}: {}\n".format(title, message))
+    QtWidgets.QMessageBox.warning(main_window(), "AutoBlock: " + title, message)
+
+
+def report_exception(title, error):
+    """Report an exception from a command; internal errors also get their traceback in the report view."""
+    if not isinstance(error, (ValueError, NotImplementedError, native.NativeModuleMissing, TypeError)):
+        import traceback
+
+        FreeCAD.Console.PrintLog("".join(traceback.format_exception(type(error), error, error.__traceback__)))
+    report_error(title, message_of(error))
+
+
+def echo(code):
+    """Run `code` in FreeCAD's Python console, echoed there (so users see the console call)."""
+    FreeCADGui.doCommand(code)
+
+
+def object_ref(obj):
+    """Console text that designates `obj`."""
+    return "App.getDocument({!r}).getObject({!r})".format(obj.Document.Name, obj.Name)

@@ -1,0 +1,1 @@
+"""Document objects: the parametric AutoBlock feature, write-back, FEM mesh objects."""

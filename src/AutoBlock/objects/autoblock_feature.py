@@ -1,0 +1,198 @@
+"""The AutoBlock object: a Part::FeaturePython linked to a source face, whose Shape is that face cut
+into blocks. It recomputes when the source changes; it saves and reopens like any feature (its proxy
+keeps no state: everything lives in properties).
+
+make_autoblock() is what the Auto-Block button runs.
+"""
+
+import json
+
+import FreeCAD
+
+from .. import console, native, preferences
+from ..transactions import transaction
+
+TYPE = "AutoBlock::AutoBlock"
+
+
+def is_autoblock(obj):
+    """True for an AutoBlock object."""
+    return getattr(getattr(obj, "Proxy", None), "Type", None) == TYPE
+
+
+class AutoBlockFeature:
+    Type = TYPE
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.last_error = None
+        self.ensure_properties(obj)
+
+    # Properties: (type, name, group, tooltip, attributes). Attributes: 8 = Output (changing it does not
+    # touch the object); read-only and hidden are editor modes.
+    PROPERTIES = [
+        ("App::PropertyLinkSub", "Source", "Input", "The face to cut: an object and, when it has several faces, one "
+         "of them. Recomputes when it changes.", 0),
+        ("App::PropertyEnumeration", "Policy", "Decomposition", "How cuts are chosen: a shipped policy (optimal: "
+         "maximum return by exact search).", 0),
+        ("App::PropertyFile", "PolicyFile", "Decomposition", "A policy file made by training; used instead of "
+         "Policy when set.", 0),
+        ("App::PropertyEnumeration", "RewardPreset", "Decomposition", "The reward the policy maximises (paper: "
+         "Eq. (1) of DiPrete et al. 2022).", 0),
+        ("App::PropertyInteger", "Seed", "Decomposition", "Seed of the random policies.", 0),
+        ("App::PropertyFloat", "TimeLimit", "Decomposition", "optimal: seconds of exact search before finishing "
+         "greedily.", 0),
+        ("App::PropertyLength", "MeshSize", "Mesh", "Target quad size for meshing the blocks (0: automatic). Used "
+         "once the core can mesh; this build cannot yet.", 0),
+        ("App::PropertyInteger", "NumberOfBlocks", "Result", "Blocks in the partition.", 8),
+        ("App::PropertyInteger", "MinimumBlocks", "Result", "Fewest rectangles of any partition of the face (a "
+         "lower bound).", 8),
+        ("App::PropertyInteger", "NumberOfCuts", "Result", "Cuts the policy made.", 8),
+        ("App::PropertyFloat", "Return", "Result", "Sum of the cuts' rewards.", 8),
+        ("App::PropertyString", "Status", "Result", "Summary of the last decomposition.", 8),
+        ("App::PropertyString", "CutSequence", "Result", "The cuts (JSON, in the face's own frame), for "
+         "stepping through them.", 8),
+    ]
+    READ_ONLY = ("NumberOfBlocks", "MinimumBlocks", "NumberOfCuts", "Return", "Status")
+    HIDDEN = ("CutSequence",)
+
+    def ensure_properties(self, obj):
+        for kind, name, group, tooltip, attributes in self.PROPERTIES:
+            if name not in obj.PropertiesList:
+                obj.addProperty(kind, name, group, tooltip, attributes)
+        for name in self.READ_ONLY:
+            obj.setEditorMode(name, 1)
+        for name in self.HIDDEN:
+            obj.setEditorMode(name, 2)
+        self.refresh_choices(obj)
+
+    @staticmethod
+    def refresh_choices(obj):
+        """Fill the enumerations from the core, keeping the current choice."""
+        try:
+            module = native.load()
+        except native.NativeModuleMissing:
+            return
+        for name, choices in (("Policy", list(module.policy_names())), ("RewardPreset", list(module.reward_presets()))):
+            current = getattr(obj, name) if getattr(obj, name, None) else None
+            if list(obj.getEnumerationsOfProperty(name) or []) != choices:
+                setattr(obj, name, choices)
+                if current in choices:
+                    setattr(obj, name, current)
+
+    def onDocumentRestored(self, obj):
+        self.last_error = None
+        self.ensure_properties(obj)
+
+    def execute(self, obj):
+        self.last_error = None
+        try:
+            result = self.decompose(obj)
+        except Exception as error:
+            self.last_error = error
+            raise
+        obj.Shape = result.shape
+        obj.NumberOfBlocks = result.n_blocks
+        obj.MinimumBlocks = result.min_blocks
+        obj.NumberOfCuts = len(result.cuts)
+        obj.Return = result.ret
+        obj.Status = "{}: {}".format(result.policy, result.summary())
+        obj.CutSequence = result.cut_sequence()
+
+    @staticmethod
+    def decompose(obj):
+        if not obj.Source:
+            raise ValueError("{}: no source face (set Source)".format(obj.Label))
+        source, subs = obj.Source
+        policy = obj.PolicyFile or obj.Policy
+        return console.decompose((source, list(subs)), policy=policy, reward=obj.RewardPreset, seed=obj.Seed,
+                                 time_limit=obj.TimeLimit)
+
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        self.last_error = None
+        return None
+
+
+def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, seed=0, time_limit=30.0,
+                   name="AutoBlock", mesh=None):
+    """Create the parametric AutoBlock object of `source` (a document object; sub: "FaceN" when it has several
+    faces) and compute it. policy: a name or policy file (None: the preferred default); reward: a preset (None:
+    the preferred one); mesh_size (None: the preferred one); mesh: also make a FEM mesh object of the blocks
+    (None: when the core can mesh, which this build cannot; True: required).
+
+    One undoable transaction ("Auto-Block"), or part of the caller's when one is open. Raises ValueError for an
+    unsupported face or a bad option, and then the document is left unchanged.
+    """
+    if isinstance(sub, (list, tuple)):
+        sub = sub[0] if len(sub) == 1 else (None if not sub else sub)
+    if not hasattr(source, "Document"):
+        raise TypeError("make_autoblock needs a document object, got {}".format(type(source).__name__))
+    # Check before touching the document.
+    console.check_face(source, sub)
+    spec = policy or preferences.default_policy()
+    module = native.load()
+    names = list(module.policy_names())
+    reward = reward or preferences.reward_preset()
+    presets = list(module.reward_presets())
+    if reward not in presets:
+        raise ValueError("unknown reward preset '{}' (expected {})".format(reward, ", ".join(presets)))
+    doc = source.Document
+    created = []
+    try:
+        with transaction("Auto-Block"):
+            obj = doc.addObject("Part::FeaturePython", name)
+            created.append(obj.Name)
+            AutoBlockFeature(obj)
+            if FreeCAD.GuiUp:
+                from ..viewproviders.view_autoblock import ViewProviderAutoBlock
+
+                ViewProviderAutoBlock(obj.ViewObject)
+            obj.Label = "{} {}".format(name, source.Label) + (" {}".format(sub) if sub else "")
+            if spec in names:
+                obj.Policy = spec
+            else:
+                obj.PolicyFile = spec
+            obj.RewardPreset = reward
+            obj.Seed = int(seed)
+            obj.TimeLimit = float(time_limit)
+            obj.MeshSize = preferences.mesh_size() if mesh_size is None else float(mesh_size)
+            obj.Source = (source, [sub] if sub else [])
+            doc.recompute([obj])
+            error = obj.Proxy.last_error
+            if error is not None:
+                raise error
+            if not obj.isValid():
+                raise RuntimeError("{}: recompute failed ({})".format(obj.Label, ", ".join(obj.State)))
+            if mesh or (mesh is None and native.has("meshing")):
+                created.append(console.mesh(obj).Name)
+    except BaseException:
+        # Without undo (freecadcmd's default) aborting the transaction leaves the object: remove it.
+        for object_name in created:
+            if doc.getObject(object_name) is not None:
+                doc.removeObject(object_name)
+        raise
+    return obj
+
+
+def stepper_of(obj):
+    """A Stepper over an AutoBlock object's cuts. Raises ValueError when the object is out of date (its source
+    changed since its last recompute) or has no result."""
+    if not is_autoblock(obj):
+        raise ValueError("{} is not an AutoBlock object".format(getattr(obj, "Label", obj)))
+    out_of_date = ValueError("{} is out of date or has no result: recompute it first".format(obj.Label))
+    if "Touched" in obj.State or "Invalid" in obj.State or not obj.CutSequence or not obj.Source:
+        raise out_of_date
+    source, subs = obj.Source
+    face, local, frame, label = console.local_face((source, list(subs)))
+    data = json.loads(obj.CutSequence)
+    # The source may have changed without a recompute yet (FreeCAD marks dependents only when recomputing).
+    if not console.same_face(data.get("face"), local):
+        raise out_of_date
+    cuts = [(int(c[0]), float(c[1]), float(c[2]), str(c[3])) for c in data["cuts"]]
+    from ..stepping import Stepper
+
+    return Stepper(local.exportBrepToString(), frame, cuts, int(data.get("max_steps", 0)), label,
+                   obj.PolicyFile or obj.Policy)

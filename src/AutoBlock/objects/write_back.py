@@ -1,0 +1,97 @@
+"""Writing an AutoBlock object's partitioned face back into the document:
+
+    AutoBlock.write_back(obj, mode="new")       # a new Part feature holding the blocks (a compound)
+    AutoBlock.write_back(obj, mode="replace")   # the source object's shape, with its face partitioned
+
+"replace" works on plain Part features (Part::Feature, e.g. an imported STEP face or solid): a
+parametric source (a sketch, an extrusion, a PartDesign feature) recomputes its shape from its own
+inputs, so replacing it would not last; such sources get a clear ValueError. When the source holds
+just the face, its new shape is the compound of the blocks; when the face belongs to a solid or a
+shell, the face is split into the blocks in place (OpenCASCADE's general fuse). The AutoBlock object
+has then done its job and is removed. Either mode is one undoable transaction.
+"""
+
+import FreeCAD
+
+from ..transactions import transaction
+from .autoblock_feature import is_autoblock
+
+MODES = ("new", "replace")
+
+
+def write_back(obj, mode="new", name=None):
+    """Write `obj`'s blocks back. Returns the Part feature that holds them (new, or the source)."""
+    if not is_autoblock(obj):
+        raise ValueError("{} is not an AutoBlock object".format(getattr(obj, "Label", obj)))
+    if mode not in MODES:
+        raise ValueError("mode must be 'new' or 'replace', not {!r}".format(mode))
+    if "Invalid" in obj.State or "Touched" in obj.State or obj.Shape.isNull():
+        raise ValueError("{} is out of date or has no result: recompute it first".format(obj.Label))
+    with transaction("Write back blocks"):
+        return _new(obj, name) if mode == "new" else _replace(obj)
+
+
+def _copy_colours(obj, target):
+    if not FreeCAD.GuiUp:
+        return
+    try:
+        colours = list(obj.ViewObject.DiffuseColor)
+        if len(colours) == len(target.Shape.Faces):
+            target.ViewObject.DiffuseColor = colours
+    except Exception:  # colours are a nicety; never fail the write-back over them
+        pass
+
+
+def _new(obj, name):
+    doc = obj.Document
+    feature = doc.addObject("Part::Feature", name or "Blocks")
+    feature.Label = name or "{} blocks".format(obj.Label)
+    feature.Shape = obj.Shape.copy()
+    _copy_colours(obj, feature)
+    doc.recompute()
+    return feature
+
+
+def _replace(obj):
+    import Part
+
+    doc = obj.Document
+    if not obj.Source:
+        raise ValueError("{}: no source to replace".format(obj.Label))
+    source, subs = obj.Source
+    if source.TypeId != "Part::Feature":
+        raise ValueError(
+            "{} is a {}: its shape is recomputed from its own inputs, so replacing it would not last; write the "
+            "blocks to a new Part feature instead".format(source.Label, source.TypeId))
+    blocks = obj.Shape.copy()
+    old = source.Shape
+    if len(old.Faces) == 1 and not old.Solids and not old.Shells:
+        new = blocks
+    else:
+        # Split the source's face into the blocks: the general fuse makes the blocks and the face share
+        # their pieces, so the solid (or shell) comes out with the partitioned face in place.
+        fused, _ = old.generalFuse([blocks])
+        if old.Solids:
+            parts = fused.Solids
+        elif old.Shells:
+            parts = fused.Shells
+        else:
+            parts = []
+        if len(parts) != len(old.Solids or old.Shells):
+            raise ValueError("{}: could not split its face into the blocks in place; write the blocks to a new "
+                             "Part feature instead".format(source.Label))
+        new = parts[0] if len(parts) == 1 else Part.makeCompound(parts)
+        if not new.isValid():
+            raise ValueError("{}: splitting its face in place gave an invalid shape; write the blocks to a new "
+                             "Part feature instead".format(source.Label))
+    # Keep the source's placement: a Part feature's shape is its geometry relative to its placement.
+    placement = source.Placement
+    local = new.copy()
+    local.transformShape(placement.inverse().toMatrix(), True)  # True: move the geometry itself
+    local.Placement = placement
+    doc.removeObject(obj.Name)
+    source.Shape = local
+    if FreeCAD.GuiUp:
+        source.ViewObject.Visibility = True
+    doc.recompute()
+    return source

@@ -1,0 +1,62 @@
+"""AutoBlock's user preferences (Edit > Preferences > AutoBlock), with the core's defaults."""
+
+import FreeCAD
+
+GROUP = "User parameter:BaseApp/Preferences/Mod/AutoBlock"
+
+# Parameter names; the preferences page (resources/ui/preferences.ui) uses the same ones.
+DEFAULT_POLICY = "DefaultPolicy"
+DEFAULT_POLICY_FILE = "DefaultPolicyFile"
+REWARD_PRESET = "RewardPreset"
+MESH_SIZE = "MeshSize"
+THREADS = "Threads"
+
+
+def params():
+    return FreeCAD.ParamGet(GROUP)
+
+
+def default_policy():
+    """The policy to use when none is given: the preferred policy file, else the preferred name, else the
+    core's default."""
+    p = params()
+    policy_file = p.GetString(DEFAULT_POLICY_FILE, "")
+    if policy_file:
+        return policy_file
+    name = p.GetString(DEFAULT_POLICY, "")
+    if name:
+        return name
+    from . import native
+
+    return native.load().default_policy()
+
+
+def reward_preset():
+    name = params().GetString(REWARD_PRESET, "")
+    if name:
+        return name
+    from . import native
+
+    return native.load().default_reward_preset()
+
+
+def mesh_size():
+    """Target element size of the quad mesh (model units); 0 means automatic."""
+    return params().GetFloat(MESH_SIZE, 0.0)
+
+
+def threads():
+    """Threads for training and learned policies; 0 means all cores."""
+    return params().GetInt(THREADS, 0)
+
+
+def set_default_policy(spec):
+    """Make `spec` (a policy name or file) the default."""
+    p = params()
+    from . import native
+
+    if spec in native.load().policy_names():
+        p.SetString(DEFAULT_POLICY, spec)
+        p.SetString(DEFAULT_POLICY_FILE, "")
+    else:
+        p.SetString(DEFAULT_POLICY_FILE, spec)

@@ -1,0 +1,70 @@
+"""The preferences page (Edit > Preferences > AutoBlock), from resources/ui/preferences.ui.
+
+The page uses FreeCAD's Pref widgets (their prefEntry names are the parameters of preferences.py), but
+loads and saves them itself: the policy and reward lists come from the core, and choices are stored by
+name (FreeCAD's PrefComboBox would store an index, which breaks when the core's list grows).
+"""
+
+import FreeCADGui
+
+from . import paths, preferences
+
+
+class AutoBlockPreferencesPage:
+    def __init__(self, parent=None):
+        self.form = FreeCADGui.PySideUic.loadUi(paths.ui("preferences"))
+        self.available = True
+        try:
+            from . import native
+
+            module = native.load()
+            self.policies = list(module.policy_names())
+            self.presets = list(module.reward_presets())
+            capabilities = dict(module.capabilities())
+        except Exception as error:
+            self.available = False
+            self.policies, self.presets, capabilities = [], [], {}
+            self.form.noteLabel.setText("The AutoBlock native module is not available: {}".format(error))
+        self.form.defaultPolicy.addItems(self.policies)
+        self.form.rewardPreset.addItems(self.presets)
+        notes = []
+        if not capabilities.get("learned_policies"):
+            notes.append("policy files need the learned policy, which this build does not have yet")
+        if not capabilities.get("meshing"):
+            notes.append("the mesh size is stored on new AutoBlock objects and used once the core can mesh")
+        if notes and self.available:
+            self.form.noteLabel.setText("Note: " + "; ".join(notes) + ".")
+
+    def loadSettings(self):
+        p = preferences.params()
+        f = self.form
+        policy = p.GetString(preferences.DEFAULT_POLICY, "")
+        if policy in self.policies:
+            f.defaultPolicy.setCurrentText(policy)
+        f.defaultPolicyFile.setProperty("fileName", p.GetString(preferences.DEFAULT_POLICY_FILE, ""))
+        preset = p.GetString(preferences.REWARD_PRESET, "")
+        if preset in self.presets:
+            f.rewardPreset.setCurrentText(preset)
+        f.meshSize.setValue(p.GetFloat(preferences.MESH_SIZE, 0.0))
+        f.threads.setValue(p.GetInt(preferences.THREADS, 0))
+
+    def saveSettings(self):
+        p = preferences.params()
+        f = self.form
+        if self.policies:
+            p.SetString(preferences.DEFAULT_POLICY, f.defaultPolicy.currentText())
+        p.SetString(preferences.DEFAULT_POLICY_FILE, str(f.defaultPolicyFile.property("fileName") or ""))
+        if self.presets:
+            p.SetString(preferences.REWARD_PRESET, f.rewardPreset.currentText())
+        p.SetFloat(preferences.MESH_SIZE, float(f.meshSize.value()))
+        p.SetInt(preferences.THREADS, int(f.threads.value()))
+
+
+_registered = False
+
+
+def register():
+    global _registered
+    if not _registered:
+        FreeCADGui.addPreferencePage(AutoBlockPreferencesPage, "AutoBlock")
+        _registered = True

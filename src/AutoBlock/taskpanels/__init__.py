@@ -1,0 +1,1 @@
+"""Task panels (GUI only): step through the cuts, train a policy."""

@@ -1,0 +1,194 @@
+"""The step-through task panel (resources/ui/step_through.ui): first / previous / next / last and a
+slider over an AutoBlock object's cut sequence. The 3-D view shows the pieces at each step (step_scene.py)
+while the object itself is hidden; closing the panel restores the view and leaves the document as it
+was (nothing in it changes).
+
+Position k (0 .. number of cuts) is the episode after k cuts, with the cut the policy chose next: its
+part, vertex, line and reward; the return is shown before and after that cut.
+"""
+
+import FreeCAD
+import FreeCADGui
+from PySide2 import QtGui, QtWidgets
+
+from .. import paths
+from ..viewproviders.view_autoblock import block_colours
+from .step_scene import CURRENT_COLOUR, CUT_COLOUR, PART_COLOUR, StepScene
+
+_panel = None
+
+
+def current_panel():
+    """The open step-through panel, or None."""
+    return _panel
+
+
+def open_step_panel(obj):
+    """Open the panel on AutoBlock object `obj` (what its view provider's setEdit does). Returns True when open."""
+    global _panel
+    from ..gui_utils import report_exception
+    from ..objects.autoblock_feature import stepper_of
+
+    try:
+        stepper = stepper_of(obj)
+        panel = StepThroughPanel(obj, stepper)
+    except Exception as error:
+        report_exception("Step through the cuts", error)
+        return False
+    _panel = panel
+    FreeCADGui.Control.showDialog(panel)
+    return True
+
+
+def close_step_panel(obj=None):
+    """Close the panel and restore the view (what unsetEdit does)."""
+    global _panel
+    if _panel is not None:
+        _panel.cleanup()
+        _panel = None
+    FreeCADGui.Control.closeDialog()
+
+
+def _hex(colour):
+    return "#{:02x}{:02x}{:02x}".format(*(int(round(255 * c)) for c in colour[:3]))
+
+
+def _vector(v):
+    return "({:.6g}, {:.6g}, {:.6g})".format(v.x, v.y, v.z)
+
+
+class StepThroughPanel:
+    def __init__(self, obj, stepper):
+        self.obj = obj
+        self.stepper = stepper
+        self.form = FreeCADGui.PySideUic.loadUi(paths.ui("step_through"))
+        self.form.setWindowIcon(QtGui.QIcon(paths.icon("AutoBlock_StepThrough")))
+        self.colours = [c[:3] for c in block_colours(max(obj.NumberOfBlocks, 1))]
+        style = self.form.style()
+        buttons = ((self.form.firstButton, QtWidgets.QStyle.SP_MediaSkipBackward, self.first),
+                   (self.form.previousButton, QtWidgets.QStyle.SP_MediaSeekBackward, self.previous),
+                   (self.form.nextButton, QtWidgets.QStyle.SP_MediaSeekForward, self.next),
+                   (self.form.lastButton, QtWidgets.QStyle.SP_MediaSkipForward, self.last))
+        for button, icon, slot in buttons:
+            button.setIcon(style.standardIcon(icon))
+            button.clicked.connect(slot)
+        self.form.slider.setRange(0, stepper.steps)
+        self.form.slider.valueChanged.connect(self.show_step)
+        self.form.titleLabel.setText("<b>{}</b><br>{}".format(obj.Label, obj.Status))
+        self.form.legendLabel.setText(
+            "<span style='color:{b}'>&#9632;</span> blocks set aside (final colours) &nbsp; "
+            "<span style='color:{p}'>&#9632;</span> parts still to cut &nbsp; "
+            "<span style='color:{c}'>&#9632;</span> the part cut at this step &nbsp; "
+            "<span style='color:{r}'>&#9679; &#9473;</span> chosen vertex and cut line".format(
+                b=_hex(self.colours[0]), p=_hex([c * 0.85 for c in PART_COLOUR]), c=_hex(CURRENT_COLOUR),
+                r=_hex(CUT_COLOUR)))
+        gui_document = FreeCADGui.getDocument(obj.Document.Name)
+        self.view = gui_document.ActiveView
+        if not hasattr(self.view, "getSceneGraph"):
+            raise ValueError("the active view of {} is not a 3-D view".format(obj.Document.Label))
+        # Hide the object through its scene graph only (no property changes: the document stays as it is).
+        self.switch = obj.ViewObject.SwitchNode
+        self.saved_child = self.switch.whichChild.getValue()
+        self.scene = StepScene(self.view)
+        self.switch.whichChild = -1
+        self.step = -1
+        self.show_step(0)
+
+    # -- navigation -------------------------------------------------------------------------------
+    def first(self):
+        self.form.slider.setValue(0)
+
+    def previous(self):
+        self.form.slider.setValue(max(self.step - 1, 0))
+
+    def next(self):
+        self.form.slider.setValue(min(self.step + 1, self.stepper.steps))
+
+    def last(self):
+        self.form.slider.setValue(self.stepper.steps)
+
+    def show_step(self, k):
+        from ..gui_utils import message_of
+
+        try:
+            view = self.stepper.step(k)
+        except Exception as error:
+            FreeCAD.Console.PrintError("AutoBlock: step {}: {}\n".format(k, message_of(error)))
+            self.form.positionLabel.setText("Step {}: {}".format(k, message_of(error)))
+            return
+        self.step = k
+        if self.form.slider.value() != k:
+            self.form.slider.setValue(k)
+        self.current = view
+        self.scene.show(view, self.colours)
+        self.update_labels(view)
+        self.form.firstButton.setEnabled(k > 0)
+        self.form.previousButton.setEnabled(k > 0)
+        self.form.nextButton.setEnabled(k < self.stepper.steps)
+        self.form.lastButton.setEnabled(k < self.stepper.steps)
+
+    def update_labels(self, view):
+        f = self.form
+        queued = sum(1 for p in view.pieces if not p.block)
+        if view.next is None:
+            if view.steps == 0:
+                f.positionLabel.setText("The face is a rectangle: no cut needed")
+            else:
+                f.positionLabel.setText("All {} cuts made: {}".format(view.steps, view.status))
+            for label in (f.partLabel, f.vertexLabel, f.directionLabel, f.rewardLabel):
+                label.setText("-")
+            f.returnLabel.setText("{:.3f} (total)".format(view.ret))
+            f.blocksLabel.setText("{} blocks{}".format(
+                view.blocks, ", {} parts left unfinished".format(queued) if queued else ""))
+            f.scoresLabel.setText("No cut at this step.")
+            return
+        cut = view.next
+        f.positionLabel.setText("Cut {} of {}".format(view.step + 1, view.steps))
+        f.partLabel.setText("#{} ({} corners)".format(cut.part, len(cut.vertices)))
+        f.vertexLabel.setText(_vector(cut.vertex))
+        if cut.n_parts == 1:
+            f.directionLabel.setText("{}, along the boundary: nothing cut".format(cut.direction))
+        else:
+            f.directionLabel.setText("{}, leaves {} pieces".format(cut.direction, cut.n_parts))
+        f.rewardLabel.setText("{:+.3f}".format(cut.reward))
+        f.returnLabel.setText("{:.3f} (before this cut: {:.3f})".format(view.ret + cut.reward, view.ret))
+        f.blocksLabel.setText("{} set aside, {} part{} to cut".format(view.blocks, queued, "" if queued == 1 else "s"))
+        if cut.scores:
+            best = max(range(len(cut.scores)), key=lambda i: cut.scores[i])
+            f.scoresLabel.setText("Markers from blue (low) to red (high); highest {:.3f} at {}.".format(
+                cut.scores[best], _vector(cut.vertices[best])))
+        else:
+            f.scoresLabel.setText("Not shown: {}.".format(cut.scores_note))
+
+    # -- task panel protocol ----------------------------------------------------------------------
+    def getStandardButtons(self):
+        return int(QtWidgets.QDialogButtonBox.Close)
+
+    def reject(self):
+        self._leave()
+        return True
+
+    def accept(self):
+        self._leave()
+        return True
+
+    def _leave(self):
+        try:
+            gui_document = FreeCADGui.getDocument(self.obj.Document.Name)
+            in_edit = gui_document.getInEdit() is not None
+        except Exception:  # the object or its document is gone
+            gui_document, in_edit = None, False
+        if in_edit:
+            gui_document.resetEdit()  # -> unsetEdit -> close_step_panel
+        else:
+            close_step_panel()
+
+    def cleanup(self):
+        """Remove the picture and show the object again (idempotent)."""
+        if self.scene is not None:
+            self.scene.remove()
+            self.scene = None
+            try:
+                self.switch.whichChild = self.saved_child
+            except Exception:
+                pass

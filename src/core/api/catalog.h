@@ -1,0 +1,49 @@
+// What the front ends (CLI, Python binding, FreeCAD workbench) offer the user: the shipped
+// policies, the reward presets, the default of each, and what this build can do. The front ends
+// take these lists from here, never from their own copies.
+//
+// Policies come from sac/policy_source.h: the baselines, the shipped trained policies and policy
+// files.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/env/policy.h"
+#include "core/geometry/grid_face.h"
+#include "core/sac/policy_source.h"
+
+namespace autoblock {
+
+// What this build can do beyond the baselines.
+struct Capabilities {
+  bool learned_policies = false;  // policy files and shipped learned policies
+  bool training = false;          // training a policy
+  bool vertex_scores = false;     // per-vertex value-network scores (a learned policy's)
+  bool meshing = false;           // conformal merge and quad meshing of the blocks
+};
+Capabilities capabilities();
+
+// The policy names front ends list: the shipped trained policies, then the baselines. The default
+// (default_policy_name(), sac/policy_source.h) is one of them.
+std::vector<std::string> policy_names();
+
+// The reward presets: "paper" (Eq. 1) and "mesh". The default is "": each policy's own preset.
+const std::vector<std::string>& reward_preset_names();
+std::string default_reward_preset();
+// Throws InputError unless name is empty or one of reward_preset_names().
+void check_reward_preset(const std::string& name);
+
+struct PolicySettings {
+  std::uint64_t seed = 0;     // random policies
+  double time_limit = 30.0;   // optimal: search seconds per face (<= 0: unlimited)
+};
+
+// Inputs:  spec, a name of policy_names() or a policy file's path (empty: the default); settings.
+// Outputs: where the policy comes from (a trained policy is loaded once). Throws InputError for an
+//          unknown name or a bad policy file.
+std::shared_ptr<const PolicySource> policy_source(const std::string& spec, const PolicySettings& settings);
+
+}  // namespace autoblock

@@ -1,0 +1,509 @@
+"""GUI test of the AutoBlock workbench, under Xvfb: xvfb-run freecad -t TestAutoBlockGui (see
+run_freecad_tests.sh).
+
+Activates the workbench, runs Auto-Block (good and bad faces), the step-through panel, write-back,
+the Train panel and the preferences page on a bundled sample, checks the objects and that closing
+panels leaves the document as it was, and saves screenshots into AUTOBLOCK_SCREENSHOT_DIR when set.
+"""
+
+import os
+import time
+import unittest
+
+import FreeCAD
+import FreeCADGui
+from PySide2 import QtCore, QtGui, QtWidgets
+
+import AutoBlock
+import autoblock_test_support as support
+
+SHOTS = os.environ.get("AUTOBLOCK_SCREENSHOT_DIR", "")
+
+
+def pump(seconds=0.3):
+    end = time.time() + seconds
+    while True:
+        QtWidgets.QApplication.processEvents()
+        if time.time() >= end:
+            break
+        time.sleep(0.01)
+
+
+def screenshot(name, whole_screen=False):
+    """Save the main window (or the whole screen, dialogs included) as SHOTS/name.png when SHOTS is set."""
+    if not SHOTS:
+        return None
+    os.makedirs(SHOTS, exist_ok=True)
+    if not whole_screen and os.environ.get("AUTOBLOCK_TEST_TMP"):
+        hide_docks()
+    pump(0.5)
+    path = os.path.join(SHOTS, name + ".png")
+    window = 0 if whole_screen else FreeCADGui.getMainWindow().winId()
+    pixmap = QtGui.QGuiApplication.primaryScreen().grabWindow(window)
+    assert pixmap.save(path), path
+    return path
+
+
+def hide_docks():
+    """A clean window for the screenshots: no report view full of test output, no Python console."""
+    window = FreeCADGui.getMainWindow()
+    for name in ("Report view", "Python console"):
+        dock = window.findChild(QtWidgets.QDockWidget, name)
+        if dock is not None:
+            dock.hide()
+    window.statusBar().clearMessage()
+
+
+def top_view():
+    view = FreeCADGui.ActiveDocument.ActiveView
+    view.viewTop()
+    view.fitAll()
+    pump()
+
+
+class DialogCatcher:
+    """Records and closes modal dialogs (message boxes) so that the test goes on; screenshot: a name to save
+    the screen under when the first dialog shows."""
+
+    def __init__(self, screenshot=None):
+        self.screenshot = screenshot
+        self.seen = []
+        self.timer = QtCore.QTimer()
+        self.timer.setInterval(50)
+        self.timer.timeout.connect(self.check)
+
+    def check(self):
+        widget = QtWidgets.QApplication.activeModalWidget()
+        if isinstance(widget, QtWidgets.QMessageBox):
+            self.timer.stop()
+            self.seen.append((widget.windowTitle(), widget.text() + "\n" + widget.informativeText()))
+            if self.screenshot and len(self.seen) == 1:
+                screenshot(self.screenshot, whole_screen=True)
+            widget.reject()
+            self.timer.start()
+
+    def __enter__(self):
+        self.seen = []
+        self.timer.start()
+        return self
+
+    def __exit__(self, *exc):
+        self.timer.stop()
+
+
+_previous_workbench = None
+
+
+def setUpModule():
+    global _previous_workbench
+    _previous_workbench = FreeCADGui.activeWorkbench().name()
+    if os.environ.get("AUTOBLOCK_TEST_TMP"):
+        # Under run_freecad_tests.sh (a throw-away FreeCAD): a large, clean window for the screenshots. Run
+        # from a user's own FreeCAD (Test workbench), the window is left as it is.
+        window = FreeCADGui.getMainWindow()
+        window.showMaximized()
+        pump()
+        dock = window.findChild(QtWidgets.QDockWidget, "Combo View")
+        if dock is not None:
+            window.resizeDocks([dock], [400], QtCore.Qt.Horizontal)
+        hide_docks()
+        area = window.findChild(QtWidgets.QMdiArea)
+        if area is not None:
+            for sub in area.subWindowList():
+                if sub.windowTitle().startswith("Start page"):
+                    sub.close()
+    FreeCADGui.activateWorkbench("AutoBlockWorkbench")
+    pump()
+
+
+def tearDownModule():
+    if _previous_workbench and _previous_workbench != "AutoBlockWorkbench":
+        FreeCADGui.activateWorkbench(_previous_workbench)
+
+
+class GuiTestCase(unittest.TestCase):
+    def setUp(self):
+        self.doc = support.new_document(self.__class__.__name__)
+        FreeCADGui.setActiveDocument(self.doc.Name)
+        pump()
+
+    def tearDown(self):
+        if FreeCADGui.Control.activeDialog():
+            FreeCADGui.Control.closeDialog()
+        pump()
+        support.close_document(self.doc)
+        pump()
+
+    def add_sample(self):
+        source = support.add_face(self.doc, support.read_face())
+        pump()
+        return source
+
+    def auto_block(self, *selection):
+        FreeCADGui.Selection.clearSelection()
+        for item in selection:
+            if isinstance(item, tuple):
+                FreeCADGui.Selection.addSelection(item[0], item[1])
+            else:
+                FreeCADGui.Selection.addSelection(item)
+        FreeCADGui.runCommand("AutoBlock_AutoBlock")
+        pump()
+        return [o for o in self.doc.Objects if AutoBlock.is_autoblock(o)]
+
+
+class TestWorkbench(GuiTestCase):
+    def test_the_workbench_is_active_with_its_commands(self):
+        self.assertIn("AutoBlockWorkbench", FreeCADGui.listWorkbenches())
+        self.assertEqual(FreeCADGui.activeWorkbench().name(), "AutoBlockWorkbench")
+        commands = FreeCADGui.listCommands()
+        for name in ("AutoBlock_AutoBlock", "AutoBlock_StepThrough", "AutoBlock_WriteBack", "AutoBlock_Train",
+                     "AutoBlock_Preferences"):
+            self.assertIn(name, commands)
+        toolbar = FreeCADGui.getMainWindow().findChild(QtWidgets.QToolBar, "AutoBlock")
+        self.assertIsNotNone(toolbar)
+        self.assertTrue(toolbar.isVisible())
+
+    def test_the_preferences_page_stores_choices_by_name(self):
+        from AutoBlock import preferences
+        from AutoBlock.preferences_page import AutoBlockPreferencesPage
+
+        params = preferences.params()
+        saved = (params.GetString(preferences.DEFAULT_POLICY, ""), params.GetInt(preferences.THREADS, 0),
+                 params.GetFloat(preferences.MESH_SIZE, 0.0))
+        try:
+            page = AutoBlockPreferencesPage()
+            self.assertEqual([page.form.defaultPolicy.itemText(i) for i in range(page.form.defaultPolicy.count())],
+                             AutoBlock.policy_names())
+            page.loadSettings()
+            page.form.defaultPolicy.setCurrentText("greedy")
+            page.form.threads.setValue(3)
+            page.form.meshSize.setValue(0.5)
+            page.saveSettings()
+            self.assertEqual(params.GetString(preferences.DEFAULT_POLICY, ""), "greedy")
+            self.assertEqual(params.GetInt(preferences.THREADS, 0), 3)
+            self.assertEqual(preferences.default_policy(), "greedy")
+            source = self.add_sample()
+            obj = AutoBlock.make_autoblock(source)
+            self.assertEqual(obj.Policy, "greedy")
+            self.assertAlmostEqual(float(obj.MeshSize), 0.5)
+        finally:
+            params.SetString(preferences.DEFAULT_POLICY, saved[0])
+            params.SetInt(preferences.THREADS, saved[1])
+            params.SetFloat(preferences.MESH_SIZE, saved[2])
+
+
+class TestAutoBlockCommand(GuiTestCase):
+    def test_auto_block_on_a_sample(self):
+        source = self.add_sample()
+        undo_count = self.doc.UndoCount
+        objects = self.auto_block(source)
+        self.assertEqual(len(objects), 1)
+        obj = objects[0]
+        expected = AutoBlock.decompose(source)
+        self.assertEqual(obj.NumberOfBlocks, expected.n_blocks)
+        self.assertEqual(self.doc.UndoCount, undo_count + 1)
+        self.assertEqual(self.doc.UndoNames[0], "Auto-Block")
+        self.assertFalse(source.ViewObject.Visibility)
+        colours = list(obj.ViewObject.DiffuseColor)
+        self.assertEqual(len(colours), len(obj.Shape.Faces))
+        self.assertEqual(len(set(tuple(round(c, 3) for c in colour[:3]) for colour in colours)), len(colours))
+        FreeCADGui.Selection.clearSelection()
+        top_view()
+        screenshot("autoblock")
+        self.doc.undo()
+        pump()
+        self.assertEqual([o for o in self.doc.Objects if AutoBlock.is_autoblock(o)], [])
+
+    def test_auto_block_on_two_faces_of_a_solid_is_one_transaction(self):
+        solid = support.l_face(width=6, height=5, notch=3).extrude(FreeCAD.Vector(0, 0, 2))
+        holder = support.add_face(self.doc, solid, "Solid")
+        flat = [i for i, f in enumerate(solid.Faces, 1) if f.BoundBox.ZLength < 1e-9]
+        self.assertEqual(len(flat), 2)
+        undo_count = self.doc.UndoCount
+        objects = self.auto_block(*[(holder, "Face{}".format(i)) for i in flat])
+        self.assertEqual(len(objects), 2)
+        self.assertEqual(self.doc.UndoCount, undo_count + 1)
+        self.assertEqual(sorted(round(o.Shape.BoundBox.ZMin, 6) for o in objects), [0.0, 2.0])
+        self.doc.undo()
+        pump()
+        self.assertEqual([o for o in self.doc.Objects if AutoBlock.is_autoblock(o)], [])
+
+    def test_a_face_inside_a_body(self):
+        body = self.doc.addObject("PartDesign::Body", "Body")
+        sketch = support.add_l_sketch(self.doc)
+        body.addObject(sketch)
+        pad = self.doc.addObject("PartDesign::Pad", "Pad")
+        body.addObject(pad)
+        pad.Profile = sketch
+        pad.Length = 3
+        body.Placement.Base = FreeCAD.Vector(50, 0, 0)
+        self.doc.recompute()
+        top = [i for i, f in enumerate(pad.Shape.Faces, 1) if abs(f.BoundBox.ZMin - 3) < 1e-9
+               and f.BoundBox.ZLength < 1e-9][0]
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(self.doc.Name, body.Name, "Pad.Face{}".format(top))
+        FreeCADGui.runCommand("AutoBlock_AutoBlock")
+        pump()
+        objects = [o for o in self.doc.Objects if AutoBlock.is_autoblock(o)]
+        self.assertEqual(len(objects), 1)
+        self.assertEqual(objects[0].Source[0], body)
+        self.assertEqual(list(objects[0].Source[1]), ["Pad.Face{}".format(top)])
+        self.assertAlmostEqual(objects[0].Shape.BoundBox.XMin, 50.0)
+        self.assertFalse(pad.ViewObject.Visibility)
+
+    def test_an_unsupported_face_gets_a_dialog_and_changes_nothing(self):
+        sphere = self.doc.addObject("Part::Sphere", "Sphere")
+        sphere.Placement.Base = FreeCAD.Vector(-8, 8, 0)
+        good = self.add_sample()
+        self.doc.recompute()
+        names = [o.Name for o in self.doc.Objects]
+        undo_count = self.doc.UndoCount
+        top_view()
+        with DialogCatcher("unsupported-face") as dialogs:
+            self.auto_block(good, sphere)
+            pump(0.5)
+        self.assertEqual(len(dialogs.seen), 1)
+        title, text = dialogs.seen[0]
+        self.assertIn("Auto-Block", title)
+        self.assertIn("not planar", text)
+        self.assertIn("nothing was changed", text)
+        self.assertEqual([o.Name for o in self.doc.Objects], names)
+        self.assertEqual(self.doc.UndoCount, undo_count)
+        self.assertTrue(good.ViewObject.Visibility)
+
+    def test_write_back_command(self):
+        from AutoBlock.commands.write_back import WriteBackCommand
+
+        source = self.add_sample()
+        obj = self.auto_block(source)[0]
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(obj)
+        original = WriteBackCommand.choose_mode
+        WriteBackCommand.choose_mode = staticmethod(lambda obj: "new")
+        try:
+            FreeCADGui.runCommand("AutoBlock_WriteBack")
+            pump()
+        finally:
+            WriteBackCommand.choose_mode = original
+        features = [o for o in self.doc.Objects if o.TypeId == "Part::Feature" and o.Name != source.Name]
+        self.assertEqual(len(features), 1)
+        self.assertEqual(len(features[0].Shape.Faces), obj.NumberOfBlocks)
+        self.assertEqual(self.doc.UndoNames[0], "Write back blocks")
+
+
+class TestStepThroughPanel(GuiTestCase):
+    def scene_nodes(self):
+        graph = FreeCADGui.ActiveDocument.ActiveView.getSceneGraph()
+        return [graph.getChild(i) for i in range(graph.getNumChildren())
+                if graph.getChild(i).getName().getString() == "AutoBlockStepScene"]
+
+    def test_stepping_through_the_cuts_leaves_the_document_as_it_was(self):
+        from AutoBlock.taskpanels import step_through
+
+        source = self.add_sample()
+        obj = self.auto_block(source)[0]
+        top_view()
+        before = ([o.Name for o in self.doc.Objects], self.doc.UndoCount, obj.Shape.exportBrepToString(),
+                  list(obj.ViewObject.DiffuseColor), list(obj.State))
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(obj)
+        FreeCADGui.runCommand("AutoBlock_StepThrough")
+        pump()
+        panel = step_through.current_panel()
+        self.assertIsNotNone(panel)
+        self.assertTrue(FreeCADGui.Control.activeDialog())
+        self.assertEqual(len(self.scene_nodes()), 1)
+        self.assertEqual(obj.ViewObject.SwitchNode.whichChild.getValue(), -1)
+        form = panel.form
+        n = obj.NumberOfCuts
+        self.assertEqual(form.slider.maximum(), n)
+        self.assertEqual(form.positionLabel.text(), "Cut 1 of {}".format(n))
+        form.nextButton.click()
+        pump()
+        self.assertEqual(form.slider.value(), 1)
+        self.assertEqual(form.positionLabel.text(), "Cut 2 of {}".format(n))
+        form.lastButton.click()
+        pump()
+        self.assertEqual(form.positionLabel.text(), "All {} cuts made: complete".format(n))
+        self.assertEqual(form.blocksLabel.text(), "{} blocks".format(obj.NumberOfBlocks))
+        self.assertEqual(form.returnLabel.text(), "{:.3f} (total)".format(obj.Return))
+        form.firstButton.click()
+        pump()
+        self.assertEqual(form.slider.value(), 0)
+        self.assertFalse(form.previousButton.isEnabled())
+        form.slider.setValue(2)
+        pump()
+        view = panel.current
+        self.assertEqual(view.step, 2)
+        cut = AutoBlock.stepper_of(obj).step(2).next
+        self.assertIn("{:+.3f}".format(cut.reward), form.rewardLabel.text())
+        self.assertIn("learned policy", form.scoresLabel.text())
+        FreeCADGui.Selection.clearSelection()
+        screenshot("step-through")
+        # The value-score overlay, fed made-up scores (no learned policy in this build): it draws a disc and
+        # a label per vertex and names the best vertex.
+        import copy
+
+        scored = copy.copy(view)
+        scored.next = copy.copy(view.next)
+        scored.next.scores = [0.1 * i for i in range(len(view.next.vertices))]
+        nodes_before = panel.scene.content.getNumChildren()
+        panel.scene.show(scored, panel.colours)
+        panel.update_labels(scored)
+        self.assertGreater(panel.scene.content.getNumChildren(), nodes_before + len(scored.next.vertices))
+        self.assertIn("highest {:.3f}".format(scored.next.scores[-1]), form.scoresLabel.text())
+        panel.show_step(2)
+        panel.reject()
+        pump()
+        self.assertFalse(FreeCADGui.Control.activeDialog())
+        self.assertIsNone(step_through.current_panel())
+        self.assertEqual(self.scene_nodes(), [])
+        self.assertEqual(obj.ViewObject.SwitchNode.whichChild.getValue(), 0)
+        after = ([o.Name for o in self.doc.Objects], self.doc.UndoCount, obj.Shape.exportBrepToString(),
+                 list(obj.ViewObject.DiffuseColor), list(obj.State))
+        self.assertEqual(after, before)
+        self.assertIsNone(FreeCAD.getActiveTransaction())
+
+    def test_after_saving_and_reopening_a_double_click_opens_the_panel(self):
+        from AutoBlock.taskpanels import step_through
+        from AutoBlock.viewproviders.view_autoblock import ViewProviderAutoBlock
+
+        folder = support.temporary_folder()
+        try:
+            obj = self.auto_block(self.add_sample())[0]
+            name, colours = obj.Name, list(obj.ViewObject.DiffuseColor)
+            path = os.path.join(folder, "gui.FCStd")
+            self.doc.saveAs(path)
+            FreeCAD.closeDocument(self.doc.Name)
+            pump()
+            self.doc = FreeCAD.openDocument(path)
+            pump()
+            obj = self.doc.getObject(name)
+            self.assertIsInstance(obj.ViewObject.Proxy, ViewProviderAutoBlock)
+            self.assertEqual(list(obj.ViewObject.DiffuseColor), colours)
+            self.assertTrue(obj.ViewObject.Proxy.doubleClicked(obj.ViewObject))
+            pump()
+            panel = step_through.current_panel()
+            self.assertIsNotNone(panel)
+            self.assertEqual(panel.form.slider.maximum(), obj.NumberOfCuts)
+            panel.reject()
+            pump()
+            self.assertFalse(FreeCADGui.Control.activeDialog())
+        finally:
+            support.remove_folder(folder)
+
+    def test_an_out_of_date_object_gets_a_message_instead_of_a_panel(self):
+        source = self.add_sample()
+        obj = self.auto_block(source)[0]
+        source.Shape = support.l_face()
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(obj)
+        with DialogCatcher() as dialogs:
+            FreeCADGui.runCommand("AutoBlock_StepThrough")
+            pump(0.5)
+        self.assertFalse(FreeCADGui.Control.activeDialog())
+        self.assertEqual(len(dialogs.seen), 1)
+        self.assertIn("recompute it first", dialogs.seen[0][1])
+        self.assertEqual(self.scene_nodes(), [])
+
+
+class FakeTrainingRun:
+    """A stand-in for the core's training (which this build lacks), to test the panel's wiring: it satisfies
+    the protocol of AutoBlock/training.py, reporting made-up returns."""
+
+    def __new__(cls, request):
+        from AutoBlock import training
+
+        class Run(training.TrainingRun):
+            def work(self, report, cancelled):
+                for episode in range(1, request.episodes + 1):
+                    test = -2.0 + episode * 0.15 if episode % 5 == 0 else None
+                    if not report({"episode": episode, "episodes": request.episodes,
+                                   "train_return": -5.0 + episode * 0.2, "test_return": test}):
+                        with open(request.checkpoint, "w") as f:
+                            f.write("checkpoint")
+                        return {"cancelled": True, "checkpoint": request.checkpoint}
+                    time.sleep(0.005)
+                with open(request.output, "w") as f:
+                    f.write("policy")
+                return {"cancelled": False, "policy_file": request.output}
+
+        return Run(request)
+
+
+class TestTrainPanel(GuiTestCase):
+    def test_without_training_in_the_core_the_panel_says_so(self):
+        if AutoBlock.capabilities()["training"]:
+            self.skipTest("this build can train")
+        from AutoBlock.taskpanels import train
+
+        self.auto_block(self.add_sample())
+        FreeCADGui.Selection.clearSelection()
+        top_view()
+        FreeCADGui.runCommand("AutoBlock_Train")
+        pump()
+        panel = train.current_panel()
+        self.assertIsNotNone(panel)
+        self.assertTrue(panel.form.noteLabel.isVisible())
+        self.assertIn("not in this build", panel.form.noteLabel.text())
+        self.assertFalse(panel.form.startButton.isEnabled())
+        self.assertFalse(panel.form.trainBox.isEnabled())
+        screenshot("train")
+        panel.reject()
+        pump()
+        self.assertFalse(FreeCADGui.Control.activeDialog())
+
+    def test_the_panel_drives_a_training_backend(self):
+        from AutoBlock import preferences
+        from AutoBlock.taskpanels import train
+
+        folder = support.temporary_folder()
+        params = preferences.params()
+        saved = (params.GetString(preferences.DEFAULT_POLICY_FILE, ""), params.GetString(preferences.DEFAULT_POLICY, ""))
+        try:
+            panel = train.show(FakeTrainingRun)
+            pump()
+            form = panel.form
+            self.assertFalse(form.noteLabel.isVisible())
+            self.assertTrue(form.startButton.isEnabled())
+            output = os.path.join(folder, "policy.pt")
+            form.outputEdit.setText(output)
+            form.episodes.setValue(40)
+            form.startButton.click()
+            self.assertTrue(form.cancelButton.isEnabled())
+            self.assertFalse(form.startButton.isEnabled())
+            deadline = time.time() + 20
+            while panel.run is not None and time.time() < deadline:
+                pump(0.1)
+            self.assertIsNone(panel.run)
+            self.assertEqual(form.progressBar.value(), 40)
+            self.assertEqual(len(panel.plot.train), 40)
+            self.assertEqual(len(panel.plot.test), 8)
+            self.assertIn("Done", form.statusLabel.text())
+            self.assertTrue(form.defaultButton.isEnabled())
+            form.defaultButton.click()
+            self.assertEqual(preferences.default_policy(), output)
+            # Cancel, then resume from the checkpoint.
+            form.episodes.setValue(100000)
+            form.startButton.click()
+            pump(0.3)
+            form.cancelButton.click()
+            deadline = time.time() + 20
+            while panel.run is not None and time.time() < deadline:
+                pump(0.1)
+            self.assertIn("Cancelled", form.statusLabel.text())
+            self.assertFalse(form.defaultButton.isEnabled())
+            self.assertTrue(form.resume.isEnabled())
+            form.resume.setChecked(True)
+            self.assertTrue(panel.request().resume)
+            # Bad input is reported in the panel, nothing starts.
+            form.outputEdit.setText("/no/such/folder/policy.pt")
+            form.startButton.click()
+            self.assertIsNone(panel.run)
+            self.assertIn("does not exist", form.statusLabel.text())
+            panel.reject()
+            pump()
+        finally:
+            params.SetString(preferences.DEFAULT_POLICY_FILE, saved[0])
+            params.SetString(preferences.DEFAULT_POLICY, saved[1])
+            support.remove_folder(folder)
