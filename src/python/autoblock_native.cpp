@@ -112,7 +112,7 @@ py::dict decompose_py(const std::string& brep, const std::string& policy, const 
   const Decomposition& d = result.decomposition;
   py::dict out;
   out["policy"] = d.policy;
-  out["reward"] = settings.reward;
+  out["reward"] = reward_preset_name(result.decomposition.reward);
   out["blocks"] = blocks;
   out["shape"] = shape;
   py::list boxes;
@@ -145,7 +145,8 @@ py::dict decompose_py(const std::string& brep, const std::string& policy, const 
 }
 
 py::dict step_py(const std::string& brep, const std::vector<std::tuple<int, double, double, std::string>>& cuts, int step,
-                 int max_steps, const std::string& source) {
+                 int max_steps, const std::string& reward, const std::string& source) {
+  const RewardPreset preset = reward_preset_by_name(reward);
   std::vector<CutSpec> specs;
   for (const auto& [part, x, y, direction] : cuts) specs.push_back(CutSpec{part, Point2{x, y}, direction_of(direction)});
   InputFace face;
@@ -153,7 +154,7 @@ py::dict step_py(const std::string& brep, const std::vector<std::tuple<int, doub
   {
     py::gil_scoped_release release;
     face = face_of(brep, source);
-    s = face_step(face, specs, step, max_steps);
+    s = face_step(face, specs, step, max_steps, preset);
   }
   py::dict out;
   out["step"] = s.step;
@@ -245,7 +246,8 @@ PYBIND11_MODULE(autoblock_native, m) {
         "default); reward: a preset ('' for the default). Returns a dict: blocks (BREP text each), shape (BREP text "
         "of their compound), boxes, cuts, return, n_blocks, min_blocks, status, ...");
   m.def("step", &step_py, py::arg("brep"), py::arg("cuts"), py::arg("step"), py::arg("max_steps") = 0,
-        py::arg("source") = "face",
-        "The episode of a cut sequence [(part, x, y, 'horizontal'|'vertical'), ...] on the face after `step` cuts: "
+        py::arg("reward") = "paper", py::arg("source") = "face",
+        "The episode of a cut sequence [(part, x, y, 'horizontal'|'vertical'), ...] on the face after `step` cuts, "
+        "rewards under the preset `reward` (the decomposition's 'reward'): "
         "pieces (polygons), blocks, return, and the next cut (part, vertices, chosen vertex, line, reward) or None.");
 }

@@ -22,9 +22,11 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
   return result;
 }
 
-EpisodeSnapshot face_step(const InputFace& face, const std::vector<CutSpec>& cuts, int step, int max_steps) {
+EpisodeSnapshot face_step(const InputFace& face, const std::vector<CutSpec>& cuts, int step, int max_steps,
+                          RewardPreset reward) {
   EpisodeOptions options;
   options.max_steps = max_steps;
+  options.reward = reward;
   return episode_snapshot(face.grid, cuts, step, options);
 }
 

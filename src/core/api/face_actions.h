@@ -42,9 +42,10 @@ InputFace check_face(const TopoDS_Face& face, const std::string& source);
 FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSettings& settings);
 
 // Inputs:  face, a checked face; cuts, its decomposition's cut sequence by position; step;
-//          max_steps, as the sequence was made.
+//          max_steps and reward, as the sequence was made (Decomposition::reward).
 // Outputs: the episode at that step (see episode_snapshot.h). Throws InputError when the step is
 //          out of range or the cuts do not belong to the face.
-EpisodeSnapshot face_step(const InputFace& face, const std::vector<CutSpec>& cuts, int step, int max_steps = 0);
+EpisodeSnapshot face_step(const InputFace& face, const std::vector<CutSpec>& cuts, int step, int max_steps = 0,
+                          RewardPreset reward = RewardPreset::Paper);
 
 }  // namespace autoblock

@@ -4,7 +4,8 @@
 
 namespace autoblock {
 
-// Inputs: threads, at least 1.
+// Inputs: threads, at least 1: LibTorch's intra-op threads (OpenBLAS is held at one thread, so
+// that the two pools do not compete).
 void set_compute_threads(int threads);
 
 }  // namespace autoblock

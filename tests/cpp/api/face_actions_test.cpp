@@ -66,7 +66,7 @@ TEST_CASE("face_step replays a decomposition's cuts", "[api]") {
   const InputFace face = l_face();
   const FaceDecomposition result = decompose_input_face(face, DecomposeSettings{});
   const auto cuts = cut_specs(result.decomposition.cuts);
-  const EpisodeSnapshot last = face_step(face, cuts, static_cast<int>(cuts.size()));
+  const EpisodeSnapshot last = face_step(face, cuts, static_cast<int>(cuts.size()), 0, result.decomposition.reward);
   CHECK(last.blocks == static_cast<int>(result.decomposition.blocks.size()));
   CHECK(last.return_so_far == Approx(result.decomposition.total_return));
 }
