@@ -1,19 +1,24 @@
-"""AutoBlock for FreeCAD: cut planar rectilinear faces into rectangular blocks.
+"""AutoBlock for FreeCAD: cut planar rectilinear faces into rectangular blocks and mesh them with quads.
 
 Console API (freecadcmd or FreeCAD's Python console):
 
     import AutoBlock
     result = AutoBlock.decompose(face_or_object, policy=None)   # or (object, "Face3")
     result.blocks       # list of Part.Face
-    result.shape        # their compound: the partitioned face
+    result.shape        # the partitioned face (blocks sharing edges)
     result.cuts         # list of AutoBlock.Cut
-    result.ret          # return (sum of the cuts' rewards, Eq. (1))
+    result.ret          # return (sum of the cuts' rewards)
     result.n_blocks
-    obj = AutoBlock.make_autoblock(source_object, "Face3")     # the parametric object (Auto-Block button)
+    AutoBlock.mesh(result, size=0.5)                            # a MeshResult: nodes, quads, quality, export()
+    obj = AutoBlock.make_autoblock(source_object, "Face3")     # the parametric object and its FEM mesh
+    AutoBlock.mesh(obj)                                         # its FEM mesh object
+    AutoBlock.export_mesh(obj, "face.msh")                      # or .vtu, .inp
     AutoBlock.write_back(obj, mode="new")                       # or "replace"
-    AutoBlock.stepper_of(obj).step(2)                           # the decomposition after 2 cuts
-    AutoBlock.policy_names(), AutoBlock.reward_presets(), AutoBlock.capabilities()
-    AutoBlock.mesh(obj), AutoBlock.train(request)               # once the core offers them
+    AutoBlock.stepper_of(obj).step(2)                           # the decomposition after 2 cuts, with scores
+    AutoBlock.train(AutoBlock.TrainingRequest("p.pt", train_folder=..., test_folder=...))
+    AutoBlock.start_training(request)                           # the same in the background: a TrainingRun
+    AutoBlock.policy_names(), AutoBlock.default_policy(), AutoBlock.policy_info("sac-mesh"),
+    AutoBlock.reward_presets(), AutoBlock.capabilities()
 
 Importing this package is cheap: the names above load their modules (and the native module) on
 first use.
@@ -28,7 +33,12 @@ _LAZY = {
     "reward_presets": ("console", "reward_presets"),
     "capabilities": ("console", "capabilities"),
     "mesh": ("console", "mesh"),
+    "export_mesh": ("console", "export_mesh"),
+    "MeshResult": ("console", "MeshResult"),
+    "default_policy": ("console", "default_policy"),
+    "policy_info": ("console", "policy_info"),
     "train": ("console", "train"),
+    "start_training": ("training", "start"),
     "Cut": ("console", "Cut"),
     "DecompositionResult": ("console", "DecompositionResult"),
     "Stepper": ("stepping", "Stepper"),

@@ -1,8 +1,10 @@
-"""The console API: decompose faces from freecadcmd or FreeCAD's Python console.
+"""The console API: decompose and mesh faces from freecadcmd or FreeCAD's Python console.
 
     import AutoBlock
     result = AutoBlock.decompose(face_or_object)            # or (object, "Face3")
     result.blocks, result.shape, result.cuts, result.ret, result.n_blocks
+    mesh = AutoBlock.mesh(result)                           # or a face, or an AutoBlock object
+    mesh.nodes, mesh.quads, mesh.quality, mesh.export("face.msh")
 
 Everything here is a thin layer over the native module: it picks the face, carries it into its own
 frame (faces.py), passes it as BREP text, and turns the answer into FreeCAD shapes and vectors.
@@ -43,11 +45,12 @@ class Cut:
 class DecompositionResult:
     """The result of AutoBlock.decompose.
 
-    blocks: list of Part.Face, in the order the episode set them aside; shape: their compound (the
-    partitioned face); cuts: list of Cut; ret: the return (sum of the cuts' rewards); n_blocks;
-    min_blocks: the minimum number of rectangles of any partition (a lower bound); status: "complete"
-    or "truncated"; complete, truncated, time_capped; policy; reward (the preset); seconds; face: the
-    input face; frame: the placement of the face's own frame; label: the input's name.
+    blocks: list of Part.Face, in the order the episode set them aside; shape: the partitioned face (the
+    blocks merged conformally: neighbours share their edges and vertices); cuts: list of Cut; ret: the return
+    (sum of the cuts' rewards); n_blocks; min_blocks: the minimum number of rectangles of any partition (a
+    lower bound); status: "complete" or "truncated"; complete, truncated, time_capped; policy; reward (the
+    preset the cuts were scored with); seconds; face: the input face; frame: the placement of the face's own
+    frame; label: the input's name.
     """
 
     def __init__(self, data, face, local_face, frame, label):
@@ -77,9 +80,9 @@ class DecompositionResult:
         ]
 
     def summary(self):
-        """'6 blocks (minimum 5), 5 cuts, return 30.593, complete'"""
-        return "{} blocks (minimum {}), {} cuts, return {:.3f}, {}{}".format(
-            self.n_blocks, self.min_blocks, len(self.cuts), self.ret, self.status,
+        """'6 blocks (minimum 5), 5 cuts, return 30.593 (paper reward), complete'"""
+        return "{} blocks (minimum {}), {} cuts, return {:.3f} ({} reward), {}{}".format(
+            self.n_blocks, self.min_blocks, len(self.cuts), self.ret, self.reward, self.status,
             " (search time limit hit)" if self.time_capped else "")
 
     def __repr__(self):
@@ -105,9 +108,10 @@ class DecompositionResult:
     def cut_sequence(self):
         """The cut sequence as stored in an AutoBlock object (JSON text, the face's frame)."""
         return json.dumps({
-            "version": 1,
+            "version": 2,
             "face": self._fingerprint,
             "max_steps": self.max_steps,
+            "reward": self.reward,
             "cuts": [[c.part, c.local[0], c.local[1], c.direction, c.reward, c.n_parts] for c in self.cuts],
         })
 
@@ -116,12 +120,17 @@ class DecompositionResult:
         from .stepping import Stepper
 
         return Stepper(self._local_brep, self.frame, _specs(self.cut_sequence()), self.max_steps, self.label,
-                       self.policy)
+                       self.policy, self.reward)
 
 
 def _specs(cut_sequence):
     data = json.loads(cut_sequence)
     return [(int(c[0]), float(c[1]), float(c[2]), str(c[3])) for c in data["cuts"]]
+
+
+def sequence_reward(data):
+    """The reward preset a stored cut sequence (parsed JSON) was scored with: version 1 had only the paper's."""
+    return str(data.get("reward") or "paper")
 
 
 def _shape_from_brep(text):
@@ -183,8 +192,10 @@ def decompose(face_or_object, policy=None, reward=None, seed=0, time_limit=30.0,
 
     face_or_object: a Part.Face, a shape holding one face (or closed wires, as a sketch), a document
         object, or (object, "FaceN").
-    policy: a name of AutoBlock.policy_names() or a policy file; None: the preferred default.
-    reward: a reward preset (AutoBlock.reward_presets()); None: the preferred one.
+    policy: a name of AutoBlock.policy_names() or a policy file; None: the preferred default (sac-mesh unless
+        the preferences say otherwise).
+    reward: a reward preset (AutoBlock.reward_presets()) to score the cuts with; "": the policy's own (a
+        trained policy's, "paper" for the baselines); None: the preferred one ("" unless set).
     seed: for the random policies; time_limit: seconds of exact search for "optimal";
     max_steps: step cap (0: 10 x corners + 10).
     Returns a DecompositionResult. Raises ValueError for an unsupported face or a bad option.
@@ -193,20 +204,31 @@ def decompose(face_or_object, policy=None, reward=None, seed=0, time_limit=30.0,
     module = native.load()
     try:
         data = module.decompose(local.exportBrepToString(), policy or preferences.default_policy(),
-                                reward or preferences.reward_preset(), int(seed), float(time_limit), int(max_steps),
-                                label)
+                                preferences.reward_preset() if reward is None else reward, int(seed),
+                                float(time_limit), int(max_steps), label)
     except ValueError as error:
         raise _in_frame_note(frame, error) from None
     return DecompositionResult(data, face, local, frame, label)
 
 
 def policy_names():
-    """The shipped policy names (from the core)."""
+    """The policy names (from the core): the shipped trained policies, then the baselines."""
     return list(native.load().policy_names())
 
 
+def default_policy():
+    """The policy used when none is given: the preferences' choice, else the core's default (sac-mesh)."""
+    return preferences.default_policy()
+
+
+def policy_info(policy=None):
+    """What a policy is (from the core): {"name", "learned" (a trained policy, with a value network), "reward"
+    (the preset it aims at)}. policy: a name or a policy file; None: the default. ValueError when unknown."""
+    return dict(native.load().policy_info(policy or preferences.default_policy()))
+
+
 def reward_presets():
-    """The reward presets (from the core)."""
+    """The reward presets (from the core); "" (not listed) means each policy's own."""
     return list(native.load().reward_presets())
 
 
@@ -215,39 +237,136 @@ def capabilities():
     return native.capabilities()
 
 
-def mesh(target, size=None):
-    """Mesh an AutoBlock object's blocks with quads into a Fem::FemMeshObject (returned); size: target quad size
-    (None: the object's MeshSize; 0: automatic).
+def _placement_numbers(frame):
+    """A placement as 12 numbers for the core's mesh files: the row-major rotation, then the translation."""
+    m = frame.toMatrix()
+    return [m.A11, m.A12, m.A13, m.A21, m.A22, m.A23, m.A31, m.A32, m.A33, m.A14, m.A24, m.A34]
 
-    Needs the core's quad mesher (the meshing issue); this build has none, so this raises NotImplementedError
-    saying so. objects/fem_mesh.py already turns nodes and quads into the FEM object (tested).
+
+class MeshResult:
+    """A quad mesh of a decomposition (AutoBlock.mesh of a face or a result).
+
+    nodes: list of FreeCAD.Vector (global coordinates); quads: list of (a, b, c, d), 0-based node indices,
+    counter-clockwise seen from +Z of the face's own frame; quad_block: the block (0-based, in the order set aside) of every
+    quad; n_blocks; target_size: the element size aimed at; quality: dict (min_scaled_jacobian,
+    mean_scaled_jacobian, max_aspect_ratio, max_skew, min_angle, max_angle, irregular_interior_vertices);
+    conformal (the core's independent check); decomposition: the DecompositionResult meshed.
     """
-    if not native.has("meshing"):
-        raise NotImplementedError(
-            "meshing is not in this build of AutoBlock: the core has no quad mesher yet "
-            "(AutoBlock.capabilities()['meshing'] is False)")
-    from .objects.autoblock_feature import is_autoblock, stepper_of
-    from .objects.fem_mesh import make_fem_mesh_object
-    from .transactions import transaction
 
-    if not is_autoblock(target):
-        raise ValueError("AutoBlock.mesh needs an AutoBlock object")
-    stepper = stepper_of(target)
-    mesh_size = float(target.MeshSize if size is None else size)
-    # The meshing issue's binding: the face (its frame) and the cut sequence in, nodes (face frame) and
-    # 4-node quads (0-based) out.
-    data = native.load().mesh(stepper.local_brep, stepper.cuts, mesh_size, stepper.max_steps, stepper.label)
-    nodes = [faces.point_out_of_frame(x, y, z, stepper.frame) for x, y, z in data["nodes"]]
-    with transaction("AutoBlock mesh"):
-        return make_fem_mesh_object(target.Document, [(p.x, p.y, p.z) for p in nodes], data["quads"],
-                                    name="AutoBlockMesh", label="{} mesh".format(target.Label))
+    def __init__(self, data, stepper, size, decomposition=None):
+        self._stepper = stepper
+        self.size = float(size)
+        self.decomposition = decomposition
+        frame = stepper.frame
+        self.nodes = [faces.point_out_of_frame(x, y, z, frame) for x, y, z in data["nodes"]]
+        self.quads = [tuple(q) for q in data["quads"]]
+        self.quad_block = list(data["quad_block"])
+        self.n_blocks = data["blocks"]
+        self.target_size = data["target_size"]
+        self.max_relative_deviation = data["max_relative_deviation"]
+        self.quality = dict(data["quality"])
+        self.conformal = data["conformal"]
+        self.file = data["file"] or None
+
+    def summary(self):
+        """'5 blocks, 96 nodes, 70 quads, size 0.6 (max deviation 0.0 %), min scaled Jacobian 1, conformal'"""
+        return "{} blocks, {} nodes, {} quads, size {:.4g} (max deviation {:.1f} %), min scaled Jacobian {:.4g}, {}".format(
+            self.n_blocks, len(self.nodes), len(self.quads), self.target_size, 100.0 * self.max_relative_deviation,
+            self.quality["min_scaled_jacobian"], "conformal" if self.conformal else "NOT conformal")
+
+    def __repr__(self):
+        return "<AutoBlock mesh: {}: {}>".format(self._stepper.label, self.summary())
+
+    def fem_mesh(self):
+        """The quads as a Fem.FemMesh (global coordinates)."""
+        from .objects.fem_mesh import fem_mesh
+
+        return fem_mesh([(p.x, p.y, p.z) for p in self.nodes], self.quads)
+
+    def export(self, path):
+        """Write the mesh with the core's exporters: .msh (Gmsh 4.1), .vtu (VTK) or .inp (Abaqus/CalculiX), in
+        global coordinates, one group per block. Returns path. ValueError for another extension."""
+        _mesh_data(self._stepper, self.size, path)
+        return path
+
+
+def _mesh_data(stepper, size, out=""):
+    """The native mesh of a stepper's decomposition (and the file `out`, when given)."""
+    try:
+        return native.load().mesh(stepper.local_brep, stepper.cuts, float(size), stepper.max_steps, stepper.reward,
+                                  str(out or ""), _placement_numbers(stepper.frame), stepper.label)
+    except ValueError as error:
+        raise _in_frame_note(stepper.frame, error) from None
+
+
+def mesh(target, size=None, policy=None, reward=None, seed=0, time_limit=30.0, max_steps=0, sub=None):
+    """Mesh the blocks of a decomposition with quadrilaterals (the core's conformal merge, interval assignment
+    and mapped meshing).
+
+    target:
+      - an AutoBlock object: returns its FEM mesh object (Fem::FemMeshObjectPython, created when it has none,
+        in one undoable transaction); size, when given, becomes the object's MeshSize. The mesh follows the
+        object when it recomputes.
+      - a DecompositionResult: returns a MeshResult of its blocks.
+      - anything AutoBlock.decompose takes: decomposes it (policy, reward, seed, time_limit, max_steps, sub as
+        there) and returns a MeshResult (its .decomposition is the result).
+    size: target element size in model units (None or 0: automatic, 1/20 of the face's longer side; for an
+    AutoBlock object None keeps its MeshSize). Raises ValueError for an incomplete decomposition or an
+    infeasible size.
+    """
+    from .objects.autoblock_feature import is_autoblock
+    from .objects.fem_mesh import is_autoblock_mesh, mesh_object_of
+
+    if is_autoblock(target):
+        return mesh_object_of(target, size=size, create=True)
+    if is_autoblock_mesh(target):
+        return target
+    result = target if isinstance(target, DecompositionResult) else decompose(
+        target, policy=policy, reward=reward, seed=seed, time_limit=time_limit, max_steps=max_steps, sub=sub)
+    stepper = result.stepper()
+    size = float(size or 0.0)
+    return MeshResult(_mesh_data(stepper, size), stepper, size, result)
+
+
+def export_mesh(target, path, size=None):
+    """Write the quad mesh of `target` (an AutoBlock object, its FEM mesh object, a DecompositionResult or a
+    MeshResult) to `path`: .msh (Gmsh 4.1), .vtu (VTK) or .inp (Abaqus/CalculiX), through the core's exporters,
+    in global coordinates. size: as for mesh() (None: the object's MeshSize, or automatic). Returns the
+    MeshResult. ValueError for another extension or a missing folder."""
+    import os
+
+    from .objects.autoblock_feature import is_autoblock, stepper_of
+    from .objects.fem_mesh import is_autoblock_mesh
+
+    folder = os.path.dirname(os.path.abspath(str(path)))
+    if not os.path.isdir(folder):
+        raise ValueError("{}: the folder {} does not exist".format(path, folder))
+    if isinstance(target, MeshResult):
+        target.export(path)
+        return target
+    if is_autoblock_mesh(target):
+        target = target.AutoBlock
+        if target is None:
+            raise ValueError("the mesh object is not linked to an AutoBlock object")
+    if is_autoblock(target):
+        stepper = stepper_of(target)
+        size = float(target.MeshSize if size is None else size)
+        result = MeshResult(_mesh_data(stepper, size, path), stepper, size)
+        result.file = str(path)
+        return result
+    if isinstance(target, DecompositionResult):
+        result = mesh(target, size)
+        result.export(path)
+        result.file = str(path)
+        return result
+    raise TypeError("export_mesh needs an AutoBlock object, its mesh object, a decomposition or a mesh result, "
+                    "got {}".format(type(target).__name__))
 
 
 def train(request, progress=None):
-    """Train a policy (blocking). request: a training.TrainingRequest. See training.py.
-
-    Raises NotImplementedError when the core cannot train (this build).
-    """
+    """Train a policy (blocking). request: an AutoBlock.TrainingRequest; progress(event): called for every
+    training.Progress event; returning False cancels (a checkpoint stays for request.resume). Returns the result
+    dict (policy_file, checkpoint, log, curves, cancelled, ...). See training.py."""
     from . import training
 
     return training.train(request, progress)

@@ -32,6 +32,8 @@ def default_policy():
 
 
 def reward_preset():
+    """The preferred reward preset: "paper", "mesh", or "" (the core's default: each policy's own, so sac-mesh
+    scores its cuts with the mesh preset and sac-paper and the baselines with the paper's Eq. (1))."""
     name = params().GetString(REWARD_PRESET, "")
     if name:
         return name
@@ -46,8 +48,16 @@ def mesh_size():
 
 
 def threads():
-    """Threads for training and learned policies; 0 means all cores."""
+    """Threads for training (as stored: 0 means all cores). Decompositions with a learned policy use one
+    thread, as the core decided (small networks run fastest that way)."""
     return params().GetInt(THREADS, 0)
+
+
+def training_threads():
+    """The number of threads training uses (threads(), with 0 resolved to the number of cores)."""
+    import os
+
+    return threads() or (os.cpu_count() or 1)
 
 
 def set_default_policy(spec):

@@ -8,6 +8,8 @@ The native module replays the cut sequence on the face (microseconds per cut) an
 they become faces here, in global coordinates.
 """
 
+import math
+
 import FreeCAD
 
 from . import faces, native
@@ -31,8 +33,8 @@ class Piece:
 class NextCut:
     """The cut chosen at a step: part (id), vertices (the part's model vertices, global), chosen (index),
     vertex (global), direction, line (list of (start, end) global points where it crosses the part),
-    reward, n_parts, scores (per-vertex value scores of a learned policy, or None) and scores_note
-    (why there are none)."""
+    reward, n_parts, scores (per-vertex value-network scores of a learned policy, the better of the cuts
+    through each vertex; None for a baseline) and scores_note (why there are none)."""
 
     __slots__ = ("part", "vertices", "chosen", "vertex", "direction", "line", "reward", "n_parts", "scores",
                  "scores_note", "local_vertices")
@@ -54,15 +56,17 @@ class StepView:
 
 class Stepper:
     """Steps through one decomposition. local_brep: the face in its frame (BREP text); frame; cuts:
-    [(part, x, y, direction)] in that frame; max_steps as decomposed; label; policy (its spec)."""
+    [(part, x, y, direction)] in that frame; max_steps as decomposed; label; policy (its spec); reward: the
+    preset the cuts were scored with (the decomposition's)."""
 
-    def __init__(self, local_brep, frame, cuts, max_steps, label, policy):
+    def __init__(self, local_brep, frame, cuts, max_steps, label, policy, reward="paper"):
         self.local_brep = local_brep
         self.frame = frame
         self.cuts = list(cuts)
         self.max_steps = max_steps
         self.label = label
         self.policy = policy
+        self.reward = reward or "paper"
         self._cache = {}
 
     @property
@@ -75,7 +79,7 @@ class Stepper:
         if k in self._cache:
             return self._cache[k]
         module = native.load()
-        data = module.step(self.local_brep, self.cuts, int(k), self.max_steps, self.label)
+        data = module.step(self.local_brep, self.cuts, int(k), self.max_steps, self.reward, self.label)
         z = data["z"]
         pieces = []
         block_index = 0
@@ -107,14 +111,14 @@ class Stepper:
         return view
 
     def _scores(self, module, k):
-        """Per-vertex value scores at step k, or (None, why not)."""
+        """Per-vertex value scores at step k (a vertex no cut can use scores None), or (None, why not)."""
         if not native.has("vertex_scores"):
             return None, "value scores need a learned policy, which this build does not have"
         try:
-            # The learning issue's binding: one score per vertex of the next cut's part, in the order of
-            # step()["next"]["vertices"]; ValueError when the policy has no value network.
+            # One score per vertex of the next cut's part, in the order of step()["next"]["vertices"];
+            # ValueError when the policy has no value network (a baseline) or its file is gone.
             scores = module.vertex_scores(self.local_brep, self.cuts, int(k), self.policy, self.max_steps,
-                                          self.label)
+                                          self.reward, self.label)
         except ValueError as error:
             return None, str(error)
-        return list(scores), ""
+        return [s if math.isfinite(s) else None for s in scores], ""

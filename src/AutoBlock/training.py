@@ -1,31 +1,35 @@
 """Training a policy: the request, the progress protocol, and the backend that runs it.
 
 The Train panel (taskpanels/train.py) and AutoBlock.train() work against this small protocol; the core's
-training binding satisfies it once it lands. Until then training_backend() returns None and both say
-plainly that this build cannot train.
+trainer (core/api/training_job.h, through the native module) satisfies it.
 
 The protocol
 ------------
 A backend is a callable taking a TrainingRequest and returning a TrainingRun:
 
     run = backend(request)
-    run.start()                 # returns at once; training goes on in the background
+    run.start()                 # returns at once; training goes on in a background thread
     run.poll()                  # -> list of Progress events since the last poll (never blocks)
-    run.cancel()                # asks it to stop; a checkpoint stays behind for resuming
+    run.cancel()                # asks it to stop after the current episode; a checkpoint stays for resuming
     run.done                    # True once finished, cancelled or failed
     run.result                  # dict once finished: {"policy_file", "checkpoint", "cancelled", ...}
     run.error                   # message when it failed, else None
 
-NativeTrainingRun implements it over the native module's training call, which the learning issue adds:
+NativeTrainingRun implements it over the native module's training call:
 
     autoblock_native.train(options: dict, progress: Callable[[dict], bool]) -> dict
 
-options is TrainingRequest.to_options(); progress is called (with the GIL) after every episode with
-{"episode", "episodes", "train_return"[, "test_return"][, "message"]} and returns False to cancel;
-the result is {"policy_file", "checkpoint", "cancelled"}. It releases the GIL while it works, so
-FreeCAD stays responsive. The capability flag autoblock_native.capabilities()["training"] says it exists.
+options is TrainingRequest.to_options(). The call releases the GIL while the core trains, so FreeCAD stays
+responsive; after every episode it takes the GIL and calls progress with {"episode", "episodes", "return",
+"blocks", "steps", "complete", "shape", "seconds", "test_return" (None when not evaluated), "earlier" (an
+episode of a resumed run's history)}; progress returns False to stop. The result is {"policy_file" (None
+when cancelled), "checkpoint", "log", "curves", "cancelled", "episodes_done", "episodes", "reward",
+"final_test_return"}. The Progress events add the training return averaged over the last 10 episodes, as
+the paper's curves show it.
 """
 
+import atexit
+import collections
 import os
 import queue
 import threading
@@ -34,12 +38,14 @@ from . import native
 
 
 class TrainingRequest:
-    """What to train. Data: a folder of .brep/.step faces, or generator settings (count, min/max rectangles,
-    holes, seed) for training and for testing. episodes, seed, reward (preset), output (the policy file),
-    resume (continue from the output's checkpoint), threads (0: all cores)."""
+    """What to train. Data: a folder of .brep/.step faces, or generator settings (dict: count, min_rects,
+    max_rects, holes, seed) for training and for testing. episodes (the total, counting those before a
+    resume), seed, reward (preset: "paper" or "mesh"), output (the policy file; its checkpoint, CSV log and
+    curves go next to it), resume (continue from the output's checkpoint), threads (0: all cores),
+    eval_every (episodes between test evaluations and checkpoints), agent ("lookahead" or "paper")."""
 
     def __init__(self, output, train_folder=None, train_generate=None, test_folder=None, test_generate=None,
-                 episodes=10000, seed=0, reward="paper", resume=False, threads=0):
+                 episodes=1500, seed=0, reward="paper", resume=False, threads=0, eval_every=25, agent="lookahead"):
         self.output = output
         self.train_folder = train_folder
         self.train_generate = train_generate
@@ -50,6 +56,24 @@ class TrainingRequest:
         self.reward = reward
         self.resume = bool(resume)
         self.threads = int(threads)
+        self.eval_every = int(eval_every)
+        self.agent = agent
+
+    def __repr__(self):
+        fields = ["{!r}".format(self.output)]
+        for name in ("train_folder", "train_generate", "test_folder", "test_generate"):
+            if getattr(self, name):
+                fields.append("{}={!r}".format(name, getattr(self, name)))
+        fields += ["episodes={}".format(self.episodes), "seed={}".format(self.seed), "reward={!r}".format(self.reward)]
+        if self.resume:
+            fields.append("resume=True")
+        if self.threads:
+            fields.append("threads={}".format(self.threads))
+        if self.eval_every != 25:
+            fields.append("eval_every={}".format(self.eval_every))
+        if self.agent != "lookahead":
+            fields.append("agent={!r}".format(self.agent))
+        return "AutoBlock.TrainingRequest({})".format(", ".join(fields))
 
     @property
     def checkpoint(self):
@@ -76,10 +100,14 @@ class TrainingRequest:
                     problems.append("{} data: generate at least one shape".format(name))
                 if int(generate.get("min_rects", 2)) > int(generate.get("max_rects", 10)):
                     problems.append("{} data: minimum rectangles above the maximum".format(name))
-            elif name == "training":
-                problems.append("no training data: choose a folder or generate shapes")
+            else:
+                problems.append("no {} data: choose a folder or generate shapes".format(name))
         if self.episodes < 1:
             problems.append("episodes must be at least 1")
+        if self.eval_every < 1:
+            problems.append("evaluate at least every episode (eval_every >= 1)")
+        if self.reward not in ("paper", "mesh") and not self.resume:
+            problems.append("unknown reward preset {!r} (expected paper or mesh)".format(self.reward))
         if self.resume and not os.path.exists(self.checkpoint):
             problems.append("nothing to resume: {} does not exist".format(self.checkpoint))
         if problems:
@@ -91,27 +119,41 @@ class TrainingRequest:
             "output": self.output, "checkpoint": self.checkpoint, "resume": self.resume,
             "train_folder": self.train_folder or "", "train_generate": dict(self.train_generate or {}),
             "test_folder": self.test_folder or "", "test_generate": dict(self.test_generate or {}),
-            "episodes": self.episodes, "seed": self.seed, "reward": self.reward, "threads": self.threads,
+            "episodes": self.episodes, "seed": self.seed, "reward": self.reward,
+            "threads": self.threads or (os.cpu_count() or 1), "eval_every": self.eval_every, "agent": self.agent,
         }
 
 
 class Progress:
-    """One progress event: episode of episodes, train_return and test_return (None when not measured),
-    message."""
+    """One progress event: episode of episodes; episode_return (that episode's return); train_return (the
+    training return averaged over the last 10 episodes); test_return (the mean deterministic return on the test
+    set, None when not evaluated at this episode); earlier (an episode of a resumed run's history); message."""
 
-    __slots__ = ("episode", "episodes", "train_return", "test_return", "message")
+    __slots__ = ("episode", "episodes", "episode_return", "train_return", "test_return", "earlier", "message")
 
-    def __init__(self, episode, episodes, train_return=None, test_return=None, message=""):
+    def __init__(self, episode, episodes, train_return=None, test_return=None, message="", episode_return=None,
+                 earlier=False):
         self.episode = episode
         self.episodes = episodes
+        self.episode_return = episode_return
         self.train_return = train_return
         self.test_return = test_return
+        self.earlier = earlier
         self.message = message
 
     @classmethod
-    def from_dict(cls, data):
-        return cls(int(data.get("episode", 0)), int(data.get("episodes", 0)), data.get("train_return"),
-                   data.get("test_return"), str(data.get("message", "")))
+    def from_dict(cls, data, average=None):
+        return cls(int(data.get("episode", 0)), int(data.get("episodes", 0)),
+                   data.get("train_return", average), data.get("test_return"), str(data.get("message", "")),
+                   data.get("return"), bool(data.get("earlier", False)))
+
+    def __repr__(self):
+        text = "episode {} of {}".format(self.episode, self.episodes)
+        if self.train_return is not None:
+            text += ", training return {:.3f} (10-episode average)".format(self.train_return)
+        if self.test_return is not None:
+            text += ", test return {:.3f}".format(self.test_return)
+        return "<Progress: {}>".format(text)
 
 
 class TrainingRun:
@@ -125,9 +167,11 @@ class TrainingRun:
         self._events = queue.Queue()
         self._cancel = threading.Event()
         self._thread = None
+        self._recent = collections.deque(maxlen=10)
 
     def start(self):
         self._thread = threading.Thread(target=self._run, name="AutoBlock training", daemon=True)
+        _running.add(self)
         self._thread.start()
 
     def _run(self):
@@ -137,10 +181,34 @@ class TrainingRun:
             self.error = "{}: {}".format(type(error).__name__, error)
         finally:
             self.done = True
+            _running.discard(self)
 
     def _report(self, data):
-        self._events.put(Progress.from_dict(data))
+        average = None
+        if data.get("return") is not None:
+            self._recent.append(float(data["return"]))
+            average = sum(self._recent) / len(self._recent)
+        self._events.put(Progress.from_dict(data, average))
         return not self._cancel.is_set()
+
+    def run_here(self, progress=None):
+        """Train in the calling thread (blocking), calling progress(Progress) as each event comes; progress
+        returning False cancels the run at once (after the current episode)."""
+        def report(data):
+            self._report(data)
+            for event in self.poll():
+                if progress is not None and progress(event) is False:
+                    self.cancel()
+            return not self._cancel.is_set()
+
+        _running.add(self)
+        try:
+            self.result = self.work(report, self._cancel.is_set)
+        except Exception as error:
+            self.error = "{}: {}".format(type(error).__name__, error)
+        finally:
+            self.done = True
+            _running.discard(self)
 
     def work(self, report, cancelled):
         """Train; call report(dict) after each episode (it returns False once cancelled). Returns the result."""
@@ -169,6 +237,18 @@ class NativeTrainingRun(TrainingRun):
         return dict(native.load().train(self.request.to_options(), report))
 
 
+# Runs under way: cancelled when FreeCAD quits, so that no training thread outlives the interpreter.
+_running = set()
+
+
+@atexit.register
+def _cancel_running_runs():
+    for run in list(_running):
+        run.cancel()
+    for run in list(_running):
+        run.wait(30)
+
+
 def training_backend():
     """The callable making TrainingRuns, or None when this build cannot train."""
     try:
@@ -183,24 +263,42 @@ NOT_AVAILABLE = ("Training is not in this build of AutoBlock: the core has no le
                  "nothing to train (AutoBlock.capabilities()['training'] is False).")
 
 
-def train(request, progress=None):
-    """Train (blocking) and return the result dict. progress(Progress) is called for every event.
-    Raises NotImplementedError when this build cannot train, ValueError for a bad request, RuntimeError
-    when training fails."""
-    backend = training_backend()
+_last_started = None
+
+
+def start(request, backend=None):
+    """Start training in the background and return the TrainingRun (poll it, cancel it; see the protocol
+    above). backend: None for the core's. Raises NotImplementedError when this build cannot train, ValueError
+    for a bad request."""
+    global _last_started
+    backend = backend or training_backend()
     if backend is None:
         raise NotImplementedError(NOT_AVAILABLE)
     request.validate()
     run = backend(request)
     run.start()
-    while True:
-        done = run.done  # read before draining: a finished run has queued all its events
-        run.wait(0.2)
-        for event in run.poll():
-            if progress:
-                progress(event)
-        if done:
-            break
+    _last_started = run
+    return run
+
+
+def last_started():
+    """The TrainingRun start() made last (the Train panel picks up the run its echoed console call started)."""
+    return _last_started
+
+
+def train(request, progress=None, backend=None):
+    """Train (blocking) and return the result dict. progress(Progress) is called for every event; returning
+    False cancels the run (it stops after the current episode, leaving its checkpoint for request.resume).
+    Raises NotImplementedError when this build cannot train, ValueError for a bad request (or bad data, as the
+    core finds it), RuntimeError when training fails."""
+    backend = backend or training_backend()
+    if backend is None:
+        raise NotImplementedError(NOT_AVAILABLE)
+    request.validate()
+    run = backend(request)
+    run.run_here(progress)
     if run.error:
+        if run.error.startswith("ValueError: "):
+            raise ValueError(run.error[len("ValueError: "):])
         raise RuntimeError(run.error)
     return run.result

@@ -13,16 +13,20 @@
 
 #include <Standard_Failure.hxx>
 
+#include <atomic>
 #include <cstdio>
 #include <string>
 #include <tuple>
 #include <vector>
 
 #include "core/api/face_actions.h"
+#include "core/api/training_job.h"
 #include "core/baselines/min_rectangles.h"
 #include "core/common/error.h"
 #include "core/io/shape_file.h"
 #include "core/io/svg_picture.h"
+#include "core/mesh/mesh_export.h"
+#include "core/sac/compute_threads.h"
 
 namespace py = pybind11;
 using namespace autoblock;
@@ -39,6 +43,15 @@ CutDirection direction_of(const std::string& name) {
   if (name == "horizontal") return CutDirection::Horizontal;
   if (name == "vertical") return CutDirection::Vertical;
   throw InputError("unknown cut direction '" + name + "' (expected horizontal or vertical)");
+}
+
+// A cut sequence as Python passes it: [(part, x, y, 'horizontal'|'vertical'), ...].
+using CutTuples = std::vector<std::tuple<int, double, double, std::string>>;
+
+std::vector<CutSpec> specs_of(const CutTuples& cuts) {
+  std::vector<CutSpec> specs;
+  for (const auto& [part, x, y, direction] : cuts) specs.push_back(CutSpec{part, Point2{x, y}, direction_of(direction)});
+  return specs;
 }
 
 py::tuple xy(const Point2& p) { return py::make_tuple(p.x, p.y); }
@@ -144,11 +157,10 @@ py::dict decompose_py(const std::string& brep, const std::string& policy, const 
   return out;
 }
 
-py::dict step_py(const std::string& brep, const std::vector<std::tuple<int, double, double, std::string>>& cuts, int step,
-                 int max_steps, const std::string& reward, const std::string& source) {
+py::dict step_py(const std::string& brep, const CutTuples& cuts, int step, int max_steps, const std::string& reward,
+                 const std::string& source) {
   const RewardPreset preset = reward_preset_by_name(reward);
-  std::vector<CutSpec> specs;
-  for (const auto& [part, x, y, direction] : cuts) specs.push_back(CutSpec{part, Point2{x, y}, direction_of(direction)});
+  const std::vector<CutSpec> specs = specs_of(cuts);
   InputFace face;
   EpisodeSnapshot s;
   {
@@ -197,6 +209,164 @@ py::dict step_py(const std::string& brep, const std::vector<std::tuple<int, doub
   return out;
 }
 
+py::dict policy_info_py(const std::string& spec) {
+  std::shared_ptr<const PolicySource> source;
+  {
+    py::gil_scoped_release release;
+    source = policy_source(spec, PolicySettings{});
+  }
+  py::dict d;
+  d["name"] = source->name();
+  d["learned"] = source->learned();
+  d["reward"] = reward_preset_name(source->reward());
+  return d;
+}
+
+std::vector<double> vertex_scores_py(const std::string& brep, const CutTuples& cuts, int step, const std::string& policy,
+                                     int max_steps, const std::string& reward, const std::string& source) {
+  const RewardPreset preset = reward_preset_by_name(reward);
+  const std::vector<CutSpec> specs = specs_of(cuts);
+  py::gil_scoped_release release;
+  return face_vertex_scores(face_of(brep, source), specs, step, policy, max_steps, preset);
+}
+
+MeshPlacement placement_of(const std::vector<double>& values) {
+  MeshPlacement placement;
+  if (values.empty()) return placement;
+  if (values.size() != 12) {
+    throw InputError("a mesh placement is 12 numbers (a row-major 3 x 3 rotation, then the translation), got " +
+                     std::to_string(values.size()));
+  }
+  for (size_t k = 0; k < 9; ++k) placement.rotation[k] = values[k];
+  for (size_t k = 0; k < 3; ++k) placement.translation[k] = values[9 + k];
+  return placement;
+}
+
+py::dict mesh_py(const std::string& brep, const CutTuples& cuts, double size, int max_steps, const std::string& reward,
+                 const std::string& out, const std::vector<double>& placement, const std::string& source) {
+  const RewardPreset preset = reward_preset_by_name(reward);
+  const std::vector<CutSpec> specs = specs_of(cuts);
+  const MeshPlacement where = placement_of(placement);
+  if (!out.empty() && !is_mesh_file_name(out)) throw InputError(out + ": expected a .msh, .vtu or .inp file");
+  FaceMesh result;
+  {
+    py::gil_scoped_release release;
+    MeshOptions options;
+    options.size = size;
+    result = face_mesh(face_of(brep, source), specs, max_steps, preset, options);
+    if (!out.empty()) write_mesh_file(out, result.result.mesh, where);
+  }
+  const QuadMesh& mesh = result.result.mesh;
+  const MeshQuality& q = result.result.quality;
+  py::dict d;
+  py::list nodes;
+  for (const Point2& p : mesh.nodes) nodes.append(py::make_tuple(p.x, p.y, mesh.z));
+  d["nodes"] = nodes;
+  py::list quads;
+  for (const auto& quad : mesh.quads) quads.append(py::make_tuple(quad[0], quad[1], quad[2], quad[3]));
+  d["quads"] = quads;
+  d["quad_block"] = mesh.quad_block;
+  d["blocks"] = mesh.blocks;
+  d["target_size"] = result.result.intervals.target_size;
+  d["default_size"] = result.result.default_size;
+  d["max_relative_deviation"] = result.result.intervals.max_relative_deviation;
+  py::dict quality;
+  quality["min_scaled_jacobian"] = q.min_scaled_jacobian;
+  quality["mean_scaled_jacobian"] = q.mean_scaled_jacobian;
+  quality["max_aspect_ratio"] = q.max_aspect_ratio;
+  quality["max_skew"] = q.max_skew;
+  quality["min_angle"] = q.min_angle;
+  quality["max_angle"] = q.max_angle;
+  quality["irregular_interior_vertices"] = q.irregular_interior_nodes;
+  d["quality"] = quality;
+  d["conformal"] = result.result.conformity.conformal;
+  d["file"] = out;
+  return d;
+}
+
+// Training options as TrainingRequest.to_options() gives them (src/AutoBlock/training.py).
+GeneratedSet generated_of(const py::dict& d) {
+  GeneratedSet set;
+  if (d.contains("count")) set.count = d["count"].cast<int>();
+  if (d.contains("seed")) set.seed = d["seed"].cast<std::uint64_t>();
+  if (d.contains("min_rects")) set.options.min_rects = d["min_rects"].cast<int>();
+  if (d.contains("max_rects")) set.options.max_rects = d["max_rects"].cast<int>();
+  if (d.contains("holes")) set.options.holes = d["holes"].cast<bool>();
+  return set;
+}
+
+template <class T>
+T option(const py::dict& options, const char* key, T fallback) {
+  return options.contains(key) && !options[key].is_none() ? options[key].cast<T>() : fallback;
+}
+
+py::dict train_py(const py::dict& options, const py::object& progress) {
+  TrainingJob job;
+  job.output = option<std::string>(options, "output", "");
+  job.checkpoint = option<std::string>(options, "checkpoint", "");
+  job.resume = option<bool>(options, "resume", false);
+  job.train_folder = option<std::string>(options, "train_folder", "");
+  job.test_folder = option<std::string>(options, "test_folder", "");
+  if (options.contains("train_generate")) job.train_generate = generated_of(options["train_generate"].cast<py::dict>());
+  if (options.contains("test_generate")) job.test_generate = generated_of(options["test_generate"].cast<py::dict>());
+  job.episodes = option<int>(options, "episodes", job.episodes);
+  job.seed = option<std::uint64_t>(options, "seed", 0);
+  job.reward = option<std::string>(options, "reward", job.reward);
+  if (job.reward.empty()) job.reward = "paper";
+  job.agent = option<std::string>(options, "agent", job.agent);
+  job.threads = option<int>(options, "threads", 1);
+  job.eval_every = option<int>(options, "eval_every", job.eval_every);
+  job.max_steps = option<int>(options, "max_steps", 0);
+
+  // The callbacks run on this (GIL-free) thread: they take the GIL for Python and never let a Python
+  // exception cross the core; a failed callback stops the run and is reported after it.
+  std::atomic<bool> stop{false};
+  std::string callback_error;
+  TrainingCallbacks callbacks;
+  callbacks.should_stop = [&] { return stop.load(); };
+  if (!progress.is_none()) {
+    callbacks.on_episode = [&](const EpisodeRecord& r, bool earlier) {
+      if (stop) return;
+      py::gil_scoped_acquire acquire;
+      try {
+        py::dict event;
+        event["episode"] = r.episode;
+        event["episodes"] = job.episodes;
+        event["return"] = r.ret;
+        event["blocks"] = r.blocks;
+        event["steps"] = r.steps;
+        event["complete"] = r.complete;
+        event["shape"] = r.shape;
+        event["seconds"] = r.wall_seconds;
+        event["test_return"] = r.evaluated ? py::object(py::float_(r.test_return)) : py::object(py::none());
+        event["earlier"] = earlier;
+        const py::object answer = progress(event);
+        if (!answer.is_none() && !answer.cast<bool>()) stop = true;
+      } catch (py::error_already_set& e) {
+        callback_error = e.what();
+        stop = true;
+      }
+    };
+  }
+  TrainingOutcome outcome;
+  {
+    py::gil_scoped_release release;
+    outcome = run_training_job(job, callbacks);
+  }
+  if (!callback_error.empty()) throw std::runtime_error("training stopped: the progress callback failed: " + callback_error);
+  py::dict d;
+  d["cancelled"] = outcome.cancelled;
+  d["episodes_done"] = outcome.episodes_done;
+  d["episodes"] = outcome.episodes;
+  d["reward"] = outcome.reward;
+  d["policy_file"] = outcome.policy_file.empty() ? py::object(py::none()) : py::object(py::str(outcome.policy_file));
+  d["checkpoint"] = outcome.checkpoint;
+  d["log"] = outcome.log;
+  d["curves"] = outcome.curves;
+  d["final_test_return"] = outcome.final_test_return;
+  return d;
+}
+
 std::vector<std::tuple<double, double, double>> block_colours(int count) {
   std::vector<std::tuple<double, double, double>> colours;
   for (int i = 0; i < count; ++i) {
@@ -228,6 +398,9 @@ PYBIND11_MODULE(autoblock_native, m) {
     }
   });
 
+  // Deployment: one compute thread per decomposition, as the CLI (training sets its own).
+  set_compute_threads(1);
+
   m.def("version", [] { return std::string(AUTOBLOCK_VERSION); }, "The AutoBlock version this module was built from.");
   m.def("capabilities", &capabilities_dict,
         "What this build can do beyond the baselines: {'learned_policies', 'training', 'vertex_scores', 'meshing'}.");
@@ -250,4 +423,26 @@ PYBIND11_MODULE(autoblock_native, m) {
         "The episode of a cut sequence [(part, x, y, 'horizontal'|'vertical'), ...] on the face after `step` cuts, "
         "rewards under the preset `reward` (the decomposition's 'reward'): "
         "pieces (polygons), blocks, return, and the next cut (part, vertices, chosen vertex, line, reward) or None.");
+  m.def("policy_info", &policy_info_py, py::arg("policy") = "",
+        "What a policy is: {'name', 'learned' (a trained policy with a value network), 'reward' (the preset it "
+        "aims at: a trained policy's own)}. policy: a name or a policy file ('' for the default).");
+  m.def("vertex_scores", &vertex_scores_py, py::arg("brep"), py::arg("cuts"), py::arg("step"), py::arg("policy") = "",
+        py::arg("max_steps") = 0, py::arg("reward") = "paper", py::arg("source") = "face",
+        "The policy's value-network score at every vertex of the part cut after `step` cuts, in the order of "
+        "step()['next']['vertices'] (-inf where no candidate cut runs through the vertex). ValueError for a baseline "
+        "policy (no value network) or a step with no cut.");
+  m.def("mesh", &mesh_py, py::arg("brep"), py::arg("cuts"), py::arg("size") = 0.0, py::arg("max_steps") = 0,
+        py::arg("reward") = "paper", py::arg("out") = "", py::arg("placement") = std::vector<double>{},
+        py::arg("source") = "face",
+        "Mesh the decomposition given by its cut sequence with quads (size: target element size, 0 for automatic). "
+        "Returns nodes [(x, y, z)] in the face's frame, quads [(a, b, c, d)] (0-based, counter-clockwise), "
+        "quad_block, blocks, target_size, quality, conformal. out: also write a .msh, .vtu or .inp file, its nodes "
+        "moved by placement (12 numbers: row-major rotation, translation; [] for none).");
+  m.def("train", &train_py, py::arg("options"), py::arg("progress") = py::none(),
+        "Train a policy (blocking, the GIL released). options: {output, checkpoint, resume, train_folder | "
+        "train_generate {count, seed, min_rects, max_rects, holes}, test_folder | test_generate, episodes, seed, "
+        "reward, agent, threads, eval_every, max_steps}. progress(event) is called with the GIL after every "
+        "episode (event: episode, episodes, return, blocks, steps, complete, shape, seconds, test_return or None, "
+        "earlier) and returns False to stop. Returns {cancelled, episodes_done, episodes, reward, policy_file (None "
+        "when cancelled), checkpoint, log, curves, final_test_return}.");
 }

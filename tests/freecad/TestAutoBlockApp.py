@@ -1,7 +1,8 @@
 """App tests of the AutoBlock workbench, headless: freecadcmd -t TestAutoBlockApp (see run_freecad_tests.sh).
 
 Console API, the parametric object (recompute when the source changes, undo, save and reopen),
-write-back, bad faces, stepping, FEM mesh objects, the training protocol.
+write-back, bad faces, stepping with value scores, quad meshes and FEM mesh objects, mesh files, the
+training protocol and a real (tiny) training run.
 """
 
 import json
@@ -43,10 +44,17 @@ class TestNativeModule(unittest.TestCase):
 
         module = native.load()
         self.assertEqual(AutoBlock.policy_names(), list(module.policy_names()))
-        self.assertIn(module.default_policy(), AutoBlock.policy_names())
-        self.assertIn("optimal", AutoBlock.policy_names())
-        self.assertEqual(AutoBlock.reward_presets(), ["paper"])
-        self.assertEqual(set(AutoBlock.capabilities()), {"learned_policies", "training", "vertex_scores", "meshing"})
+        self.assertEqual(AutoBlock.policy_names(), ["sac-mesh", "sac-paper", "optimal", "greedy", "random-split",
+                                                    "random"])
+        self.assertEqual(module.default_policy(), "sac-mesh")
+        self.assertEqual(AutoBlock.default_policy(), "sac-mesh")  # no preference set in the test's user folder
+        self.assertEqual(AutoBlock.reward_presets(), ["paper", "mesh"])
+        self.assertEqual(module.default_reward_preset(), "")
+        self.assertEqual(AutoBlock.capabilities(), {"learned_policies": True, "training": True, "vertex_scores": True,
+                                                    "meshing": True})
+        self.assertEqual(AutoBlock.policy_info(), {"name": "sac-mesh", "learned": True, "reward": "mesh"})
+        self.assertEqual(AutoBlock.policy_info("sac-paper")["reward"], "paper")
+        self.assertEqual(AutoBlock.policy_info("greedy"), {"name": "greedy", "learned": False, "reward": "paper"})
 
     def test_input_errors_are_value_errors(self):
         from AutoBlock import native
@@ -61,6 +69,21 @@ class TestNativeModule(unittest.TestCase):
             module.decompose(brep, reward="nope")
         with self.assertRaisesRegex(ValueError, "does not belong to this face"):
             module.step(brep, [(0, 0.5, 0.25, "vertical")], 1)
+        cuts = [(c["part"], c["vertex"][0], c["vertex"][1], c["direction"])
+                for c in module.decompose(brep, policy="optimal")["cuts"]]
+        with self.assertRaisesRegex(ValueError, "baseline: it has no value network"):
+            module.vertex_scores(brep, cuts, 0, "optimal")
+        with self.assertRaisesRegex(ValueError, "unknown policy '/no/such.pt'"):
+            module.vertex_scores(brep, cuts, 0, "/no/such.pt")
+        with self.assertRaisesRegex(ValueError, "expected a .msh, .vtu or .inp file"):
+            module.mesh(brep, cuts, 0.5, out="/tmp/mesh.stl")
+        with self.assertRaisesRegex(ValueError, "12 numbers"):
+            module.mesh(brep, cuts, 0.5, out="/tmp/mesh.msh", placement=[1.0, 2.0])
+        with self.assertRaisesRegex(ValueError, "ends after"):
+            module.mesh(brep, cuts[:-1], 0.5)
+        with self.assertRaisesRegex(ValueError, "does not exist"):
+            module.train({"output": "/no/such/folder/p.pt", "train_folder": support.SAMPLES,
+                          "test_folder": support.SAMPLES})
 
 
 class TestDecompose(unittest.TestCase):
@@ -78,9 +101,19 @@ class TestDecompose(unittest.TestCase):
     def test_decompose_a_sample_face(self):
         face = support.read_face()
         result = AutoBlock.decompose(face)
-        self.assertEqual(result.policy, "optimal")
+        self.assertEqual(result.policy, "sac-mesh")
+        self.assertEqual(result.reward, "mesh")  # the policy's own preset
         self.assertTrue(result.complete)
         self.check_partition(result, face)
+        # The shape is the conformal merge: neighbouring blocks share their edges, so the edges that belong to one
+        # face only are exactly the face's boundary.
+        faces_of = [len(result.shape.ancestorsOfType(e, Part.Face)) for e in result.shape.Edges]
+        self.assertEqual(set(faces_of), {1, 2})
+        boundary = sum(e.Length for e, n in zip(result.shape.Edges, faces_of) if n == 1)
+        self.assertAlmostEqual(boundary, sum(w.Length for w in face.Wires), places=9)
+        self.assertEqual(AutoBlock.decompose(face, reward="paper").reward, "paper")
+        self.assertEqual(AutoBlock.decompose(face, reward="").reward, "mesh")
+        self.assertEqual(AutoBlock.decompose(face, policy="optimal").reward, "paper")
         self.assertEqual(result.cuts[0].direction in ("horizontal", "vertical"), True)
         self.assertIsInstance(result.cuts[0].vertex, FreeCAD.Vector)
         self.assertIn("blocks (minimum", result.summary())
@@ -230,7 +263,9 @@ class TestDecompose(unittest.TestCase):
     def test_stepping_through_a_result(self):
         face = support.read_face()
         result = AutoBlock.decompose(face)
+        self.assertEqual(result.policy, "sac-mesh")
         stepper = result.stepper()
+        self.assertEqual(stepper.reward, "mesh")
         self.assertEqual(stepper.steps, len(result.cuts))
         running = 0.0
         for k in range(stepper.steps + 1):
@@ -244,13 +279,23 @@ class TestDecompose(unittest.TestCase):
                 self.assertIn(view.next.vertex, view.next.vertices)
                 self.assertAlmostEqual(view.next.reward, cut.reward, places=9)
                 self.assertGreater(len(view.next.line), 0)
-                self.assertIsNone(view.next.scores)
-                self.assertIn("learned policy", view.next.scores_note)
+                # The value network's score at every vertex of the part (None where no cut through it counts);
+                # the deployed policy cuts at a best one.
+                scores = view.next.scores
+                self.assertEqual(len(scores), len(view.next.vertices))
+                known = [x for x in scores if x is not None]
+                self.assertGreater(len(known), 1)
+                self.assertAlmostEqual(scores[view.next.chosen], max(known), places=4)
+                self.assertEqual(view.next.scores_note, "")
                 running += cut.reward
             else:
                 self.assertIsNone(view.next)
                 self.assertEqual(view.blocks, result.n_blocks)
                 self.assertEqual(sorted(p.index for p in view.pieces), list(range(result.n_blocks)))
+        # A baseline has no value network: no scores, and a note that says why.
+        first = AutoBlock.decompose(face, policy="optimal").stepper().step(0).next
+        self.assertIsNone(first.scores)
+        self.assertIn("'optimal' is a baseline", first.scores_note)
 
 
 class TestBatchExample(unittest.TestCase):
@@ -281,6 +326,7 @@ class TestBatchExample(unittest.TestCase):
             self.assertEqual(len(lines), 3)
             self.assertTrue(lines[0].startswith("[1/3] shape_0000.brep: "), lines)
             self.assertIn("blocks (minimum", lines[0])
+            self.assertIn("quads, size", lines[0])
             self.assertIn("sphere.step: skipped: ", lines[2])
             with open(os.path.join(out, "summary.json")) as f:
                 summary = json.load(f)
@@ -288,6 +334,10 @@ class TestBatchExample(unittest.TestCase):
             for entry in summary:
                 blocks = Part.read(os.path.join(out, entry["file"].replace(".brep", "-blocks.brep")))
                 self.assertEqual(len(blocks.Faces), entry["n_blocks"])
+                with open(os.path.join(out, entry["mesh"])) as f:
+                    text = f.read()
+                self.assertTrue(text.startswith("$MeshFormat\n4.1 0 8\n"))
+                self.assertIn("\n{} {} 1 {}\n".format(entry["n_blocks"], entry["quads"], entry["quads"]), text)
         finally:
             support.remove_folder(folder)
 
@@ -306,9 +356,11 @@ class TestAutoBlockObject(unittest.TestCase):
         obj = AutoBlock.make_autoblock(source)
         self.assertTrue(AutoBlock.is_autoblock(obj))
         self.assertEqual(obj.Source[0], source)
-        self.assertEqual(obj.Policy, "optimal")
-        self.assertEqual(obj.RewardPreset, "paper")
+        self.assertEqual(obj.Policy, "sac-mesh")
+        self.assertEqual(obj.RewardPreset, "")  # the policy's own ...
+        self.assertEqual(obj.RewardUsed, "mesh")  # ... which is sac-mesh's mesh preset
         self.assertEqual(obj.getEnumerationsOfProperty("Policy"), AutoBlock.policy_names())
+        self.assertEqual(obj.getEnumerationsOfProperty("RewardPreset"), ["", "paper", "mesh"])
         expected = AutoBlock.decompose(source)
         self.assertEqual(obj.NumberOfBlocks, expected.n_blocks)
         self.assertEqual(len(obj.Shape.Faces), expected.n_blocks)
@@ -354,13 +406,20 @@ class TestAutoBlockObject(unittest.TestCase):
 
     def test_changing_the_policy_recomputes(self):
         source = support.add_face(self.doc, support.read_face(support.HOLES_SAMPLE))
-        obj = AutoBlock.make_autoblock(source)
+        obj = AutoBlock.make_autoblock(source, policy="optimal")
+        self.assertEqual(obj.RewardUsed, "paper")
         optimal = obj.Return
         obj.Policy = "random"
         obj.Seed = 5
         self.doc.recompute()
         self.assertEqual(obj.Status.split(":")[0], "random")
         self.assertLessEqual(obj.Return, optimal + 1e-9)
+        # The optimal search maximises the preset it is given.
+        obj.Policy = "optimal"
+        obj.RewardPreset = "mesh"
+        self.doc.recompute()
+        self.assertEqual(obj.RewardUsed, "mesh")
+        self.assertAlmostEqual(obj.Return, AutoBlock.decompose(source, policy="optimal", reward="mesh").ret, places=9)
 
     def test_undo_and_redo(self):
         source = support.add_face(self.doc, support.read_face())
@@ -388,10 +447,14 @@ class TestAutoBlockObject(unittest.TestCase):
             AutoBlock.make_autoblock(sphere)
         with self.assertRaisesRegex(ValueError, "unknown reward preset"):
             AutoBlock.make_autoblock(source, reward="nope")
-        if not AutoBlock.capabilities()["learned_policies"]:
-            # Fails in the object's recompute, after it was added: it is removed again.
-            with self.assertRaisesRegex(ValueError, "no learned policies"):
-                AutoBlock.make_autoblock(source, policy="/tmp/my-policy.pt")
+        # These fail in the object's recompute, after it was added: it is removed again.
+        with self.assertRaisesRegex(ValueError, "unknown policy '/tmp/no-such-policy.pt'"):
+            AutoBlock.make_autoblock(source, policy="/tmp/no-such-policy.pt")
+        garbage = os.path.join(self.folder, "garbage.pt")
+        with open(garbage, "w") as f:
+            f.write("not a policy")
+        with self.assertRaises(ValueError):
+            AutoBlock.make_autoblock(source, policy=garbage)
         self.assertEqual([o.Name for o in self.doc.Objects], names)
         self.assertEqual(self.doc.UndoCount, undo_count)
         self.assertIsNone(FreeCAD.getActiveTransaction())
@@ -400,7 +463,7 @@ class TestAutoBlockObject(unittest.TestCase):
         try:
             source = support.add_face(plain, support.l_face())
             with self.assertRaises(ValueError):
-                AutoBlock.make_autoblock(source, policy="/tmp/my-policy.pt")
+                AutoBlock.make_autoblock(source, policy="/tmp/no-such-policy.pt")
             self.assertEqual([o.Name for o in plain.Objects], [source.Name])
         finally:
             support.close_document(plain)
@@ -411,14 +474,20 @@ class TestAutoBlockObject(unittest.TestCase):
         sketch = support.add_l_sketch(self.doc, sketch_placement)
         obj = AutoBlock.make_autoblock(source, policy="greedy")
         side = AutoBlock.make_autoblock(sketch)
-        blocks, ret, area = obj.NumberOfBlocks, obj.Return, obj.Shape.Area
+        mesh = AutoBlock.mesh(side)
+        blocks, ret, area, quads = obj.NumberOfBlocks, obj.Return, obj.Shape.Area, mesh.NumberOfQuads
         path = os.path.join(self.folder, "autoblock.FCStd")
         self.doc.saveAs(path)
-        names = (obj.Name, side.Name, source.Name, sketch.Name)
+        names = (obj.Name, side.Name, source.Name, sketch.Name, mesh.Name)
         FreeCAD.closeDocument(self.doc.Name)
         self.doc = FreeCAD.openDocument(path)
-        obj, side, source, sketch = (self.doc.getObject(n) for n in names)
+        obj, side, source, sketch, mesh = (self.doc.getObject(n) for n in names)
         self.assertTrue(AutoBlock.is_autoblock(obj))
+        from AutoBlock.objects.fem_mesh import is_autoblock_mesh
+
+        self.assertTrue(is_autoblock_mesh(mesh))
+        self.assertIs(mesh.AutoBlock, side)
+        self.assertEqual(mesh.FemMesh.QuadrangleCount, quads)
         self.assertEqual(obj.Policy, "greedy")
         self.assertEqual(obj.getEnumerationsOfProperty("Policy"), AutoBlock.policy_names())
         self.assertEqual(obj.NumberOfBlocks, blocks)
@@ -434,6 +503,8 @@ class TestAutoBlockObject(unittest.TestCase):
         self.assertEqual(obj.NumberOfBlocks, 2)
         self.assertAlmostEqual(side.Shape.BoundBox.XMin, 3.0)
         self.assertEqual(AutoBlock.stepper_of(side).step(0).next.n_parts, 2)
+        self.assertEqual(AutoBlock.stepper_of(side).reward, "mesh")
+        self.assertAlmostEqual(mesh.FemMesh.BoundBox.XMin, 3.0)  # the mesh followed its AutoBlock object
         # And saves again.
         self.doc.save()
         self.assertTrue(os.path.getsize(path) > 0)
@@ -505,31 +576,182 @@ class TestFemMesh(unittest.TestCase):
         finally:
             support.close_document(doc)
 
-    def test_meshing_says_plainly_when_the_core_cannot(self):
-        if AutoBlock.capabilities()["meshing"]:
-            self.skipTest("this build can mesh")
-        with self.assertRaisesRegex(NotImplementedError, "no quad mesher"):
-            AutoBlock.mesh(None)
+    def test_auto_block_objects_get_a_fem_mesh_that_follows_them(self):
+        from AutoBlock.objects.fem_mesh import is_autoblock_mesh
+
+        doc = support.new_document("fem")
+        try:
+            source = support.add_face(doc, support.read_face())
+            undo_count = doc.UndoCount
+            obj = AutoBlock.make_autoblock(source, mesh_size=1.0)
+            meshes = [o for o in doc.Objects if is_autoblock_mesh(o)]
+            self.assertEqual(len(meshes), 1)
+            mesh = meshes[0]
+            self.assertEqual(mesh.TypeId, "Fem::FemMeshObjectPython")
+            self.assertIs(mesh.AutoBlock, obj)
+            self.assertIs(AutoBlock.mesh(obj), mesh)  # the object's mesh, not a second one
+            self.assertEqual(doc.UndoCount, undo_count + 1)  # object and mesh: one transaction
+            femmesh = mesh.FemMesh
+            self.assertEqual(femmesh.QuadrangleCount, mesh.NumberOfQuads)
+            self.assertEqual(femmesh.NodeCount, mesh.NumberOfNodes)
+            self.assertGreater(mesh.NumberOfQuads, obj.NumberOfBlocks)
+            self.assertIn("min scaled Jacobian 1, conformal", mesh.Quality)
+            # Same mesh as the console's of the same decomposition and size.
+            expected = AutoBlock.mesh(AutoBlock.decompose(source), size=1.0)
+            self.assertEqual(mesh.NumberOfQuads, len(expected.quads))
+            self.assertAlmostEqual(femmesh.BoundBox.XLength, source.Shape.BoundBox.XLength, places=9)
+            # The mesh size drives it; recompute updates it.
+            coarse = mesh.NumberOfQuads
+            obj.MeshSize = 0.5
+            doc.recompute()
+            self.assertIn("Up-to-date", mesh.State)
+            self.assertGreater(mesh.NumberOfQuads, 3 * coarse)
+            self.assertAlmostEqual(mesh.TargetSize, 0.5)
+            # So does the source.
+            source.Placement.Base = FreeCAD.Vector(0, 0, 4)
+            doc.recompute()
+            self.assertAlmostEqual(mesh.FemMesh.BoundBox.ZMin, 4.0)
+            # AutoBlock.mesh(obj, size) changes the size, one undoable step.
+            undo_count = doc.UndoCount
+            AutoBlock.mesh(obj, size=2.0)
+            self.assertAlmostEqual(mesh.TargetSize, 2.0)
+            self.assertEqual(doc.UndoCount, undo_count + 1)
+            self.assertEqual(doc.UndoNames[0], "AutoBlock mesh")
+            # A size asking for too many quads is refused; nothing changes.
+            quads = mesh.NumberOfQuads
+            with self.assertRaisesRegex(ValueError, "quadrilaterals"):
+                AutoBlock.mesh(obj, size=1e-4)
+            self.assertAlmostEqual(float(obj.MeshSize), 2.0)
+            self.assertEqual(mesh.NumberOfQuads, quads)
+            # Undo of the Auto-Block removes the mesh with its object.
+            names = [o.Name for o in doc.Objects]
+            AutoBlock.make_autoblock(source, policy="optimal")
+            self.assertEqual(len(doc.Objects), len(names) + 2)
+            doc.undo()
+            self.assertEqual([o.Name for o in doc.Objects], names)
+            # mesh=False: no mesh object.
+            AutoBlock.make_autoblock(source, mesh=False)
+            self.assertEqual(len([o for o in doc.Objects if is_autoblock_mesh(o)]), 1)
+        finally:
+            support.close_document(doc)
+
+    def test_an_incomplete_decomposition_gets_no_mesh(self):
+        doc = support.new_document("truncated")
+        try:
+            face = support.read_face()
+            result = AutoBlock.decompose(face, policy="optimal", max_steps=1)
+            self.assertTrue(result.truncated)
+            with self.assertRaisesRegex(ValueError, "incomplete"):
+                AutoBlock.mesh(result)
+        finally:
+            support.close_document(doc)
+
+
+class TestMeshes(unittest.TestCase):
+    def setUp(self):
+        self.folder = support.temporary_folder()
+
+    def tearDown(self):
+        support.remove_folder(self.folder)
+
+    def test_mesh_a_decomposition(self):
+        face = support.read_face()
+        result = AutoBlock.decompose(face, policy="optimal")
+        mesh = AutoBlock.mesh(result, size=0.5)
+        self.assertIs(mesh.decomposition, result)
+        self.assertEqual(mesh.n_blocks, result.n_blocks)
+        self.assertTrue(mesh.conformal)
+        self.assertEqual(mesh.quality["min_scaled_jacobian"], 1.0)  # rectilinear blocks: exact rectangles
+        self.assertEqual(mesh.quality["irregular_interior_vertices"], 0)
+        self.assertAlmostEqual(mesh.target_size, 0.5)
+        self.assertEqual(sorted(set(mesh.quad_block)), list(range(result.n_blocks)))
+        area = 0.0
+        for a, b, c, d in mesh.quads:
+            self.assertEqual(len({a, b, c, d}), 4)
+            area += ((mesh.nodes[c] - mesh.nodes[a]).cross(mesh.nodes[d] - mesh.nodes[b])).Length / 2
+        self.assertAlmostEqual(area, face.Area, places=6)
+        self.assertIsInstance(mesh.nodes[0], FreeCAD.Vector)
+        self.assertEqual(mesh.fem_mesh().QuadrangleCount, len(mesh.quads))
+        # A face straight away (decomposed with the default policy), and the automatic size.
+        auto = AutoBlock.mesh(face)
+        self.assertEqual(auto.decomposition.policy, "sac-mesh")
+        box = face.BoundBox
+        self.assertAlmostEqual(auto.target_size, max(box.XLength, box.YLength) / 20)
+
+    def test_same_mesh_as_the_cli(self):
+        cli = os.environ.get("AUTOBLOCK_CLI")
+        if not cli:
+            self.skipTest("AUTOBLOCK_CLI not set")
+        report = os.path.join(self.folder, "mesh.json")
+        subprocess.run([cli, "mesh", support.SAMPLE, "--json", report], check=True, capture_output=True)
+        with open(report) as f:
+            expected = json.load(f)
+        mesh = AutoBlock.mesh(support.read_face())
+        self.assertEqual(len(mesh.quads), expected["quads"])
+        self.assertEqual(len(mesh.nodes), expected["nodes"])
+        self.assertEqual(mesh.n_blocks, expected["blocks"])
+
+    def test_export_in_every_format_where_the_face_lies(self):
+        doc = support.new_document("export")
+        try:
+            # An L-shaped sketch standing in the plane y = 5: the files must say y = 5 for every node.
+            placement = FreeCAD.Placement(FreeCAD.Vector(0, 5, 0), FreeCAD.Rotation(FreeCAD.Vector(1, 0, 0), 90))
+            sketch = support.add_l_sketch(doc, placement)
+            obj = AutoBlock.make_autoblock(sketch, mesh_size=0.5)
+            mesh_object = AutoBlock.mesh(obj)
+            inp = os.path.join(self.folder, "l.inp")
+            result = AutoBlock.export_mesh(obj, inp)
+            self.assertEqual(result.file, inp)
+            with open(inp) as f:
+                lines = f.read().split("*NODE, NSET=NALL\n")[1].split("*")[0].splitlines()
+            self.assertEqual(len(lines), mesh_object.NumberOfNodes)
+            ys = [float(line.split(",")[2]) for line in lines]
+            self.assertAlmostEqual(min(ys), 5.0, places=9)
+            self.assertAlmostEqual(max(ys), 5.0, places=9)
+            zs = [float(line.split(",")[3]) for line in lines]
+            self.assertAlmostEqual(max(zs) - min(zs), 4.0, places=9)
+            msh = os.path.join(self.folder, "l.msh")
+            AutoBlock.export_mesh(mesh_object, msh)  # the mesh object exports its AutoBlock object's mesh
+            with open(msh) as f:
+                text = f.read()
+            self.assertIn('"block_1"', text)
+            self.assertIn('"block_2"', text)
+            vtu = os.path.join(self.folder, "l.vtu")
+            AutoBlock.export_mesh(AutoBlock.mesh(AutoBlock.decompose(sketch), size=0.5), vtu)
+            with open(vtu) as f:
+                self.assertIn('NumberOfCells="{}"'.format(mesh_object.NumberOfQuads), f.read())
+            with self.assertRaisesRegex(ValueError, "expected a .msh, .vtu or .inp"):
+                AutoBlock.export_mesh(obj, os.path.join(self.folder, "l.stl"))
+            with self.assertRaisesRegex(ValueError, "does not exist"):
+                AutoBlock.export_mesh(obj, "/no/such/folder/l.msh")
+            self.assertFalse(os.path.exists(os.path.join(self.folder, "l.stl")))
+        finally:
+            support.close_document(doc)
 
 
 class TestTraining(unittest.TestCase):
     def test_requests_are_checked(self):
         folder = support.temporary_folder()
         try:
-            good = AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), train_folder=support.SAMPLES)
+            data = dict(train_folder=support.SAMPLES, test_folder=support.SAMPLES)
+            good = AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), **data)
             good.validate()
             generated = AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"),
-                                                  train_generate={"count": 5, "min_rects": 2, "max_rects": 4})
+                                                  train_generate={"count": 5, "min_rects": 2, "max_rects": 4},
+                                                  test_folder=support.SAMPLES)
             generated.validate()
             self.assertEqual(generated.to_options()["train_generate"]["count"], 5)
+            self.assertEqual(eval(repr(generated), {"AutoBlock": AutoBlock}).to_options(), generated.to_options())
             cases = [
-                (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt")), "no training data"),
-                (AutoBlock.TrainingRequest("/no/such/dir/p.pt", train_folder=support.SAMPLES), "does not exist"),
-                (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), train_folder="/no/such"), "no such folder"),
-                (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), train_folder=support.SAMPLES, episodes=0),
-                 "at least 1"),
-                (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), train_folder=support.SAMPLES, resume=True),
-                 "nothing to resume"),
+                (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), test_folder=support.SAMPLES),
+                 "no training data"),
+                (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), train_folder=support.SAMPLES), "no test data"),
+                (AutoBlock.TrainingRequest("/no/such/dir/p.pt", **data), "does not exist"),
+                (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), train_folder="/no/such",
+                                           test_folder=support.SAMPLES), "no such folder"),
+                (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), episodes=0, **data), "at least 1"),
+                (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), reward="nope", **data), "unknown reward"),
+                (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), resume=True, **data), "nothing to resume"),
             ]
             for request, words in cases:
                 with self.subTest(words=words):
@@ -538,14 +760,78 @@ class TestTraining(unittest.TestCase):
         finally:
             support.remove_folder(folder)
 
-    def test_training_says_plainly_when_the_core_cannot(self):
-        if AutoBlock.capabilities()["training"]:
-            self.skipTest("this build can train")
+    def test_the_core_trains(self):
         from AutoBlock import training
 
-        self.assertIsNone(training.training_backend())
-        with self.assertRaisesRegex(NotImplementedError, "not in this build"):
-            AutoBlock.train(AutoBlock.TrainingRequest("/tmp/p.pt", train_folder=support.SAMPLES))
+        self.assertTrue(AutoBlock.capabilities()["training"])
+        self.assertIs(training.training_backend(), training.NativeTrainingRun)
+
+    def test_a_tiny_training_run_cancelled_resumed_and_used(self):
+        """A real run of the core's trainer: a few episodes on 3 generated shapes, cancelled from the progress
+        callback, resumed from its checkpoint, and its policy used like a shipped one."""
+        folder = support.temporary_folder()
+        try:
+            output = os.path.join(folder, "tiny.pt")
+            request = AutoBlock.TrainingRequest(output, train_generate={"count": 3, "max_rects": 4, "seed": 1},
+                                                test_generate={"count": 2, "max_rects": 4, "seed": 2},
+                                                episodes=6, eval_every=2, reward="mesh", seed=3)
+            events = []
+
+            def progress(event):
+                events.append(event)
+                return len(events) < 3  # cancel after the third episode
+
+            result = AutoBlock.train(request, progress)
+            self.assertTrue(result["cancelled"])
+            self.assertEqual(result["episodes_done"], 3)
+            self.assertIsNone(result["policy_file"])
+            self.assertTrue(os.path.exists(request.checkpoint))
+            self.assertFalse(os.path.exists(output))
+            self.assertEqual([e.episode for e in events], [1, 2, 3])
+            self.assertEqual([e.test_return is not None for e in events], [False, True, False])
+            self.assertAlmostEqual(events[1].train_return, (events[0].episode_return + events[1].episode_return) / 2)
+            # Resume: the history comes first (earlier), then the remaining episodes.
+            request.resume = True
+            events = []
+            result = AutoBlock.train(request, events.append)
+            self.assertFalse(result["cancelled"])
+            self.assertEqual([(e.episode, e.earlier) for e in events],
+                             [(1, True), (2, True), (3, True), (4, False), (5, False), (6, False)])
+            self.assertEqual(result["policy_file"], output)
+            self.assertEqual(result["reward"], "mesh")
+            for name in ("log", "curves"):
+                self.assertTrue(os.path.getsize(result[name]) > 0)
+            with open(result["log"]) as f:
+                self.assertEqual(len(f.read().splitlines()), 1 + 6)
+            # The trained policy: its own reward, value scores, a parametric object.
+            self.assertEqual(AutoBlock.policy_info(output), {"name": output, "learned": True, "reward": "mesh"})
+            decomposition = AutoBlock.decompose(support.read_face(), policy=output)
+            self.assertTrue(decomposition.complete)
+            self.assertEqual(decomposition.reward, "mesh")
+            self.assertEqual(len(decomposition.stepper().step(0).next.scores),
+                             len(decomposition.stepper().step(0).next.vertices))
+            doc = support.new_document("trained")
+            try:
+                obj = AutoBlock.make_autoblock(support.add_face(doc, support.read_face()), policy=output)
+                self.assertEqual(obj.PolicyFile, output)
+                self.assertEqual(obj.NumberOfBlocks, decomposition.n_blocks)
+            finally:
+                support.close_document(doc)
+            # In the background (what the Train panel starts): the same run, polled.
+            run = AutoBlock.start_training(AutoBlock.TrainingRequest(
+                os.path.join(folder, "background.pt"), train_generate={"count": 3, "max_rects": 4, "seed": 1},
+                test_generate={"count": 2, "max_rects": 4, "seed": 2}, episodes=4, eval_every=2))
+            run.wait(120)
+            self.assertTrue(run.done)
+            self.assertIsNone(run.error)
+            self.assertEqual([e.episode for e in run.poll()], [1, 2, 3, 4])
+            self.assertTrue(os.path.exists(run.result["policy_file"]))
+            # Bad data is a ValueError naming the problem.
+            with self.assertRaisesRegex(ValueError, "holds no shape file|no .brep"):
+                AutoBlock.train(AutoBlock.TrainingRequest(os.path.join(folder, "bad.pt"), train_folder=folder,
+                                                          test_folder=support.SAMPLES, episodes=2))
+        finally:
+            support.remove_folder(folder)
 
     def test_the_run_protocol(self):
         from AutoBlock import training
@@ -564,7 +850,8 @@ class TestTraining(unittest.TestCase):
                     time.sleep(0.01)
                 return {"cancelled": False}
 
-        run = CountingRun(training.TrainingRequest("/tmp/p.pt", train_folder=support.SAMPLES))
+        run = CountingRun(training.TrainingRequest("/tmp/p.pt", train_folder=support.SAMPLES,
+                                                   test_folder=support.SAMPLES))
         run.start()
         self.assertTrue(gate.wait(10))
         run.cancel()

@@ -1,9 +1,12 @@
 """GUI test of the AutoBlock workbench, under Xvfb: xvfb-run freecad -t TestAutoBlockGui (see
 run_freecad_tests.sh).
 
-Activates the workbench, runs Auto-Block (good and bad faces), the step-through panel, write-back,
-the Train panel and the preferences page on a bundled sample, checks the objects and that closing
-panels leaves the document as it was, and saves screenshots into AUTOBLOCK_SCREENSHOT_DIR when set.
+Activates the workbench, runs Auto-Block (good and bad faces, with its FEM mesh), the step-through panel
+(value scores of the shipped learned policy), mesh export, write-back, the Train panel (a real tiny run in
+the background, and a test double for cancel and resume) and the preferences page on a bundled sample,
+checks the objects and that closing panels leaves the document as it was, and saves screenshots into
+AUTOBLOCK_SCREENSHOT_DIR when set. A modal dialog nobody expected is closed and fails the test (instead of
+hanging it).
 """
 
 import os
@@ -65,6 +68,8 @@ class DialogCatcher:
     """Records and closes modal dialogs (message boxes) so that the test goes on; screenshot: a name to save
     the screen under when the first dialog shows."""
 
+    active = 0  # catchers open now (the watchdog leaves their dialogs to them)
+
     def __init__(self, screenshot=None):
         self.screenshot = screenshot
         self.seen = []
@@ -84,18 +89,50 @@ class DialogCatcher:
 
     def __enter__(self):
         self.seen = []
+        DialogCatcher.active += 1
         self.timer.start()
         return self
 
     def __exit__(self, *exc):
         self.timer.stop()
+        DialogCatcher.active -= 1
 
 
+class Watchdog:
+    """Closes any modal dialog no DialogCatcher expects and records it: the test then fails instead of waiting
+    for a click that never comes."""
+
+    def __init__(self):
+        self.unexpected = []
+        self.timer = QtCore.QTimer()
+        self.timer.setInterval(250)
+        self.timer.timeout.connect(self.check)
+        self.timer.start()
+
+    def check(self):
+        if DialogCatcher.active:
+            return
+        widget = QtWidgets.QApplication.activeModalWidget()
+        if widget is None:
+            return
+        text = widget.windowTitle()
+        if isinstance(widget, QtWidgets.QMessageBox):
+            text += ": " + widget.text()
+        self.unexpected.append(text)
+        widget.reject()
+
+    def take(self):
+        seen, self.unexpected = self.unexpected, []
+        return seen
+
+
+_watchdog = None
 _previous_workbench = None
 
 
 def setUpModule():
-    global _previous_workbench
+    global _previous_workbench, _watchdog
+    _watchdog = Watchdog()
     _previous_workbench = FreeCADGui.activeWorkbench().name()
     if os.environ.get("AUTOBLOCK_TEST_TMP"):
         # Under run_freecad_tests.sh (a throw-away FreeCAD): a large, clean window for the screenshots. Run
@@ -117,6 +154,7 @@ def setUpModule():
 
 
 def tearDownModule():
+    _watchdog.timer.stop()
     if _previous_workbench and _previous_workbench != "AutoBlockWorkbench":
         FreeCADGui.activateWorkbench(_previous_workbench)
 
@@ -133,6 +171,7 @@ class GuiTestCase(unittest.TestCase):
         pump()
         support.close_document(self.doc)
         pump()
+        self.assertEqual(_watchdog.take(), [], "unexpected modal dialogs")
 
     def add_sample(self):
         source = support.add_face(self.doc, support.read_face())
@@ -156,8 +195,8 @@ class TestWorkbench(GuiTestCase):
         self.assertIn("AutoBlockWorkbench", FreeCADGui.listWorkbenches())
         self.assertEqual(FreeCADGui.activeWorkbench().name(), "AutoBlockWorkbench")
         commands = FreeCADGui.listCommands()
-        for name in ("AutoBlock_AutoBlock", "AutoBlock_StepThrough", "AutoBlock_WriteBack", "AutoBlock_Train",
-                     "AutoBlock_Preferences"):
+        for name in ("AutoBlock_AutoBlock", "AutoBlock_StepThrough", "AutoBlock_ExportMesh", "AutoBlock_WriteBack",
+                     "AutoBlock_Train", "AutoBlock_Preferences"):
             self.assertIn(name, commands)
         toolbar = FreeCADGui.getMainWindow().findChild(QtWidgets.QToolBar, "AutoBlock")
         self.assertIsNotNone(toolbar)
@@ -169,12 +208,24 @@ class TestWorkbench(GuiTestCase):
 
         params = preferences.params()
         saved = (params.GetString(preferences.DEFAULT_POLICY, ""), params.GetInt(preferences.THREADS, 0),
-                 params.GetFloat(preferences.MESH_SIZE, 0.0))
+                 params.GetFloat(preferences.MESH_SIZE, 0.0), params.GetString(preferences.REWARD_PRESET, ""))
         try:
             page = AutoBlockPreferencesPage()
             self.assertEqual([page.form.defaultPolicy.itemText(i) for i in range(page.form.defaultPolicy.count())],
                              AutoBlock.policy_names())
+            presets = [page.form.rewardPreset.itemText(i) for i in range(page.form.rewardPreset.count())]
+            self.assertEqual(presets, ["each policy's own", "paper", "mesh"])
+            params.SetString(preferences.DEFAULT_POLICY, "")
             page.loadSettings()
+            self.assertEqual(page.form.defaultPolicy.currentText(), "sac-mesh")  # the core's default
+            self.assertEqual(page.form.rewardPreset.currentIndex(), 0)
+            self.assertIn("sac-mesh", page.form.noteLabel.text())
+            page.saveSettings()
+            self.assertEqual(params.GetString(preferences.REWARD_PRESET, "x"), "")
+            page.form.rewardPreset.setCurrentText("paper")
+            page.saveSettings()
+            self.assertEqual(preferences.reward_preset(), "paper")
+            page.form.rewardPreset.setCurrentIndex(0)
             page.form.defaultPolicy.setCurrentText("greedy")
             page.form.threads.setValue(3)
             page.form.meshSize.setValue(0.5)
@@ -185,21 +236,27 @@ class TestWorkbench(GuiTestCase):
             source = self.add_sample()
             obj = AutoBlock.make_autoblock(source)
             self.assertEqual(obj.Policy, "greedy")
+            self.assertEqual(obj.RewardPreset, "")
             self.assertAlmostEqual(float(obj.MeshSize), 0.5)
+            self.assertAlmostEqual(AutoBlock.mesh(obj).TargetSize, 0.5)
         finally:
             params.SetString(preferences.DEFAULT_POLICY, saved[0])
             params.SetInt(preferences.THREADS, saved[1])
             params.SetFloat(preferences.MESH_SIZE, saved[2])
+            params.SetString(preferences.REWARD_PRESET, saved[3])
 
 
 class TestAutoBlockCommand(GuiTestCase):
     def test_auto_block_on_a_sample(self):
+        from AutoBlock.objects.fem_mesh import ViewProviderAutoBlockMesh, is_autoblock_mesh
+
         source = self.add_sample()
         undo_count = self.doc.UndoCount
         objects = self.auto_block(source)
         self.assertEqual(len(objects), 1)
         obj = objects[0]
         expected = AutoBlock.decompose(source)
+        self.assertEqual(obj.Policy, "sac-mesh")
         self.assertEqual(obj.NumberOfBlocks, expected.n_blocks)
         self.assertEqual(self.doc.UndoCount, undo_count + 1)
         self.assertEqual(self.doc.UndoNames[0], "Auto-Block")
@@ -207,12 +264,19 @@ class TestAutoBlockCommand(GuiTestCase):
         colours = list(obj.ViewObject.DiffuseColor)
         self.assertEqual(len(colours), len(obj.Shape.Faces))
         self.assertEqual(len(set(tuple(round(c, 3) for c in colour[:3]) for colour in colours)), len(colours))
+        # Its FEM mesh, drawn as a wireframe over the coloured blocks.
+        meshes = [o for o in self.doc.Objects if is_autoblock_mesh(o)]
+        self.assertEqual(len(meshes), 1)
+        self.assertIs(meshes[0].AutoBlock, obj)
+        self.assertIsInstance(meshes[0].ViewObject.Proxy, ViewProviderAutoBlockMesh)
+        self.assertEqual(meshes[0].ViewObject.DisplayMode, "Wireframe")
+        self.assertGreater(meshes[0].FemMesh.QuadrangleCount, 4 * obj.NumberOfBlocks)
         FreeCADGui.Selection.clearSelection()
         top_view()
         screenshot("autoblock")
         self.doc.undo()
         pump()
-        self.assertEqual([o for o in self.doc.Objects if AutoBlock.is_autoblock(o)], [])
+        self.assertEqual([o for o in self.doc.Objects if AutoBlock.is_autoblock(o) or is_autoblock_mesh(o)], [])
 
     def test_auto_block_on_two_faces_of_a_solid_is_one_transaction(self):
         solid = support.l_face(width=6, height=5, notch=3).extrude(FreeCAD.Vector(0, 0, 2))
@@ -291,6 +355,49 @@ class TestAutoBlockCommand(GuiTestCase):
         self.assertEqual(self.doc.UndoNames[0], "Write back blocks")
 
 
+class TestExportMeshCommand(GuiTestCase):
+    def test_export_mesh_command(self):
+        from AutoBlock.commands.export_mesh import ExportMeshCommand
+
+        folder = support.temporary_folder()
+        try:
+            obj = self.auto_block(self.add_sample())[0]
+            FreeCADGui.Selection.clearSelection()
+            FreeCADGui.Selection.addSelection(obj)
+            self.assertTrue(FreeCADGui.isCommandActive("AutoBlock_ExportMesh"))
+            undo_count = self.doc.UndoCount
+            original = ExportMeshCommand.choose_path
+            for name in ("sample.msh", "sample.vtu", "sample.inp"):
+                path = os.path.join(folder, name)
+                ExportMeshCommand.choose_path = staticmethod(lambda obj, path=path: path)
+                try:
+                    FreeCADGui.runCommand("AutoBlock_ExportMesh")
+                    pump()
+                finally:
+                    ExportMeshCommand.choose_path = original
+                self.assertGreater(os.path.getsize(path), 1000, name)
+            import __main__
+
+            self.assertEqual(__main__._autoblock_mesh.file, os.path.join(folder, "sample.inp"))  # the echoed call's
+            with open(os.path.join(folder, "sample.inp")) as f:
+                self.assertIn("*ELEMENT, TYPE=CPS4, ELSET=BLOCK_{}\n".format(obj.NumberOfBlocks), f.read())
+            self.assertEqual(self.doc.UndoCount, undo_count)  # exporting changes nothing in the document
+            # A bad file name: a dialog says why, nothing is written.
+            bad = os.path.join(folder, "sample.stl")
+            ExportMeshCommand.choose_path = staticmethod(lambda obj: bad)
+            try:
+                with DialogCatcher() as dialogs:
+                    FreeCADGui.runCommand("AutoBlock_ExportMesh")
+                    pump(0.5)
+            finally:
+                ExportMeshCommand.choose_path = original
+            self.assertEqual(len(dialogs.seen), 1)
+            self.assertIn(".msh, .vtu or .inp", dialogs.seen[0][1])
+            self.assertFalse(os.path.exists(bad))
+        finally:
+            support.remove_folder(folder)
+
+
 class TestStepThroughPanel(GuiTestCase):
     def scene_nodes(self):
         graph = FreeCADGui.ActiveDocument.ActiveView.getSceneGraph()
@@ -298,13 +405,16 @@ class TestStepThroughPanel(GuiTestCase):
                 if graph.getChild(i).getName().getString() == "AutoBlockStepScene"]
 
     def test_stepping_through_the_cuts_leaves_the_document_as_it_was(self):
+        from AutoBlock.objects.fem_mesh import mesh_objects_of
         from AutoBlock.taskpanels import step_through
 
         source = self.add_sample()
         obj = self.auto_block(source)[0]
+        self.assertEqual(obj.Policy, "sac-mesh")
+        mesh = mesh_objects_of(obj)[0]
         top_view()
         before = ([o.Name for o in self.doc.Objects], self.doc.UndoCount, obj.Shape.exportBrepToString(),
-                  list(obj.ViewObject.DiffuseColor), list(obj.State))
+                  list(obj.ViewObject.DiffuseColor), list(obj.State), list(mesh.State), mesh.NumberOfQuads)
         FreeCADGui.Selection.clearSelection()
         FreeCADGui.Selection.addSelection(obj)
         FreeCADGui.runCommand("AutoBlock_StepThrough")
@@ -313,9 +423,12 @@ class TestStepThroughPanel(GuiTestCase):
         self.assertIsNotNone(panel)
         self.assertTrue(FreeCADGui.Control.activeDialog())
         self.assertEqual(len(self.scene_nodes()), 1)
+        # The object and its mesh are hidden while the panel shows the steps.
         self.assertEqual(obj.ViewObject.SwitchNode.whichChild.getValue(), -1)
+        self.assertEqual(mesh.ViewObject.SwitchNode.whichChild.getValue(), -1)
         form = panel.form
         n = obj.NumberOfCuts
+        self.assertGreaterEqual(n, 3)
         self.assertEqual(form.slider.maximum(), n)
         self.assertEqual(form.positionLabel.text(), "Cut 1 of {}".format(n))
         form.nextButton.click()
@@ -331,38 +444,60 @@ class TestStepThroughPanel(GuiTestCase):
         pump()
         self.assertEqual(form.slider.value(), 0)
         self.assertFalse(form.previousButton.isEnabled())
-        form.slider.setValue(2)
+        form.slider.setValue(1)
         pump()
         view = panel.current
-        self.assertEqual(view.step, 2)
-        cut = AutoBlock.stepper_of(obj).step(2).next
+        self.assertEqual(view.step, 1)
+        cut = AutoBlock.stepper_of(obj).step(1).next
         self.assertIn("{:+.3f}".format(cut.reward), form.rewardLabel.text())
-        self.assertIn("learned policy", form.scoresLabel.text())
+        # The value network's scores: a coloured disc and a label per scored vertex, the best one named.
+        scores = [x for x in view.next.scores if x is not None]
+        self.assertEqual(len(view.next.scores), len(view.next.vertices))
+        self.assertGreater(len(scores), 2)
+        self.assertIn("value network of sac-mesh", form.scoresLabel.text())
+        self.assertIn("highest {:.3f}".format(max(scores)), form.scoresLabel.text())
+        self.assertIn("scores {:.3f}".format(view.next.scores[view.next.chosen]), form.scoresLabel.text())
+        texts = self.scene_texts(panel.scene.content)
+        self.assertEqual(sorted(texts), sorted("{:.2f}".format(x) for x in scores))
         FreeCADGui.Selection.clearSelection()
         screenshot("step-through")
-        # The value-score overlay, fed made-up scores (no learned policy in this build): it draws a disc and
-        # a label per vertex and names the best vertex.
-        import copy
-
-        scored = copy.copy(view)
-        scored.next = copy.copy(view.next)
-        scored.next.scores = [0.1 * i for i in range(len(view.next.vertices))]
-        nodes_before = panel.scene.content.getNumChildren()
-        panel.scene.show(scored, panel.colours)
-        panel.update_labels(scored)
-        self.assertGreater(panel.scene.content.getNumChildren(), nodes_before + len(scored.next.vertices))
-        self.assertIn("highest {:.3f}".format(scored.next.scores[-1]), form.scoresLabel.text())
-        panel.show_step(2)
         panel.reject()
         pump()
         self.assertFalse(FreeCADGui.Control.activeDialog())
         self.assertIsNone(step_through.current_panel())
         self.assertEqual(self.scene_nodes(), [])
         self.assertEqual(obj.ViewObject.SwitchNode.whichChild.getValue(), 0)
+        self.assertNotEqual(mesh.ViewObject.SwitchNode.whichChild.getValue(), -1)
         after = ([o.Name for o in self.doc.Objects], self.doc.UndoCount, obj.Shape.exportBrepToString(),
-                 list(obj.ViewObject.DiffuseColor), list(obj.State))
+                 list(obj.ViewObject.DiffuseColor), list(obj.State), list(mesh.State), mesh.NumberOfQuads)
         self.assertEqual(after, before)
         self.assertIsNone(FreeCAD.getActiveTransaction())
+
+    @staticmethod
+    def scene_texts(node):
+        """The strings of every SoText2 under `node`."""
+        from pivy import coin
+
+        search = coin.SoSearchAction()
+        search.setType(coin.SoText2.getClassTypeId())
+        search.setInterest(coin.SoSearchAction.ALL)
+        search.apply(node)
+        paths = search.getPaths()
+        return [paths[i].getTail().string.getValues()[0] for i in range(paths.getLength())]
+
+    def test_a_baseline_has_no_scores_and_the_panel_says_so(self):
+        from AutoBlock.taskpanels import step_through
+
+        obj = AutoBlock.make_autoblock(self.add_sample(), policy="optimal")
+        pump()
+        self.assertTrue(step_through.open_step_panel(obj))
+        pump()
+        panel = step_through.current_panel()
+        self.assertIsNone(panel.current.next.scores)
+        self.assertIn("'optimal' is a baseline", panel.form.scoresLabel.text())
+        self.assertEqual(self.scene_texts(panel.scene.content), [])
+        panel.reject()
+        pump()
 
     def test_after_saving_and_reopening_a_double_click_opens_the_panel(self):
         from AutoBlock.taskpanels import step_through
@@ -408,7 +543,7 @@ class TestStepThroughPanel(GuiTestCase):
 
 
 class FakeTrainingRun:
-    """A stand-in for the core's training (which this build lacks), to test the panel's wiring: it satisfies
+    """A stand-in for the core's training, to test the panel's wiring of cancel and resume quickly: it satisfies
     the protocol of AutoBlock/training.py, reporting made-up returns."""
 
     def __new__(cls, request):
@@ -432,26 +567,77 @@ class FakeTrainingRun:
 
 
 class TestTrainPanel(GuiTestCase):
-    def test_without_training_in_the_core_the_panel_says_so(self):
-        if AutoBlock.capabilities()["training"]:
-            self.skipTest("this build can train")
+    def test_a_real_training_run_in_the_background(self):
+        """The core's trainer, started by the panel's echoed console call, trains a tiny policy while FreeCAD's
+        event loop keeps running; the live plot fills; the policy becomes the default."""
+        import __main__
+
+        from AutoBlock import preferences
         from AutoBlock.taskpanels import train
 
-        self.auto_block(self.add_sample())
-        FreeCADGui.Selection.clearSelection()
-        top_view()
-        FreeCADGui.runCommand("AutoBlock_Train")
-        pump()
-        panel = train.current_panel()
-        self.assertIsNotNone(panel)
-        self.assertTrue(panel.form.noteLabel.isVisible())
-        self.assertIn("not in this build", panel.form.noteLabel.text())
-        self.assertFalse(panel.form.startButton.isEnabled())
-        self.assertFalse(panel.form.trainBox.isEnabled())
-        screenshot("train")
-        panel.reject()
-        pump()
-        self.assertFalse(FreeCADGui.Control.activeDialog())
+        folder = support.temporary_folder()
+        params = preferences.params()
+        saved = (params.GetString(preferences.DEFAULT_POLICY_FILE, ""), params.GetString(preferences.DEFAULT_POLICY, ""))
+        try:
+            FreeCADGui.runCommand("AutoBlock_Train")
+            pump()
+            panel = train.current_panel()
+            self.assertIsNotNone(panel)
+            form = panel.form
+            self.assertFalse(form.noteLabel.isVisible())
+            self.assertTrue(form.startButton.isEnabled())
+            form.trainGenerateRadio.setChecked(True)
+            form.trainCount.setValue(3)
+            form.trainMaxRects.setValue(4)
+            form.testGenerateRadio.setChecked(True)
+            form.testCount.setValue(2)
+            form.episodes.setValue(140)  # warm-up (random cuts) for about 100 episodes, then learning
+            form.evalEvery.setValue(10)
+            form.reward.setCurrentText("mesh")
+            output = os.path.join(folder, "policy.pt")
+            form.outputEdit.setText(output)
+            ticks = []
+            clock = QtCore.QTimer()
+            clock.setInterval(50)
+            clock.timeout.connect(lambda: ticks.append(time.time()))
+            clock.start()
+            form.startButton.click()
+            run = panel.run
+            self.assertIsNotNone(run)
+            self.assertIs(__main__._autoblock_training, run)  # the echoed console call started it
+            self.assertTrue(form.cancelButton.isEnabled())
+            start = time.time()
+            deadline = start + 240
+            while panel.run is not None and time.time() < deadline:
+                pump(0.05)
+            clock.stop()
+            self.assertIsNone(panel.run)
+            self.assertIsNone(run.error)
+            # FreeCAD's event loop kept running while the core trained.
+            gaps = [b - a for a, b in zip([start] + ticks, ticks)]
+            self.assertGreater(len(ticks), 5)
+            self.assertLess(max(gaps), 1.5, "the GUI stalled for {:.2f} s".format(max(gaps)))
+            self.assertEqual(form.progressBar.value(), 140)
+            self.assertEqual(len(panel.plot.train), 140)
+            self.assertEqual(len(panel.plot.test), 14)
+            self.assertIn("Done", form.statusLabel.text())
+            self.assertEqual(panel.result["reward"], "mesh")
+            self.assertTrue(os.path.exists(output))
+            self.assertTrue(form.defaultButton.isEnabled())
+            form.defaultButton.click()
+            self.assertEqual(preferences.default_policy(), output)
+            top_view()
+            screenshot("train")
+            panel.reject()
+            pump()
+            # New AutoBlock objects now use it.
+            obj = self.auto_block(self.add_sample())[0]
+            self.assertEqual(obj.PolicyFile, output)
+            self.assertIn("Up-to-date", obj.State)
+        finally:
+            params.SetString(preferences.DEFAULT_POLICY_FILE, saved[0])
+            params.SetString(preferences.DEFAULT_POLICY, saved[1])
+            support.remove_folder(folder)
 
     def test_the_panel_drives_a_training_backend(self):
         from AutoBlock import preferences

@@ -29,8 +29,8 @@ class AutoBlockCommand(BaseCommand):
     NAME = "AutoBlock_AutoBlock"
     ICON = "AutoBlock_AutoBlock"
     MENU_TEXT = "Auto-Block"
-    TOOL_TIP = ("Cut the selected planar faces into rectangular blocks: one parametric AutoBlock object per face "
-                "(select faces, a sketch, or objects holding one face)")
+    TOOL_TIP = ("Cut the selected planar faces into rectangular blocks: one parametric AutoBlock object per face, "
+                "with a FEM mesh of quads (select faces, a sketch, or objects holding one face)")
 
     def IsActive(self):
         return FreeCADGui.ActiveDocument is not None and bool(FreeCADGui.Selection.getSelection())
@@ -39,6 +39,7 @@ class AutoBlockCommand(BaseCommand):
         from .. import console
         from ..gui_utils import echo, object_ref, report_error
         from ..objects.autoblock_feature import is_autoblock
+        from ..objects.fem_mesh import is_autoblock_mesh
         from ..transactions import transaction
 
         targets = selected_targets()
@@ -69,9 +70,11 @@ class AutoBlockCommand(BaseCommand):
                 if leaf.ViewObject is not None and leaf.ViewObject.Visibility:
                     echo("Gui.getDocument({!r}).getObject({!r}).Visibility = False".format(leaf.Document.Name,
                                                                                              leaf.Name))
-        created = [doc.getObject(n) for n in set(o.Name for o in doc.Objects) - before]
+        created = [o for o in doc.Objects if o.Name not in before]
         FreeCADGui.Selection.clearSelection()
         for obj in created:
-            FreeCADGui.Selection.addSelection(obj)
             if is_autoblock(obj):
+                FreeCADGui.Selection.addSelection(obj)
                 FreeCAD.Console.PrintMessage("AutoBlock: {}: {}\n".format(obj.Label, obj.Status))
+            elif is_autoblock_mesh(obj):
+                FreeCAD.Console.PrintMessage("AutoBlock: {}: {}\n".format(obj.Label, obj.Quality))

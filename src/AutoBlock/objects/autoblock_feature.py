@@ -1,6 +1,7 @@
 """The AutoBlock object: a Part::FeaturePython linked to a source face, whose Shape is that face cut
-into blocks. It recomputes when the source changes; it saves and reopens like any feature (its proxy
-keeps no state: everything lives in properties).
+into blocks (merged conformally: neighbouring blocks share their edges). It recomputes when the source
+changes; it saves and reopens like any feature (its proxy keeps no state: everything lives in
+properties). Its FEM mesh object (fem_mesh.py) follows it.
 
 make_autoblock() is what the Auto-Block button runs.
 """
@@ -26,6 +27,7 @@ class AutoBlockFeature:
     def __init__(self, obj):
         obj.Proxy = self
         self.last_error = None
+        self.last_complete = False
         self.ensure_properties(obj)
 
     # Properties: (type, name, group, tooltip, attributes). Attributes: 8 = Output (changing it does not
@@ -33,27 +35,30 @@ class AutoBlockFeature:
     PROPERTIES = [
         ("App::PropertyLinkSub", "Source", "Input", "The face to cut: an object and, when it has several faces, one "
          "of them. Recomputes when it changes.", 0),
-        ("App::PropertyEnumeration", "Policy", "Decomposition", "How cuts are chosen: a shipped policy (optimal: "
-         "maximum return by exact search).", 0),
-        ("App::PropertyFile", "PolicyFile", "Decomposition", "A policy file made by training; used instead of "
-         "Policy when set.", 0),
-        ("App::PropertyEnumeration", "RewardPreset", "Decomposition", "The reward the policy maximises (paper: "
-         "Eq. (1) of DiPrete et al. 2022).", 0),
+        ("App::PropertyEnumeration", "Policy", "Decomposition", "How cuts are chosen: a shipped trained policy "
+         "(sac-mesh: few, fat blocks; sac-paper: Eq. (1)) or a baseline (optimal: maximum return by exact search; "
+         "greedy; random).", 0),
+        ("App::PropertyFile", "PolicyFile", "Decomposition", "A policy file made by training (Train a policy); "
+         "used instead of Policy when set.", 0),
+        ("App::PropertyEnumeration", "RewardPreset", "Decomposition", "The reward the cuts are scored with: empty "
+         "for the policy's own (sac-mesh: mesh; sac-paper, the baselines: paper), paper (Eq. (1) of DiPrete et al. "
+         "2022) or mesh (few, fat blocks). The baselines maximise it.", 0),
         ("App::PropertyInteger", "Seed", "Decomposition", "Seed of the random policies.", 0),
         ("App::PropertyFloat", "TimeLimit", "Decomposition", "optimal: seconds of exact search before finishing "
          "greedily.", 0),
-        ("App::PropertyLength", "MeshSize", "Mesh", "Target quad size for meshing the blocks (0: automatic). Used "
-         "once the core can mesh; this build cannot yet.", 0),
+        ("App::PropertyLength", "MeshSize", "Mesh", "Target quad size of the object's FEM mesh (0: automatic, 1/20 "
+         "of the face's longer side).", 0),
         ("App::PropertyInteger", "NumberOfBlocks", "Result", "Blocks in the partition.", 8),
         ("App::PropertyInteger", "MinimumBlocks", "Result", "Fewest rectangles of any partition of the face (a "
          "lower bound).", 8),
         ("App::PropertyInteger", "NumberOfCuts", "Result", "Cuts the policy made.", 8),
         ("App::PropertyFloat", "Return", "Result", "Sum of the cuts' rewards.", 8),
         ("App::PropertyString", "Status", "Result", "Summary of the last decomposition.", 8),
+        ("App::PropertyString", "RewardUsed", "Result", "The reward preset the cuts were scored with.", 8),
         ("App::PropertyString", "CutSequence", "Result", "The cuts (JSON, in the face's own frame), for "
          "stepping through them.", 8),
     ]
-    READ_ONLY = ("NumberOfBlocks", "MinimumBlocks", "NumberOfCuts", "Return", "Status")
+    READ_ONLY = ("NumberOfBlocks", "MinimumBlocks", "NumberOfCuts", "Return", "Status", "RewardUsed")
     HIDDEN = ("CutSequence",)
 
     def ensure_properties(self, obj):
@@ -73,8 +78,10 @@ class AutoBlockFeature:
             module = native.load()
         except native.NativeModuleMissing:
             return
-        for name, choices in (("Policy", list(module.policy_names())), ("RewardPreset", list(module.reward_presets()))):
-            current = getattr(obj, name) if getattr(obj, name, None) else None
+        # RewardPreset: "" (the policy's own, the core's default) and the core's presets.
+        presets = [""] + [p for p in module.reward_presets() if p]
+        for name, choices in (("Policy", list(module.policy_names())), ("RewardPreset", presets)):
+            current = getattr(obj, name, None)
             if list(obj.getEnumerationsOfProperty(name) or []) != choices:
                 setattr(obj, name, choices)
                 if current in choices:
@@ -86,17 +93,20 @@ class AutoBlockFeature:
 
     def execute(self, obj):
         self.last_error = None
+        self.last_complete = False
         try:
             result = self.decompose(obj)
         except Exception as error:
             self.last_error = error
             raise
+        self.last_complete = result.complete
         obj.Shape = result.shape
         obj.NumberOfBlocks = result.n_blocks
         obj.MinimumBlocks = result.min_blocks
         obj.NumberOfCuts = len(result.cuts)
         obj.Return = result.ret
         obj.Status = "{}: {}".format(result.policy, result.summary())
+        obj.RewardUsed = result.reward
         obj.CutSequence = result.cut_sequence()
 
     @staticmethod
@@ -113,15 +123,17 @@ class AutoBlockFeature:
 
     def __setstate__(self, state):
         self.last_error = None
+        self.last_complete = False
         return None
 
 
 def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, seed=0, time_limit=30.0,
                    name="AutoBlock", mesh=None):
     """Create the parametric AutoBlock object of `source` (a document object; sub: "FaceN" when it has several
-    faces) and compute it. policy: a name or policy file (None: the preferred default); reward: a preset (None:
-    the preferred one); mesh_size (None: the preferred one); mesh: also make a FEM mesh object of the blocks
-    (None: when the core can mesh, which this build cannot; True: required).
+    faces) and compute it. policy: a name or policy file (None: the preferred default, sac-mesh unless set);
+    reward: a preset, "" for the policy's own (None: the preferred one, "" unless set); mesh_size (None: the
+    preferred one); mesh: also make its FEM mesh object (fem_mesh.py) of the blocks (None: when the
+    decomposition is complete, which meshing needs; True: required; False: no).
 
     One undoable transaction ("Auto-Block"), or part of the caller's when one is open. Raises ValueError for an
     unsupported face or a bad option, and then the document is left unchanged.
@@ -135,10 +147,11 @@ def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, s
     spec = policy or preferences.default_policy()
     module = native.load()
     names = list(module.policy_names())
-    reward = reward or preferences.reward_preset()
+    reward = preferences.reward_preset() if reward is None else reward
     presets = list(module.reward_presets())
-    if reward not in presets:
-        raise ValueError("unknown reward preset '{}' (expected {})".format(reward, ", ".join(presets)))
+    if reward and reward not in presets:
+        raise ValueError("unknown reward preset '{}' (expected {}, or '' for the policy's own)".format(
+            reward, ", ".join(presets)))
     doc = source.Document
     created = []
     try:
@@ -166,11 +179,19 @@ def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, s
                 raise error
             if not obj.isValid():
                 raise RuntimeError("{}: recompute failed ({})".format(obj.Label, ", ".join(obj.State)))
-            if mesh or (mesh is None and native.has("meshing")):
-                created.append(console.mesh(obj).Name)
+            if mesh or (mesh is None and native.has("meshing") and obj.Proxy.last_complete):
+                from .fem_mesh import make_mesh_object
+
+                try:
+                    created.append(make_mesh_object(obj).Name)
+                except ValueError as error:
+                    if mesh:
+                        raise
+                    # The blocks stand without their mesh (e.g. a mesh size asking for too many quads).
+                    FreeCAD.Console.PrintWarning("AutoBlock: {}: no FEM mesh: {}\n".format(obj.Label, error))
     except BaseException:
-        # Without undo (freecadcmd's default) aborting the transaction leaves the object: remove it.
-        for object_name in created:
+        # Without undo (freecadcmd's default) aborting the transaction leaves the objects: remove them.
+        for object_name in reversed(created):
             if doc.getObject(object_name) is not None:
                 doc.removeObject(object_name)
         raise
@@ -195,4 +216,4 @@ def stepper_of(obj):
     from ..stepping import Stepper
 
     return Stepper(local.exportBrepToString(), frame, cuts, int(data.get("max_steps", 0)), label,
-                   obj.PolicyFile or obj.Policy)
+                   obj.PolicyFile or obj.Policy, console.sequence_reward(data))

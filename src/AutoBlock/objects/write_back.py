@@ -8,7 +8,8 @@ parametric source (a sketch, an extrusion, a PartDesign feature) recomputes its 
 inputs, so replacing it would not last; such sources get a clear ValueError. When the source holds
 just the face, its new shape is the compound of the blocks; when the face belongs to a solid or a
 shell, the face is split into the blocks in place (OpenCASCADE's general fuse). The AutoBlock object
-has then done its job and is removed. Either mode is one undoable transaction.
+has then done its job and is removed, with its FEM mesh object (the mesh of a face that no longer has a
+parametric source). Either mode is one undoable transaction.
 """
 
 import FreeCAD
@@ -89,6 +90,10 @@ def _replace(obj):
     local = new.copy()
     local.transformShape(placement.inverse().toMatrix(), True)  # True: move the geometry itself
     local.Placement = placement
+    from .fem_mesh import mesh_objects_of
+
+    for mesh in mesh_objects_of(obj):
+        doc.removeObject(mesh.Name)
     doc.removeObject(obj.Name)
     source.Shape = local
     if FreeCAD.GuiUp:

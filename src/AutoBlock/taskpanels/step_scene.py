@@ -181,15 +181,20 @@ class StepScene:
         axes = (view.frame.Rotation.multVec(FreeCAD.Vector(1, 0, 0)), view.frame.Rotation.multVec(FreeCAD.Vector(0, 1, 0)))
         radius = 0.012 * max(view.size, 1e-9)
         self.content.addChild(self._lines([[a, b] for a, b in cut.line], CUT_COLOUR, 5, lift * 2))
-        if cut.scores:
-            low, high = min(cut.scores), max(cut.scores)
+        scored = [(point, score) for point, score in zip(cut.vertices, cut.scores or []) if score is not None]
+        if scored:
+            low, high = min(s for _, s in scored), max(s for _, s in scored)
             span = (high - low) or 1.0
-            for point, score in zip(cut.vertices, cut.scores):
+            for point, score in scored:
                 self.content.addChild(self._disc(point, radius, score_colour((score - low) / span), axes, lift * 3,
                                                  ring=OUTLINE))
                 self.content.addChild(self._text(point + axes[0] * (1.5 * radius) + axes[1] * (1.5 * radius),
                                                  "{:.2f}".format(score), OUTLINE, lift * 4))
+            unscored = [point for point, score in zip(cut.vertices, cut.scores) if score is None]
+            if unscored:
+                self.content.addChild(self._markers(unscored, VERTEX_COLOUR, _marker("CIRCLE_FILLED", 7), lift * 3))
         else:
             self.content.addChild(self._markers(cut.vertices, VERTEX_COLOUR, _marker("CIRCLE_FILLED", 7), lift * 3))
-        self.content.addChild(self._disc(cut.vertex, radius * (1.4 if cut.scores else 1.0), CUT_COLOUR, axes,
-                                         lift * 5))
+        # The chosen vertex: a red disc, under its score marker (a red ring around it) when there is one.
+        self.content.addChild(self._disc(cut.vertex, radius * (1.4 if scored else 1.0), CUT_COLOUR, axes,
+                                         lift * (2.5 if scored else 5)))

@@ -86,11 +86,18 @@ class StepThroughPanel:
         self.view = gui_document.ActiveView
         if not hasattr(self.view, "getSceneGraph"):
             raise ValueError("the active view of {} is not a 3-D view".format(obj.Document.Label))
-        # Hide the object through its scene graph only (no property changes: the document stays as it is).
+        # Hide the object and its FEM mesh through their scene graphs only (no property changes: the document
+        # stays as it is).
+        from ..objects.fem_mesh import mesh_objects_of
+
         self.switch = obj.ViewObject.SwitchNode
         self.saved_child = self.switch.whichChild.getValue()
+        self.hidden = [(o.ViewObject.SwitchNode, o.ViewObject.SwitchNode.whichChild.getValue())
+                       for o in mesh_objects_of(obj) if o.ViewObject is not None]
         self.scene = StepScene(self.view)
         self.switch.whichChild = -1
+        for switch, _ in self.hidden:
+            switch.whichChild = -1
         self.step = -1
         self.show_step(0)
 
@@ -153,12 +160,17 @@ class StepThroughPanel:
         f.rewardLabel.setText("{:+.3f}".format(cut.reward))
         f.returnLabel.setText("{:.3f} (before this cut: {:.3f})".format(view.ret + cut.reward, view.ret))
         f.blocksLabel.setText("{} set aside, {} part{} to cut".format(view.blocks, queued, "" if queued == 1 else "s"))
-        if cut.scores:
-            best = max(range(len(cut.scores)), key=lambda i: cut.scores[i])
-            f.scoresLabel.setText("Markers from blue (low) to red (high); highest {:.3f} at {}.".format(
-                cut.scores[best], _vector(cut.vertices[best])))
+        scored = [i for i, score in enumerate(cut.scores or []) if score is not None]
+        if scored:
+            best = max(scored, key=lambda i: cut.scores[i])
+            chosen = cut.scores[cut.chosen] if cut.chosen < len(cut.scores) else None
+            f.scoresLabel.setText(
+                "The value network of {}: markers from blue (low) to red (high); highest {:.3f} at {}; the chosen "
+                "vertex (ringed in red) scores {}.".format(
+                    self.stepper.policy, cut.scores[best], _vector(cut.vertices[best]),
+                    "-" if chosen is None else "{:.3f}".format(chosen)))
         else:
-            f.scoresLabel.setText("Not shown: {}.".format(cut.scores_note))
+            f.scoresLabel.setText("Not shown: {}.".format(cut.scores_note or "no scores"))
 
     # -- task panel protocol ----------------------------------------------------------------------
     def getStandardButtons(self):
@@ -188,7 +200,8 @@ class StepThroughPanel:
         if self.scene is not None:
             self.scene.remove()
             self.scene = None
-            try:
-                self.switch.whichChild = self.saved_child
-            except Exception:
-                pass
+            for switch, child in [(self.switch, self.saved_child)] + self.hidden:
+                try:
+                    switch.whichChild = child
+                except Exception:  # the object may be gone
+                    pass

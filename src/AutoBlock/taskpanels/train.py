@@ -2,8 +2,10 @@
 preset and output file; a background run with a progress bar, a live plot of training and test return,
 Cancel, resume from the checkpoint, and making the result the default policy.
 
-It drives a training backend through the protocol of training.py. This build's core cannot train:
-the panel then shows a note saying so and its controls stay disabled.
+It drives a training backend through the protocol of training.py: by default the core's trainer, started
+through the console call it echoes (AutoBlock.start_training(AutoBlock.TrainingRequest(...))), which runs
+in a background thread with the GIL released, so FreeCAD stays responsive. A core that cannot train gets a
+note saying so and disabled controls.
 """
 
 import os
@@ -23,7 +25,8 @@ def current_panel():
 
 
 def show(backend=None):
-    """Open the Train panel. backend: a training backend (see training.py); None: the core's, if any."""
+    """Open the Train panel. backend: a training backend (see training.py; tests pass a double); None: the
+    core's, if any."""
     global _panel
     panel = TrainPanel(backend)
     _panel = panel
@@ -35,6 +38,7 @@ class TrainPanel:
     POLL_MS = 200
 
     def __init__(self, backend=None):
+        self.native = backend is None  # the core's trainer, started through its echoed console call
         self.backend = backend if backend is not None else training.training_backend()
         self.run = None
         self.result = None
@@ -46,10 +50,12 @@ class TrainPanel:
         try:
             from .. import native
 
-            presets = list(native.load().reward_presets())
+            presets = [p for p in native.load().reward_presets() if p]
         except Exception:
             presets = ["paper"]
         f.reward.addItems(presets)
+        f.reward.setToolTip("The reward the policy learns to maximise: paper (Eq. (1) of DiPrete et al. 2022) or "
+                            "mesh (few, fat blocks; the shipped default policy sac-mesh was trained with it)")
         if preferences.params().GetString(preferences.REWARD_PRESET, "") in presets:
             f.reward.setCurrentText(preferences.params().GetString(preferences.REWARD_PRESET, ""))
         data = os.path.join(paths.MODELS, "data")
@@ -67,8 +73,7 @@ class TrainPanel:
         self.timer.setInterval(self.POLL_MS)
         self.timer.timeout.connect(self.poll)
         self.available = self.backend is not None
-        f.noteLabel.setText(training.NOT_AVAILABLE + " This panel is wired to the training protocol "
-                            "(AutoBlock/training.py) and becomes active once the core can train.")
+        f.noteLabel.setText(training.NOT_AVAILABLE)
         f.noteLabel.setVisible(not self.available)
         for widget in (f.trainBox, f.testBox, f.runBox, f.startButton):
             widget.setEnabled(self.available)
@@ -109,7 +114,8 @@ class TrainPanel:
             train_generate=train_generate,
             test_folder=None if test_generate else (f.testFolderEdit.text().strip() or None),
             test_generate=test_generate, episodes=f.episodes.value(), seed=f.seed.value(),
-            reward=f.reward.currentText(), resume=f.resume.isChecked(), threads=preferences.threads())
+            reward=f.reward.currentText(), resume=f.resume.isChecked(), threads=preferences.threads(),
+            eval_every=f.evalEvery.value())
 
     # -- running ----------------------------------------------------------------------------------------
     def _set_running(self, running):
@@ -141,10 +147,28 @@ class TrainPanel:
         self.plot.clear()
         self.form.progressBar.setRange(0, request.episodes)
         self.form.progressBar.setValue(0)
-        self.run = self.backend(request)
+        before = training.last_started()
+        try:
+            if self.native:
+                from ..gui_utils import echo
+
+                # The console call, echoed and run: it starts the run in the background and returns it.
+                echo("import AutoBlock")
+                echo("_autoblock_training = AutoBlock.start_training({!r})".format(request))
+                run = training.last_started()
+                if run is None or run is before:
+                    raise RuntimeError("training did not start (see the report view)")
+            else:
+                run = training.start(request, self.backend)
+        except Exception as error:  # never raised into FreeCAD: said in the panel and the report view
+            from ..gui_utils import message_of
+
+            self._status(message_of(error), error=True)
+            FreeCAD.Console.PrintError("AutoBlock: training: {}\n".format(message_of(error)))
+            return
+        self.run = run
         self._set_running(True)
-        self._status("Training...")
-        self.run.start()
+        self._status("Training (in the background: FreeCAD stays usable)...")
         self.timer.start()
 
     def poll(self):
@@ -159,7 +183,7 @@ class TrainPanel:
             self.plot.add(event.episode, event.train_return, event.test_return)
             parts = ["episode {} of {}".format(event.episode, event.episodes)]
             if event.train_return is not None:
-                parts.append("train return {:.3f}".format(event.train_return))
+                parts.append("training return {:.3f} (10-episode average)".format(event.train_return))
             if event.test_return is not None:
                 parts.append("test return {:.3f}".format(event.test_return))
             if event.message:
@@ -181,9 +205,13 @@ class TrainPanel:
             return
         self.result = run.result or {}
         if self.result.get("cancelled"):
-            self._status("Cancelled. Tick 'Resume' and Train to continue from the checkpoint.")
+            self._status("Cancelled after {} episodes. Tick 'Resume' and Train to continue from the checkpoint.".format(
+                self.result.get("episodes_done", "some")))
         else:
-            self._status("Done: {}".format(self.result.get("policy_file", run.request.output)))
+            final = self.result.get("final_test_return")
+            self._status("Done: {}{}".format(self.result.get("policy_file") or run.request.output,
+                                             "" if final is None else " (final test return {:.3f})".format(final)))
+            FreeCAD.Console.PrintMessage("AutoBlock: training done: {}\n".format(self.result.get("policy_file")))
         self.form.defaultButton.setEnabled(bool(self.result.get("policy_file")) and not self.result.get("cancelled"))
 
     def cancel(self):

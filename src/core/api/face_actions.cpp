@@ -1,5 +1,8 @@
 #include "core/api/face_actions.h"
 
+#include <stdexcept>
+
+#include "core/common/error.h"
 #include "core/env/occt_replay.h"
 #include "core/mesh/conformal_merge.h"
 
@@ -28,6 +31,37 @@ EpisodeSnapshot face_step(const InputFace& face, const std::vector<CutSpec>& cut
   options.max_steps = max_steps;
   options.reward = reward;
   return episode_snapshot(face.grid, cuts, step, options);
+}
+
+std::vector<double> face_vertex_scores(const InputFace& face, const std::vector<CutSpec>& cuts, int step,
+                                       const std::string& policy, int max_steps, RewardPreset reward) {
+  const auto source = policy_source(policy, PolicySettings{});
+  if (!source->learned()) {
+    throw InputError("the policy '" + source->name() +
+                     "' is a baseline: it has no value network, so there are no vertex scores");
+  }
+  EpisodeOptions options;
+  options.max_steps = max_steps;
+  options.reward = reward;
+  const Episode episode = replay_episode(face.grid, cuts, step, options);
+  if (!episode.running()) {
+    throw InputError("no cut follows step " + std::to_string(step) + ": the episode is over, there is no part to score");
+  }
+  const std::vector<float> scores = source->agent()->vertex_scores(episode);
+  return std::vector<double>(scores.begin(), scores.end());
+}
+
+FaceMesh face_mesh(const InputFace& face, const std::vector<CutSpec>& cuts, int max_steps, RewardPreset reward,
+                   MeshOptions options) {
+  options.episode.max_steps = max_steps;
+  options.episode.reward = reward;
+  FaceMesh out;
+  out.decomposition = replay_decomposition(face.grid, cuts, options.episode, "replay");
+  out.result = mesh_decomposition(face, out.decomposition, options);
+  if (!out.result.conformity.conformal) {
+    throw std::runtime_error("the mesh failed the conformity check: " + out.result.conformity.problem);
+  }
+  return out;
 }
 
 }  // namespace autoblock

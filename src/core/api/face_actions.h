@@ -13,6 +13,7 @@
 #include "core/env/decomposition.h"
 #include "core/env/episode_snapshot.h"
 #include "core/io/input_face.h"
+#include "core/mesh/mesh_pipeline.h"
 
 namespace autoblock {
 
@@ -47,5 +48,29 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
 //          out of range or the cuts do not belong to the face.
 EpisodeSnapshot face_step(const InputFace& face, const std::vector<CutSpec>& cuts, int step, int max_steps = 0,
                           RewardPreset reward = RewardPreset::Paper);
+
+// Inputs:  face, cuts, step, max_steps and reward as for face_step; policy, a name of policy_names()
+//          or a policy file (empty: the default).
+// Outputs: the policy's value network's score at every model vertex of the part cut at that step,
+//          in the order of face_step's vertices (a vertex scores the best of the candidate cuts through
+//          it; -infinity when no candidate cut runs through it, e.g. lines only along the boundary).
+// Throws InputError when the policy has no value network (a baseline), when no cut follows the step,
+//          or as face_step does.
+std::vector<double> face_vertex_scores(const InputFace& face, const std::vector<CutSpec>& cuts, int step,
+                                       const std::string& policy, int max_steps = 0,
+                                       RewardPreset reward = RewardPreset::Paper);
+
+struct FaceMesh {
+  Decomposition decomposition;  // replayed from the cut sequence
+  MeshResult result;
+};
+
+// Inputs:  face; cuts, its decomposition's whole cut sequence; max_steps and reward as the sequence
+//          was made; options (size, fixed intervals; options.episode is set from max_steps, reward).
+// Outputs: the decomposition and its quad mesh (see mesh_pipeline.h). Throws InputError when the
+//          sequence does not belong to the face, the decomposition is incomplete or the request is
+//          infeasible; std::runtime_error when the mesh fails the conformity check.
+FaceMesh face_mesh(const InputFace& face, const std::vector<CutSpec>& cuts, int max_steps, RewardPreset reward,
+                   MeshOptions options);
 
 }  // namespace autoblock

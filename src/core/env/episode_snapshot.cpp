@@ -99,31 +99,75 @@ RectilinearPolygon part_polygon(const Part& part) {
   return polygon;
 }
 
-EpisodeSnapshot episode_snapshot(const GridFace& face, const std::vector<CutSpec>& cuts, int step,
-                                 EpisodeOptions options) {
-  const int steps = static_cast<int>(cuts.size());
+namespace {
+
+void check_step(int step, int steps) {
   if (step < 0 || step > steps) {
     throw InputError("step " + std::to_string(step) + " is out of range (the sequence has " + std::to_string(steps) +
                      " cuts)");
   }
-  const double tolerance = 1e-6 * face.size;
+}
+
+// The action of cut `index` on the episode's current part, checked against the episode.
+Action action_of(const Episode& episode, const std::vector<CutSpec>& cuts, int index) {
+  const CutSpec& cut = cuts[static_cast<size_t>(index)];
+  if (!episode.running()) throw InputError(where(index, cut) + ": the episode is already over");
+  if (episode.current_part_id() != cut.part_id) {
+    throw InputError(where(index, cut) + ": the part to cut is part " + std::to_string(episode.current_part_id()) +
+                     "; the cut sequence does not belong to this face");
+  }
+  const int vertex = find_vertex(episode, cut.vertex, 1e-6 * episode.face().size);
+  if (vertex < 0) {
+    throw InputError(where(index, cut) + ": no corner of the part lies there; the cut sequence does not belong to "
+                     "this face");
+  }
+  return Action{vertex, cut.direction};
+}
+
+// Plays a cut sequence, checking every cut against the episode.
+class SequencePolicy : public Policy {
+ public:
+  SequencePolicy(const std::vector<CutSpec>& cuts, std::string name) : cuts_(cuts), name_(std::move(name)) {}
+  std::string name() const override { return name_; }
+  Action choose(const Episode& episode) override {
+    if (next_ >= static_cast<int>(cuts_.size())) {
+      throw InputError("the cut sequence ends after " + std::to_string(cuts_.size()) +
+                       " cuts, before the episode does; it does not belong to this face");
+    }
+    return action_of(episode, cuts_, next_++);
+  }
+  int used() const { return next_; }
+
+ private:
+  const std::vector<CutSpec>& cuts_;
+  std::string name_;
+  int next_ = 0;
+};
+
+}  // namespace
+
+Episode replay_episode(const GridFace& face, const std::vector<CutSpec>& cuts, int step, EpisodeOptions options) {
+  check_step(step, static_cast<int>(cuts.size()));
   Episode episode(face, options);
-  // The action of cut `index` on the current part, checked against the episode.
-  auto action_of = [&](int index) {
-    const CutSpec& cut = cuts[static_cast<size_t>(index)];
-    if (!episode.running()) throw InputError(where(index, cut) + ": the episode is already over");
-    if (episode.current_part_id() != cut.part_id) {
-      throw InputError(where(index, cut) + ": the part to cut is part " + std::to_string(episode.current_part_id()) +
-                       "; the cut sequence does not belong to this face");
-    }
-    const int vertex = find_vertex(episode, cut.vertex, tolerance);
-    if (vertex < 0) {
-      throw InputError(where(index, cut) + ": no corner of the part lies there; the cut sequence does not belong to "
-                       "this face");
-    }
-    return Action{vertex, cut.direction};
-  };
-  for (int index = 0; index < step; ++index) episode.step(action_of(index));
+  for (int index = 0; index < step; ++index) episode.step(action_of(episode, cuts, index));
+  return episode;
+}
+
+Decomposition replay_decomposition(const GridFace& face, const std::vector<CutSpec>& cuts, EpisodeOptions options,
+                                   const std::string& policy) {
+  SequencePolicy sequence(cuts, policy);
+  Decomposition result = decompose_face(face, sequence, options);
+  if (sequence.used() != static_cast<int>(cuts.size())) {
+    throw InputError("the episode ends after " + std::to_string(sequence.used()) + " of the sequence's " +
+                     std::to_string(cuts.size()) + " cuts; the cut sequence does not belong to this face");
+  }
+  return result;
+}
+
+EpisodeSnapshot episode_snapshot(const GridFace& face, const std::vector<CutSpec>& cuts, int step,
+                                 EpisodeOptions options) {
+  const int steps = static_cast<int>(cuts.size());
+  Episode episode = replay_episode(face, cuts, step, options);
 
   EpisodeSnapshot snapshot;
   snapshot.step = step;
@@ -134,7 +178,7 @@ EpisodeSnapshot episode_snapshot(const GridFace& face, const std::vector<CutSpec
   for (const Piece& block : episode.blocks()) snapshot.pieces.push_back(SnapshotPiece{block.id, true, part_polygon(block.part)});
   for (const Piece& part : episode.queue()) snapshot.pieces.push_back(SnapshotPiece{part.id, false, part_polygon(part.part)});
   if (step < steps) {
-    const Action action = action_of(step);
+    const Action action = action_of(episode, cuts, step);
     snapshot.has_next = true;
     snapshot.current_part_id = episode.current_part_id();
     for (int v = 0; v < static_cast<int>(episode.current_vertices().size()); ++v) {

@@ -7,8 +7,10 @@
 // sequence that does not belong to the face is an error, not a wrong picture.
 #pragma once
 
+#include <string>
 #include <vector>
 
+#include "core/env/decomposition.h"
 #include "core/env/episode.h"
 #include "core/geometry/grid_face.h"
 #include "core/geometry/rectilinear_polygon.h"
@@ -62,6 +64,19 @@ struct EpisodeSnapshot {
 // current part, or its vertex is not one of that part's corners).
 EpisodeSnapshot episode_snapshot(const GridFace& face, const std::vector<CutSpec>& cuts, int step,
                                  EpisodeOptions options = {});
+
+// Inputs:  face; cuts, a cut sequence of the face; step, in [0, cuts.size()]; options, as for
+//          episode_snapshot.
+// Outputs: the episode after its first `step` cuts (running when a cut follows), e.g. to ask a
+//          learned policy about that step. Throws InputError as episode_snapshot does.
+Episode replay_episode(const GridFace& face, const std::vector<CutSpec>& cuts, int step, EpisodeOptions options = {});
+
+// Inputs:  face; cuts, a whole cut sequence of the face (as a report or a saved document holds it);
+//          options, as the sequence was made; policy, the name the result reports.
+// Outputs: the decomposition the sequence makes, as decompose_face reports it (seconds: the replay's).
+// Throws InputError when a cut does not match the face or the sequence ends before the episode does.
+Decomposition replay_decomposition(const GridFace& face, const std::vector<CutSpec>& cuts, EpisodeOptions options,
+                                   const std::string& policy);
 
 // Inputs: part. Output: its boundary as a polygon in model coordinates.
 RectilinearPolygon part_polygon(const Part& part);

@@ -30,12 +30,47 @@ std::string lower_extension(const std::string& path) {
 }
 
 struct Bounds {
-  double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
+  double xmin = 1e300, ymin = 1e300, zmin = 1e300, xmax = -1e300, ymax = -1e300, zmax = -1e300;
+  void add(const std::array<double, 3>& p) {
+    xmin = std::min(xmin, p[0]);
+    ymin = std::min(ymin, p[1]);
+    zmin = std::min(zmin, p[2]);
+    xmax = std::max(xmax, p[0]);
+    ymax = std::max(ymax, p[1]);
+    zmax = std::max(zmax, p[2]);
+  }
 };
+
+// A node's model coordinates.
+std::array<double, 3> node_at(const QuadMesh& mesh, size_t id, const MeshPlacement& placement) {
+  const Point2& p = mesh.nodes[id];
+  return placement.apply(p.x, p.y, mesh.z);
+}
+
+// "x<sep>y<sep>z" of a node.
+void put_node(std::string& out, const QuadMesh& mesh, size_t id, const MeshPlacement& placement, const char* sep) {
+  const std::array<double, 3> p = node_at(mesh, id, placement);
+  put(out, p[0]);
+  out += sep;
+  put(out, p[1]);
+  out += sep;
+  put(out, p[2]);
+}
 
 }  // namespace
 
-std::string gmsh_msh41(const QuadMesh& mesh) {
+bool MeshPlacement::identity() const {
+  return rotation == std::array<double, 9>{1, 0, 0, 0, 1, 0, 0, 0, 1} && translation == std::array<double, 3>{0, 0, 0};
+}
+
+std::array<double, 3> MeshPlacement::apply(double x, double y, double z) const {
+  if (identity()) return {x, y, z};  // bitwise: no arithmetic on the identity
+  const auto& r = rotation;
+  return {r[0] * x + r[1] * y + r[2] * z + translation[0], r[3] * x + r[4] * y + r[5] * z + translation[1],
+          r[6] * x + r[7] * y + r[8] * z + translation[2]};
+}
+
+std::string gmsh_msh41(const QuadMesh& mesh, const MeshPlacement& placement) {
   const size_t n_blocks = static_cast<size_t>(mesh.blocks);
   // Owner block of every node (first block using it), quads and bounds per block.
   std::vector<int> owner(mesh.nodes.size(), -1);
@@ -44,13 +79,7 @@ std::string gmsh_msh41(const QuadMesh& mesh) {
   for (size_t q = 0; q < mesh.quads.size(); ++q) {
     const size_t b = static_cast<size_t>(mesh.quad_block[q]);
     block_quads[b].push_back(q);
-    for (int id : mesh.quads[q]) {
-      const Point2& p = mesh.nodes[static_cast<size_t>(id)];
-      bounds[b].xmin = std::min(bounds[b].xmin, p.x);
-      bounds[b].xmax = std::max(bounds[b].xmax, p.x);
-      bounds[b].ymin = std::min(bounds[b].ymin, p.y);
-      bounds[b].ymax = std::max(bounds[b].ymax, p.y);
-    }
+    for (int id : mesh.quads[q]) bounds[b].add(node_at(mesh, static_cast<size_t>(id), placement));
   }
   for (size_t b = 0; b < n_blocks; ++b) {
     for (size_t q : block_quads[b]) {
@@ -71,7 +100,7 @@ std::string gmsh_msh41(const QuadMesh& mesh) {
   out += "$EndPhysicalNames\n$Entities\n0 0 " + std::to_string(n_blocks) + " 0\n";
   for (size_t b = 0; b < n_blocks; ++b) {
     out += std::to_string(b + 1);
-    for (double v : {bounds[b].xmin, bounds[b].ymin, mesh.z, bounds[b].xmax, bounds[b].ymax, mesh.z}) {
+    for (double v : {bounds[b].xmin, bounds[b].ymin, bounds[b].zmin, bounds[b].xmax, bounds[b].ymax, bounds[b].zmax}) {
       out += ' ';
       put(out, v);
     }
@@ -86,11 +115,7 @@ std::string gmsh_msh41(const QuadMesh& mesh) {
     out += "2 " + std::to_string(b + 1) + " 0 " + std::to_string(block_nodes[b].size()) + "\n";
     for (size_t id : block_nodes[b]) out += std::to_string(id + 1) + "\n";
     for (size_t id : block_nodes[b]) {
-      put(out, mesh.nodes[id].x);
-      out += ' ';
-      put(out, mesh.nodes[id].y);
-      out += ' ';
-      put(out, mesh.z);
+      put_node(out, mesh, id, placement, " ");
       out += '\n';
     }
   }
@@ -115,19 +140,15 @@ std::string gmsh_msh41(const QuadMesh& mesh) {
   return out;
 }
 
-std::string vtk_vtu(const QuadMesh& mesh) {
+std::string vtk_vtu(const QuadMesh& mesh, const MeshPlacement& placement) {
   std::string out;
   out.reserve(mesh.nodes.size() * 48 + mesh.quads.size() * 64 + 1024);
   out += "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n";
   out += "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" + std::to_string(mesh.nodes.size()) + "\" NumberOfCells=\"" +
          std::to_string(mesh.quads.size()) + "\">\n";
   out += "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (const Point2& p : mesh.nodes) {
-    put(out, p.x);
-    out += ' ';
-    put(out, p.y);
-    out += ' ';
-    put(out, mesh.z);
+  for (size_t id = 0; id < mesh.nodes.size(); ++id) {
+    put_node(out, mesh, id, placement, " ");
     out += '\n';
   }
   out += "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
@@ -149,7 +170,7 @@ std::string vtk_vtu(const QuadMesh& mesh) {
   return out;
 }
 
-std::string abaqus_inp(const QuadMesh& mesh) {
+std::string abaqus_inp(const QuadMesh& mesh, const MeshPlacement& placement) {
   std::string out;
   out.reserve(mesh.nodes.size() * 48 + mesh.quads.size() * 40 + 1024);
   out += "*HEADING\nAutoBlock mapped mesh: " + std::to_string(mesh.nodes.size()) + " nodes, " +
@@ -157,11 +178,7 @@ std::string abaqus_inp(const QuadMesh& mesh) {
   out += "*NODE, NSET=NALL\n";
   for (size_t n = 0; n < mesh.nodes.size(); ++n) {
     out += std::to_string(n + 1) + ", ";
-    put(out, mesh.nodes[n].x);
-    out += ", ";
-    put(out, mesh.nodes[n].y);
-    out += ", ";
-    put(out, mesh.z);
+    put_node(out, mesh, n, placement, ", ");
     out += '\n';
   }
   std::vector<std::vector<size_t>> block_quads(static_cast<size_t>(mesh.blocks));
@@ -193,14 +210,16 @@ bool is_mesh_file_name(const std::string& path) {
   return ext == ".msh" || ext == ".vtu" || ext == ".inp";
 }
 
-std::string mesh_file_text(const std::string& path, const QuadMesh& mesh) {
+std::string mesh_file_text(const std::string& path, const QuadMesh& mesh, const MeshPlacement& placement) {
   const std::string ext = lower_extension(path);
-  if (ext == ".msh") return gmsh_msh41(mesh);
-  if (ext == ".vtu") return vtk_vtu(mesh);
-  if (ext == ".inp") return abaqus_inp(mesh);
+  if (ext == ".msh") return gmsh_msh41(mesh, placement);
+  if (ext == ".vtu") return vtk_vtu(mesh, placement);
+  if (ext == ".inp") return abaqus_inp(mesh, placement);
   throw InputError(path + ": unknown mesh file type '" + ext + "' (expected .msh, .vtu or .inp)");
 }
 
-void write_mesh_file(const std::string& path, const QuadMesh& mesh) { write_text_file(path, mesh_file_text(path, mesh)); }
+void write_mesh_file(const std::string& path, const QuadMesh& mesh, const MeshPlacement& placement) {
+  write_text_file(path, mesh_file_text(path, mesh, placement));
+}
 
 }  // namespace autoblock

@@ -9,24 +9,35 @@
 // Node and element numbers start at 1 in .msh and .inp (0-based connectivity in .vtu).
 #pragma once
 
+#include <array>
 #include <string>
 
 #include "core/mesh/quad_mesh.h"
 
 namespace autoblock {
 
-// Inputs: mesh. Output: the file's text.
-std::string gmsh_msh41(const QuadMesh& mesh);
-std::string vtk_vtu(const QuadMesh& mesh);
-std::string abaqus_inp(const QuadMesh& mesh);
+// Where the mesh's plane lies in the model: the node (x, y, z) is written as rotation (x, y, z) +
+// translation (row-major rotation). A front end whose face lies in another plane (a CAD model's
+// side face, carried into the XY plane for the core) writes the nodes where the face is.
+struct MeshPlacement {
+  std::array<double, 9> rotation{1, 0, 0, 0, 1, 0, 0, 0, 1};
+  std::array<double, 3> translation{0, 0, 0};
+  bool identity() const;
+  std::array<double, 3> apply(double x, double y, double z) const;
+};
 
-// Inputs: path ending in .msh, .vtu or .inp (any case); mesh. Output: the text of that format.
-// Throws InputError for another extension.
-std::string mesh_file_text(const std::string& path, const QuadMesh& mesh);
+// Inputs: mesh; placement. Output: the file's text.
+std::string gmsh_msh41(const QuadMesh& mesh, const MeshPlacement& placement = {});
+std::string vtk_vtu(const QuadMesh& mesh, const MeshPlacement& placement = {});
+std::string abaqus_inp(const QuadMesh& mesh, const MeshPlacement& placement = {});
 
-// Inputs: path ending in .msh, .vtu or .inp (any case); mesh. Writes the file atomically.
+// Inputs: path ending in .msh, .vtu or .inp (any case); mesh; placement. Output: the text of that
+// format. Throws InputError for another extension.
+std::string mesh_file_text(const std::string& path, const QuadMesh& mesh, const MeshPlacement& placement = {});
+
+// Inputs: path ending in .msh, .vtu or .inp (any case); mesh; placement. Writes the file atomically.
 // Throws InputError for another extension or a file that cannot be written.
-void write_mesh_file(const std::string& path, const QuadMesh& mesh);
+void write_mesh_file(const std::string& path, const QuadMesh& mesh, const MeshPlacement& placement = {});
 
 // Inputs: path. Output: true when write_mesh_file knows its extension.
 bool is_mesh_file_name(const std::string& path);

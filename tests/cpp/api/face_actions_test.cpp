@@ -6,8 +6,15 @@
 #include <TopoDS.hxx>
 
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
 
 #include "core/api/face_actions.h"
+#include "core/api/training_job.h"
+#include "core/io/text_file.h"
+#include "core/mesh/mesh_export.h"
+#include "core/sac/policy_file.h"
 #include "core/common/error.h"
 #include "core/geometry/occt_face.h"
 #include "core/geometry/occt_properties.h"
@@ -80,4 +87,112 @@ TEST_CASE("check_face rejects unsupported faces with InputError", "[api]") {
     ++checked;
   }
   CHECK(checked >= 5);
+}
+
+TEST_CASE("face_vertex_scores: a learned policy scores every vertex of the step's part", "[api]") {
+  const InputFace face = l_face();
+  DecomposeSettings settings;
+  settings.policy = "sac-mesh";
+  const FaceDecomposition result = decompose_input_face(face, settings);
+  const auto cuts = cut_specs(result.decomposition.cuts);
+  REQUIRE_FALSE(cuts.empty());
+  const EpisodeSnapshot first = face_step(face, cuts, 0, 0, result.decomposition.reward);
+  const std::vector<double> scores = face_vertex_scores(face, cuts, 0, "sac-mesh", 0, result.decomposition.reward);
+  REQUIRE(scores.size() == first.vertices.size());
+  // A vertex through which no candidate cut runs (its lines only follow the boundary) scores -infinity.
+  const auto finite = std::count_if(scores.begin(), scores.end(), [](double s) { return std::isfinite(s); });
+  CHECK(finite >= 2);
+  for (double s : scores) CHECK((std::isfinite(s) || s == -std::numeric_limits<double>::infinity()));
+  // The deployed policy cuts at a vertex with the best score.
+  CHECK(scores[static_cast<size_t>(first.chosen_vertex)] == Approx(*std::max_element(scores.begin(), scores.end())));
+  CHECK_THROWS_WITH(face_vertex_scores(face, cuts, 0, "greedy"), Catch::Contains("baseline"));
+  CHECK_THROWS_WITH(face_vertex_scores(face, cuts, static_cast<int>(cuts.size()), "sac-mesh"),
+                    Catch::Contains("no cut follows"));
+}
+
+TEST_CASE("face_mesh meshes a decomposition from its cut sequence", "[api]") {
+  const InputFace face = l_face();
+  DecomposeSettings settings;
+  settings.policy = "optimal";
+  const FaceDecomposition result = decompose_input_face(face, settings);
+  const auto cuts = cut_specs(result.decomposition.cuts);
+  MeshOptions options;
+  options.size = 0.25;
+  const FaceMesh mesh = face_mesh(face, cuts, 0, result.decomposition.reward, options);
+  CHECK(mesh.decomposition.blocks.size() == result.decomposition.blocks.size());
+  CHECK(mesh.result.conformity.conformal);
+  CHECK(mesh.result.mesh.blocks == 2);
+  CHECK(mesh.result.mesh.quads.size() == 48);  // the L of area 3 in quads of 0.25 x 0.25
+  CHECK(mesh.result.mesh.z == 2.0);
+  const std::vector<CutSpec> foreign{{0, Point2{7, 7}, CutDirection::Vertical}};
+  CHECK_THROWS_AS(face_mesh(face, foreign, 0, RewardPreset::Paper, options), InputError);
+  options.size = -1;
+  CHECK_THROWS_AS(face_mesh(face, cuts, 0, result.decomposition.reward, options), InputError);
+}
+
+TEST_CASE("run_training_job trains, stops, resumes and writes the policy", "[api][training]") {
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::temp_directory_path() / "autoblock-training-job-test";
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  TrainingJob job;
+  job.output = (folder / "policy.pt").string();
+  job.train_generate.count = 3;
+  job.train_generate.seed = 1;
+  job.train_generate.options.max_rects = 4;
+  job.test_generate.count = 2;
+  job.test_generate.seed = 2;
+  job.test_generate.options.max_rects = 4;
+  job.episodes = 6;
+  job.eval_every = 2;
+  job.reward = "mesh";
+  std::vector<int> seen;
+  int tests = 0;
+  TrainingCallbacks callbacks;
+  callbacks.on_episode = [&](const EpisodeRecord& r, bool earlier) {
+    if (!earlier) seen.push_back(r.episode);
+    tests += r.evaluated;
+  };
+  callbacks.should_stop = [&] { return seen.size() == 3; };
+  const TrainingOutcome stopped = run_training_job(job, callbacks);
+  CHECK(stopped.cancelled);
+  CHECK(stopped.episodes_done == 3);
+  CHECK(stopped.policy_file.empty());
+  CHECK(stopped.reward == "mesh");
+  CHECK(fs::exists(stopped.checkpoint));
+  CHECK(fs::exists(stopped.log));
+  CHECK_FALSE(fs::exists(job.output));
+
+  job.resume = true;
+  int earlier = 0;
+  seen.clear();
+  callbacks.on_episode = [&](const EpisodeRecord& r, bool before) {
+    if (before) ++earlier; else seen.push_back(r.episode);
+  };
+  callbacks.should_stop = {};
+  const TrainingOutcome done = run_training_job(job, callbacks);
+  CHECK(earlier == 3);
+  CHECK(seen == std::vector<int>{4, 5, 6});
+  CHECK_FALSE(done.cancelled);
+  CHECK(done.policy_file == job.output);
+  CHECK(fs::exists(done.curves));
+  CHECK(load_policy_file(job.output, false).agent->config().reward == RewardPreset::Mesh);
+  // The policy decomposes faces like a shipped one.
+  DecomposeSettings trained;
+  trained.policy = job.output;
+  CHECK(decompose_input_face(l_face(), trained).decomposition.complete());
+
+  TrainingJob bad = job;
+  bad.output = (folder / "missing" / "p.pt").string();
+  CHECK_THROWS_WITH(run_training_job(bad, {}), Catch::Contains("does not exist"));
+  bad = job;
+  bad.resume = false;
+  bad.reward = "nope";
+  CHECK_THROWS_AS(run_training_job(bad, {}), InputError);
+  bad = job;
+  bad.resume = false;
+  bad.train_generate.count = 0;
+  bad.train_folder = (folder / "none").string();
+  CHECK_THROWS_AS(run_training_job(bad, {}), InputError);
+  fs::remove_all(folder);
 }

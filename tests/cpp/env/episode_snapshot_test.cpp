@@ -144,3 +144,37 @@ TEST_CASE("a cut sequence that does not belong to the face is an input error", "
   const std::vector<CutSpec> too_many{{0, Point2{1, 1}, CutDirection::Vertical}, {1, Point2{0, 0}, CutDirection::Vertical}};
   CHECK_THROWS_WITH(episode_snapshot(face, too_many, 2), Catch::Contains("already over"));
 }
+
+TEST_CASE("replaying a cut sequence gives the decomposition back", "[env][snapshot]") {
+  GeneratorOptions options;
+  options.holes = true;
+  const auto shapes = test::generated_shapes(6, 44, options);
+  for (size_t s = 0; s < shapes.size(); ++s) {
+    const GridFace face = make_grid_face(shapes[s].polygon);
+    auto policy = make_baseline_policy("greedy", face.size, BaselineOptions{});
+    EpisodeOptions episode_options;
+    episode_options.reward = RewardPreset::Mesh;
+    const Decomposition d = decompose_face(face, *policy, episode_options);
+    const std::vector<CutSpec> cuts = cut_specs(d.cuts);
+    const Decomposition again = replay_decomposition(face, cuts, episode_options, "replay");
+    INFO("shape " << s);
+    CHECK(again.policy == "replay");
+    CHECK(again.reward == RewardPreset::Mesh);
+    CHECK(again.status == d.status);
+    CHECK(again.total_return == Approx(d.total_return));
+    REQUIRE(again.blocks.size() == d.blocks.size());
+    for (size_t b = 0; b < d.blocks.size(); ++b) {
+      CHECK(again.blocks[b].xmin == d.blocks[b].xmin);
+      CHECK(again.blocks[b].ymax == d.blocks[b].ymax);
+    }
+    const Episode half = replay_episode(face, cuts, static_cast<int>(cuts.size() / 2), episode_options);
+    CHECK(half.steps() == static_cast<int>(cuts.size() / 2));
+    CHECK(half.running() == (cuts.size() / 2 < cuts.size()));
+    // A sequence cut short is not the face's decomposition.
+    if (!cuts.empty()) {
+      const std::vector<CutSpec> short_cuts(cuts.begin(), cuts.end() - 1);
+      CHECK_THROWS_WITH(replay_decomposition(face, short_cuts, episode_options, "replay"),
+                        Catch::Contains("ends after"));
+    }
+  }
+}

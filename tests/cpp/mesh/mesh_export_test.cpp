@@ -81,6 +81,32 @@ TEST_CASE("mesh files read back to the same mesh", "[mesh][export]") {
   CHECK(is_mesh_file_name("A.MSH"));
 }
 
+TEST_CASE("mesh files can place the mesh where the face lies in the model", "[mesh][export]") {
+  const Sample s = sample(6, 1.5);
+  // A quarter turn about Z and a shift: (x, y, z) -> (10 - y, 20 + x, z + 5).
+  MeshPlacement placement;
+  placement.rotation = {0, -1, 0, 1, 0, 0, 0, 0, 1};
+  placement.translation = {10, 20, 5};
+  CHECK_FALSE(placement.identity());
+  CHECK(MeshPlacement{}.identity());
+  QuadMesh moved = s.mesh;
+  for (Point2& p : moved.nodes) p = Point2{10 - p.y, 20 + p.x};
+  moved.z = s.mesh.z + 5;
+  check_same(test::read_msh41(gmsh_msh41(s.mesh, placement)), moved, 1e-12);
+  check_same(test::read_vtu(vtk_vtu(s.mesh, placement)), moved, 1e-12);
+  check_same(test::read_inp(abaqus_inp(s.mesh, placement)), moved, 1e-12);
+  // The identity writes the same text as no placement.
+  CHECK(mesh_file_text("a.inp", s.mesh, MeshPlacement{}) == abaqus_inp(s.mesh));
+  // A face of the XZ plane: the mesh's y becomes z.
+  MeshPlacement side;
+  side.rotation = {1, 0, 0, 0, 0, -1, 0, 1, 0};
+  const auto p = side.apply(2, 3, 0.5);
+  CHECK(p[0] == 2);
+  CHECK(p[1] == -0.5);
+  CHECK(p[2] == 3);
+  CHECK_THAT(abaqus_inp(s.mesh, side), Contains("\n1, "));
+}
+
 TEST_CASE("gmsh loads AutoBlock's .msh files and saves the same mesh", "[mesh][export][gmsh]") {
   const std::string folder = test::temporary_folder("gmsh");
   for (std::uint64_t seed : {11u, 12u, 13u}) {

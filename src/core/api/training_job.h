@@ -1,0 +1,73 @@
+// Training a policy for a front end (the Python binding, and so the FreeCAD workbench's Train panel
+// and AutoBlock.train): the data (folders of faces or generated shapes), a fresh run or one resumed
+// from its checkpoint, a report per episode and a stop request between episodes, and at the end the
+// policy file, the CSV log and the curves picture (SVG). The CLI's `autoblock train` is the same
+// flow with a terminal around it.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "core/data/shape_generator.h"
+#include "core/sac/episode_record.h"
+#include "core/sac/trainer.h"
+
+namespace autoblock {
+
+// Shapes made by the generator (shape_generator.h) instead of read from a folder.
+struct GeneratedSet {
+  int count = 0;  // 0: none (use the folder)
+  std::uint64_t seed = 0;
+  GeneratorOptions options;
+};
+
+struct TrainingJob {
+  std::string output;            // the policy file written when the run completes
+  std::string checkpoint;        // empty: output + ".checkpoint"
+  bool resume = false;           // continue the run saved in the checkpoint
+  std::string train_folder;      // a folder of .brep/.step faces, or
+  GeneratedSet train_generate;   // generated shapes (count > 0)
+  std::string test_folder;
+  GeneratedSet test_generate;
+  int episodes = 1500;           // total, counting those done before a resume
+  std::uint64_t seed = 0;
+  std::string reward = "paper";  // reward preset (a fresh run; a resumed run keeps its own)
+  std::string agent = "lookahead";
+  int threads = 1;               // LibTorch threads while training
+  int eval_every = 25;           // episodes between test evaluations and checkpoints
+  int max_steps = 0;
+};
+
+struct TrainingCallbacks {
+  // After every episode (also, first, for every episode of a resumed run's history, with
+  // earlier = true).
+  std::function<void(const EpisodeRecord& record, bool earlier)> on_episode;
+  // Asked between episodes: true stops the run (a checkpoint is written).
+  std::function<bool()> should_stop;
+};
+
+struct TrainingOutcome {
+  bool cancelled = false;        // stopped before the last episode
+  int episodes_done = 0;
+  int episodes = 0;
+  std::string reward;            // the run's reward preset
+  std::string policy_file;       // empty when cancelled
+  std::string checkpoint;
+  std::string log;               // CSV, one line per episode
+  std::string curves;            // SVG
+  double final_test_return = 0.0;
+};
+
+// Inputs:  folder (when generated.count == 0) or generated; what ("training" or "test"), for messages.
+// Outputs: the set's faces. Throws InputError for a missing folder, an unreadable or unsupported
+//          face (naming the file), or an empty set.
+TrainingSet load_training_set(const std::string& folder, const GeneratedSet& generated, const std::string& what);
+
+// Inputs:  job; callbacks.
+// Outputs: what the run did and wrote. Throws InputError for bad data or options (a missing output
+//          folder, a missing or foreign checkpoint, an unknown reward preset or agent); exceptions
+//          thrown by the callbacks pass through (after the checkpoint is written).
+TrainingOutcome run_training_job(const TrainingJob& job, const TrainingCallbacks& callbacks);
+
+}  // namespace autoblock
