@@ -1,10 +1,12 @@
-// autoblock_bench_mesh: AutoBlock's mapped quad meshes (policies greedy and optimal) against Debian's
+// autoblock_bench_mesh: AutoBlock's mapped quad meshes (by default with the policies sac-mesh,
+// greedy and optimal; --policy chooses) against Debian's
 // gmsh 4.8 all-quad meshing on freshly generated faces. Gmsh runs Frontal-Delaunay for quads
 // (Mesh.Algorithm 8, with Mesh.CrossFieldClosestPoint = 0: it crashes otherwise in 4.8) and the
 // full-quad Blossom recombination (Mesh.RecombineAll = 1, Mesh.RecombinationAlgorithm = 3: no
 // triangle left). Sizes: AutoBlock's default h (1/20 of the face's longer side); gmsh once with
 // Mesh.MeshSizeMin = Mesh.MeshSizeMax = h, once with the size scaled per face so that its quad
-// count comes close to AutoBlock greedy's (two rounds of h' = h sqrt(gmsh's count / AutoBlock's)).
+// count comes close to the first AutoBlock policy's (two rounds of h' = h sqrt(gmsh's count /
+// AutoBlock's)).
 // Prints Markdown.
 //
 //   build/bin/autoblock_bench_mesh --small 200 --large 100
@@ -33,6 +35,8 @@
 #include <sstream>
 
 #include "core/baselines/baseline_policy.h"
+#include "core/sac/compute_threads.h"
+#include "core/sac/policy_source.h"
 #include "core/common/error.h"
 #include "core/data/shape_generator.h"
 #include "core/env/decomposition.h"
@@ -66,11 +70,9 @@ double median(std::vector<double> v) {
   return n == 0 ? 0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-Sample autoblock_sample(const Face& f, const std::string& policy_name, double time_limit) {
+Sample autoblock_sample(const Face& f, const PolicySource& source) {
   const auto start = std::chrono::steady_clock::now();
-  BaselineOptions options;
-  options.optimal_seconds = time_limit;
-  auto policy = make_baseline_policy(policy_name, f.face.grid.size, options);
+  auto policy = source.make(f.face.grid.size, 0);
   const Decomposition d = decompose_face(f.face.grid, *policy);
   const MeshResult r = mesh_decomposition(f.face, d);
   Sample s;
@@ -221,7 +223,7 @@ void print_row(const std::string& method, const std::vector<Sample>& samples) {
 }
 
 void run_set(const std::string& title, int count, int min_rects, int max_rects, std::uint64_t seed, bool holes,
-             double time_limit, const std::string& folder) {
+             const std::vector<std::shared_ptr<PolicySource>>& policies, const std::string& folder) {
   std::mt19937_64 rng(seed);
   GeneratorOptions options;
   options.min_rects = min_rects;
@@ -240,9 +242,12 @@ void run_set(const std::string& title, int count, int min_rects, int max_rects, 
   std::map<std::string, std::vector<Sample>> samples;
   const bool tty = isatty(2);
   for (size_t k = 0; k < faces.size(); ++k) {
-    const Sample greedy = autoblock_sample(faces[k], "greedy", time_limit);
-    samples["AutoBlock greedy"].push_back(greedy);
-    samples["AutoBlock optimal"].push_back(autoblock_sample(faces[k], "optimal", time_limit));
+    Sample first;
+    for (size_t p = 0; p < policies.size(); ++p) {
+      const Sample sample = autoblock_sample(faces[k], *policies[p]);
+      if (p == 0) first = sample;
+      samples["AutoBlock " + policies[p]->name()].push_back(sample);
+    }
     const double h = target_size_for(faces[k].face, 0.0);
     const Sample at_h = gmsh_sample(faces[k], folder, static_cast<int>(k), h);
     samples[gmsh_h].push_back(at_h);
@@ -250,7 +255,7 @@ void run_set(const std::string& title, int count, int min_rects, int max_rects, 
     Sample matched = at_h;
     double size = h;
     for (int round = 0; round < 2 && matched.quads > 0; ++round) {
-      size *= std::sqrt(static_cast<double>(matched.quads) / greedy.quads);
+      size *= std::sqrt(static_cast<double>(matched.quads) / first.quads);
       matched = gmsh_sample(faces[k], folder, static_cast<int>(k), size);
     }
     samples[gmsh_matched].push_back(matched);
@@ -262,9 +267,11 @@ void run_set(const std::string& title, int count, int min_rects, int max_rects, 
               "interior vertices | faces with irregular vertices | mean max aspect ratio | faces with min SJ 1 and no "
               "irregular vertex | conformal | mean ms | median ms | mean ms, whole process |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  for (const std::string& method : {std::string("AutoBlock greedy"), std::string("AutoBlock optimal"), gmsh_h, gmsh_matched}) {
-    print_row(method, samples[method]);
-  }
+  std::vector<std::string> methods;
+  for (const auto& p : policies) methods.push_back("AutoBlock " + p->name());
+  methods.push_back(gmsh_h);
+  methods.push_back(gmsh_matched);
+  for (const std::string& method : methods) print_row(method, samples[method]);
 }
 
 }  // namespace
@@ -275,6 +282,9 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 404;
   bool holes = false;
   double time_limit = 30.0;
+  std::vector<std::string> policy_names{"sac-mesh", "greedy", "optimal"};
+  app.add_option("--policy", policy_names, "AutoBlock policies to compare (the first sets gmsh's matched count)")
+      ->capture_default_str();
   app.add_option("--small", small, "faces of 2-10 rectangles")->capture_default_str();
   app.add_option("--large", large, "faces of 11-40 rectangles")->capture_default_str();
   app.add_option("--seed", seed, "generator seed (the large set uses seed + 1)")->capture_default_str();
@@ -285,10 +295,17 @@ int main(int argc, char** argv) {
     const std::string folder =
         (std::filesystem::temp_directory_path() / ("autoblock-bench-mesh-" + std::to_string(std::random_device{}()))).string();
     std::filesystem::create_directories(folder);
+    set_compute_threads(1);
+    std::vector<std::shared_ptr<PolicySource>> policies;
+    for (const std::string& name : policy_names) {
+      BaselineOptions options;
+      options.optimal_seconds = time_limit;
+      policies.push_back(std::make_shared<PolicySource>(name, options));
+    }
     const std::string kind = holes ? ", with holes" : "";
-    if (small > 0) run_set("2-10 rectangles" + kind + ", seed " + std::to_string(seed), small, 2, 10, seed, holes, time_limit, folder);
+    if (small > 0) run_set("2-10 rectangles" + kind + ", seed " + std::to_string(seed), small, 2, 10, seed, holes, policies, folder);
     if (large > 0) {
-      run_set("11-40 rectangles" + kind + ", seed " + std::to_string(seed + 1), large, 11, 40, seed + 1, holes, time_limit, folder);
+      run_set("11-40 rectangles" + kind + ", seed " + std::to_string(seed + 1), large, 11, 40, seed + 1, holes, policies, folder);
     }
     std::filesystem::remove_all(folder);
   } catch (const std::exception& e) {

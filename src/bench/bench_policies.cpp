@@ -41,11 +41,7 @@ double rescore(const GridFace& face, const std::vector<CutRecord>& cuts, RewardP
   options.max_steps = static_cast<int>(cuts.size()) + 1;
   Episode episode(face, options);
   for (const CutRecord& cut : cuts) {
-    const auto& vertices = episode.current_vertices();
-    int vertex = -1;
-    for (int v = 0; v < static_cast<int>(vertices.size()); ++v) {
-      if (vertices[static_cast<size_t>(v)].corner.i == cut.vertex.i && vertices[static_cast<size_t>(v)].corner.j == cut.vertex.j) vertex = v;
-    }
+    const int vertex = episode.vertex_at(cut.vertex);
     episode.step(Action{vertex, cut.direction});
   }
   return episode.total_return();

@@ -65,6 +65,14 @@ Point2 Episode::vertex_position(int vertex) const {
   return Point2{face_.grid->xs[static_cast<size_t>(c.i)], face_.grid->ys[static_cast<size_t>(c.j)]};
 }
 
+int Episode::vertex_at(const Corner& corner) const {
+  for (int v = 0; v < static_cast<int>(vertices_.size()); ++v) {
+    const Corner& c = vertices_[static_cast<size_t>(v)].corner;
+    if (c.i == corner.i && c.j == corner.j) return v;
+  }
+  return -1;
+}
+
 AxisLine Episode::line_of(const Action& action) const {
   const Corner& c = vertices_.at(static_cast<size_t>(action.vertex)).corner;
   return AxisLine{action.direction, action.direction == CutDirection::Vertical ? c.i : c.j};

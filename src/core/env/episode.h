@@ -69,6 +69,8 @@ class Episode {
   const std::vector<VertexRef>& current_vertices() const { return vertices_; }
   Observation observe(int vertex) const;
   Point2 vertex_position(int vertex) const;
+  // The number of the current part's vertex at that grid corner, or -1 when it is not one.
+  int vertex_at(const Corner& corner) const;
 
   // The line of an action on the current part, the pieces it would leave and their reward, without
   // changing anything.

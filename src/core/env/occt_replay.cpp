@@ -59,13 +59,7 @@ std::vector<TopoDS_Face> replay_cuts_occt(const TopoDS_Face& face, const GridFac
     if (!episode.running() || episode.current_part_id() != cut.part_id) {
       throw std::logic_error("replay_cuts_occt: the cut sequence does not match the face");
     }
-    int vertex = -1;
-    const auto& vertices = episode.current_vertices();
-    for (int v = 0; v < static_cast<int>(vertices.size()); ++v) {
-      if (vertices[static_cast<size_t>(v)].corner.i == cut.vertex.i && vertices[static_cast<size_t>(v)].corner.j == cut.vertex.j) {
-        vertex = v;
-      }
-    }
+    const int vertex = episode.vertex_at(cut.vertex);
     if (vertex < 0) throw std::logic_error("replay_cuts_occt: the cut's vertex is not a corner of its part");
     const Action action{vertex, cut.direction};
     const std::vector<Part> pieces = episode.pieces_of(action);

@@ -99,6 +99,12 @@ void draw_panel(std::ostringstream& svg, const ChartPanel& panel, double ox, dou
         << "/><text x=\"" << ox + left + 40 << "\" y=\"" << ly
         << "\" font-family=\"sans-serif\" font-size=\"11\">" << escape(label) << "</text>\n";
   };
+  const size_t entries = panel.series.size() + panel.references.size();
+  size_t longest = 0;
+  for (const ChartSeries& s : panel.series) longest = std::max(longest, s.label.size());
+  for (const ChartReference& r : panel.references) longest = std::max(longest, r.label.size());
+  svg << "<rect x=\"" << ox + left + 4 << "\" y=\"" << oy + top + 3 << "\" width=\"" << 44 + 6.2 * static_cast<double>(longest)
+      << "\" height=\"" << 16 * static_cast<double>(entries) + 6 << "\" fill=\"white\" fill-opacity=\"0.85\"/>\n";
   for (const ChartSeries& s : panel.series) legend_entry(s.label, s.colour, false);
   for (const ChartReference& r : panel.references) legend_entry(r.label, r.colour, true);
 }
