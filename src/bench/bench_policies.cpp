@@ -17,6 +17,7 @@
 #include "core/io/dataset.h"
 #include "core/io/input_face.h"
 #include "core/sac/compute_threads.h"
+#include "core/sac/lookahead_agent.h"
 #include "core/sac/policy_source.h"
 
 using namespace autoblock;
@@ -53,7 +54,14 @@ Figures measure(const std::vector<GridFace>& faces, const std::string& name, Rew
   BaselineOptions baseline;
   baseline.optimal_seconds = 60;
   baseline.reward = objective;
-  const PolicySource source(name, baseline);
+  // NAME@V: the learned policy NAME deployed with V symmetric views (lookahead agent).
+  const size_t at = name.rfind('@');
+  const PolicySource source(at == std::string::npos ? name : name.substr(0, at), baseline);
+  if (at != std::string::npos) {
+    auto agent = std::dynamic_pointer_cast<LookaheadAgent>(source.agent());
+    if (!agent) throw InputError(name + ": views apply to the lookahead agent's policies only");
+    agent->set_deploy_views(std::stoi(name.substr(at + 1)));
+  }
   Figures f;
   for (size_t k = 0; k < faces.size(); ++k) {
     EpisodeOptions options;
@@ -105,7 +113,7 @@ int main(int argc, char** argv) {
   std::string data = "models/data/test";
   int generated = 200, large = 100;
   std::uint64_t seed = 4242;
-  app.add_option("--policy", learned, "trained policies (names or files), repeatable");
+  app.add_option("--policy", learned, "trained policies (names or files; NAME@V: deployed with V symmetric views), repeatable");
   app.add_option("--data", data, "shipped test folder")->capture_default_str();
   app.add_option("--generated", generated, "fresh 2-10 rectangle faces")->capture_default_str();
   app.add_option("--large", large, "fresh 11-40 rectangle faces")->capture_default_str();

@@ -60,7 +60,8 @@ void add_train_command(CLI::App& app) {
   struct Arguments {
     std::string train, test, out = "policy.pt", resume, checkpoint, log, curves;
     std::string agent = "lookahead", reward = "paper", value_network, bootstrap = "graph";
-    int episodes = 1500, threads = 2, eval_every = 25, batch_size = 0;
+    int episodes = 1500, threads = 2, eval_every = 25, batch_size = 0, views = 0;
+    double lr_final = 0.0, average = -1.0;
     std::uint64_t seed = 0;
   };
   auto args = std::make_shared<Arguments>();
@@ -90,6 +91,18 @@ void add_train_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--batch-size", args->batch_size, "replay batch size (default from the configuration)")
       ->check(CLI::Range(1, 4096));
+  command->add_option("--lr-final", args->lr_final,
+                      "lookahead agent: the learning rate's fraction left at the last episode, after a half-cosine decay "
+                      "(1: constant; default from the configuration)")
+      ->check(CLI::Range(1e-6, 1.0));
+  command->add_option("--weight-average", args->average,
+                      "lookahead agent: deploy an exponential moving average of the weights with this decay per update "
+                      "(0: the trained weights; default from the configuration)")
+      ->check(CLI::Range(0.0, 0.9999));
+  command->add_option("--deploy-views", args->views,
+                      "lookahead agent, deployed: average each piece's value over this many of the square's symmetries "
+                      "(1-8; default from the configuration)")
+      ->check(CLI::Range(1, 8));
   command->add_option("--eval-every", args->eval_every, "episodes between test evaluations and checkpoints")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
@@ -119,6 +132,9 @@ void add_train_command(CLI::App& app) {
       if (!args->value_network.empty()) config.value_network = args->value_network;
       config.bootstrap = args->bootstrap == "graph" ? Bootstrap::Graph : Bootstrap::Critics;
       if (args->batch_size > 0) config.batch_size = args->batch_size;
+      if (args->lr_final > 0.0) config.lr_final_fraction = args->lr_final;
+      if (args->average >= 0.0) config.weight_average_decay = args->average;
+      if (args->views > 0) config.deploy_views = args->views;
       trainer = std::make_unique<Trainer>(config, options, train, test);
     }
     const RewardPreset reward = trainer->agent()->config().reward;

@@ -18,7 +18,7 @@ Capabilities capabilities() {
 
 std::vector<std::string> policy_names() {
   std::vector<std::string> names = shipped_policy_names();
-  for (const std::string& name : {"optimal", "greedy", "random-split", "random"}) names.push_back(name);
+  for (const char* name : {"optimal", "greedy", "random-split", "random"}) names.push_back(name);
   return names;
 }
 

@@ -27,6 +27,9 @@ class LearningAgent : public std::enable_shared_from_this<LearningAgent> {
   // One training episode on face: act stochastically (uniformly during the warm-up), remember,
   // learn. Output: the episode's record (no episode number, evaluation or clock yet).
   virtual EpisodeRecord train_episode(const GridFace& face, std::mt19937_64& rng, int max_steps) = 0;
+  // Where the run stands, told before every training episode: episodes done over the run's total,
+  // in [0, 1]. Agents with a learning-rate schedule follow it; the default ignores it.
+  virtual void set_training_progress(double fraction) { (void)fraction; }
 
   // The deterministic deployed policy, sharing this agent (which it does not change).
   virtual std::unique_ptr<Policy> deployed_policy(const std::string& name) = 0;

@@ -50,36 +50,47 @@ class LookaheadPolicy : public Policy {
     return Action{line.vertex, line.line.direction};
   }
 
+  // Q(P, L) for every candidate cut; with deploy_views > 1 each piece's value is the mean over that
+  // many of the square's symmetries of the piece (test-time augmentation: the network is trained to
+  // be invariant under them, and averaging its views cancels part of its error).
   std::vector<double> values(const PartState& state, double face_size) {
+    static constexpr int kViewOrder[8] = {0, 4, 2, 6, 1, 5, 3, 7};  // identity, half turn, quarter turns, mirrors
+    const int views = std::clamp(agent_->config().deploy_views, 1, 8);
     std::vector<const PartState*> children;
     std::vector<std::shared_ptr<const PartState>> keep;
     for (const LineCandidate& line : state.lines) {
       for (const Part& piece : line.to_cut) {
-        keep.push_back(state_of(piece, face_size));
-        children.push_back(keep.back().get());
+        for (int v = 0; v < views; ++v) {
+          keep.push_back(state_of(piece, face_size, kViewOrder[v]));
+          children.push_back(keep.back().get());
+        }
       }
     }
-    const std::vector<double> w = children.empty() ? std::vector<double>{} : agent_->state_values(children);
+    const std::vector<double> w = children.empty() ? std::vector<double>{} : agent_->deployed_values(children);
     std::vector<double> q;
     size_t k = 0;
     for (const LineCandidate& line : state.lines) {
       double value = line.reward;
-      for (size_t c = 0; c < line.to_cut.size(); ++c) value += agent_->config().gamma * w[k++];
+      for (size_t c = 0; c < line.to_cut.size(); ++c) {
+        double mean = 0.0;
+        for (int v = 0; v < views; ++v) mean += w[k++];
+        value += agent_->config().gamma * mean / views;
+      }
       q.push_back(value);
     }
     return q;
   }
 
-  std::shared_ptr<const PartState> state_of(const Part& part, double face_size) {
-    auto& slot = cache_[part];
-    if (!slot) slot = make_part_state(part, agent_->state_options(face_size));
+  std::shared_ptr<const PartState> state_of(const Part& part, double face_size, int symmetry = 0) {
+    auto& slot = cache_[symmetry][part];
+    if (!slot) slot = make_part_state(symmetry == 0 ? part : transform_part(part, symmetry), agent_->state_options(face_size));
     return slot;
   }
 
  private:
   std::shared_ptr<LookaheadAgent> agent_;
   std::string name_;
-  std::unordered_map<Part, std::shared_ptr<const PartState>, PartHash> cache_;
+  std::unordered_map<Part, std::shared_ptr<const PartState>, PartHash> cache_[8];  // per symmetry, keyed by the untransformed part
 };
 
 }  // namespace
@@ -96,10 +107,32 @@ LookaheadAgent::LookaheadAgent(const SacConfig& config)
     for (auto& item : target_->named_parameters(true)) item.value().copy_(source[item.key()]);
   }
   target_->eval();
+  if (averaging()) {
+    average_ = ValueNetwork(network);
+    torch::NoGradGuard no_grad;
+    const auto source = value_->named_parameters(true);
+    for (auto& item : average_->named_parameters(true)) item.value().copy_(source[item.key()]);
+    average_->eval();
+  }
   log_alpha_ = torch::full({}, std::log(config.initial_direction_temperature * scale_), torch::requires_grad());
   value_optimizer_ = std::make_unique<torch::optim::Adam>(value_->parameters(), torch::optim::AdamOptions(config.lr_value));
   temperature_optimizer_ = std::make_unique<torch::optim::Adam>(std::vector<torch::Tensor>{log_alpha_},
                                                                 torch::optim::AdamOptions(config.lr_temperature));
+}
+
+void LookaheadAgent::set_training_progress(double fraction) {
+  // Half-cosine decay of the value network's learning rate from lr_value to
+  // lr_final_fraction * lr_value: late updates refine instead of jumping between nearby solutions.
+  const double p = std::clamp(fraction, 0.0, 1.0);
+  const double f = config_.lr_final_fraction;
+  const double lr = config_.lr_value * (f + (1.0 - f) * 0.5 * (1.0 + std::cos(M_PI * p)));
+  for (auto& group : value_optimizer_->param_groups()) {
+    static_cast<torch::optim::AdamOptions&>(group.options()).lr(lr);
+  }
+}
+
+double LookaheadAgent::learning_rate() const {
+  return static_cast<const torch::optim::AdamOptions&>(value_optimizer_->param_groups().front().options()).lr();
 }
 
 PartStateOptions LookaheadAgent::state_options(double face_size) const {
@@ -129,6 +162,33 @@ std::vector<double> LookaheadAgent::state_values(const std::vector<const PartSta
   value_->eval();
   const torch::Tensor w = forward_values(value_, states).contiguous();
   return std::vector<double>(w.data_ptr<float>(), w.data_ptr<float>() + w.numel());
+}
+
+std::vector<double> LookaheadAgent::deployed_values(const std::vector<const PartState*>& states) {
+  if (!averaging()) return state_values(states);
+  torch::NoGradGuard no_grad;
+  average_->eval();
+  const torch::Tensor w = forward_values(average_, states).contiguous();
+  return std::vector<double>(w.data_ptr<float>(), w.data_ptr<float>() + w.numel());
+}
+
+void LookaheadAgent::update_average() {
+  // average <- d average + (1 - d) trained, for the weights and batch norm's running statistics,
+  // with d = min(decay, (1 + updates) / (10 + updates)) so that early on the average does not hold on
+  // to the untrained initial weights.
+  torch::NoGradGuard no_grad;
+  const double u = static_cast<double>(updates_);
+  const double d = std::min(config_.weight_average_decay, (1.0 + u) / (10.0 + u));
+  const auto parameters = value_->named_parameters(true);
+  for (auto& item : average_->named_parameters(true)) item.value().mul_(d).add_(parameters[item.key()], 1.0 - d);
+  const auto buffers = value_->named_buffers(true);
+  for (auto& item : average_->named_buffers(true)) {
+    if (item.value().is_floating_point()) {
+      item.value().mul_(d).add_(buffers[item.key()], 1.0 - d);
+    } else {
+      item.value().copy_(buffers[item.key()]);
+    }
+  }
 }
 
 std::vector<double> LookaheadAgent::cut_values(const PartState& state, double face_size) {
@@ -275,6 +335,7 @@ std::map<std::string, double> LookaheadAgent::update(size_t count, std::mt19937_
   temperature_loss.backward();
   temperature_optimizer_->step();
 
+  if (averaging()) update_average();
   if (++updates_ % config_.target_update_every == 0) {
     torch::NoGradGuard no_grad;
     const auto source = value_->named_parameters(true);
@@ -314,11 +375,17 @@ std::vector<float> LookaheadAgent::vertex_scores(const Episode& episode) {
 }
 
 void LookaheadAgent::save(torch::serialize::OutputArchive& archive, bool training) const {
+  // "value" is the deployed network; a checkpoint of an averaging run keeps the trained one too.
   torch::serialize::OutputArchive value;
-  value_->save(value);
+  (averaging() ? average_ : value_)->save(value);
   archive.write("value", value);
   archive.write("log_alpha", log_alpha_.detach());
   if (!training) return;
+  if (averaging()) {
+    torch::serialize::OutputArchive trained;
+    value_->save(trained);
+    archive.write("value_trained", trained);
+  }
   torch::serialize::OutputArchive target, value_optimizer, temperature_optimizer;
   target_->save(target);
   archive.write("value_target", target);
@@ -334,6 +401,13 @@ void LookaheadAgent::load(torch::serialize::InputArchive& archive, bool training
   torch::serialize::InputArchive value;
   archive.read("value", value);
   value_->load(value);
+  if (averaging()) {
+    torch::NoGradGuard no_grad;
+    const auto source = value_->named_parameters(true);
+    for (auto& item : average_->named_parameters(true)) item.value().copy_(source[item.key()]);
+    const auto buffers = value_->named_buffers(true);
+    for (auto& item : average_->named_buffers(true)) item.value().copy_(buffers[item.key()]);
+  }
   torch::Tensor log_alpha;
   archive.read("log_alpha", log_alpha);
   {
@@ -346,6 +420,11 @@ void LookaheadAgent::load(torch::serialize::InputArchive& archive, bool training
     const auto source = value_->named_parameters(true);
     for (auto& item : target_->named_parameters(true)) item.value().copy_(source[item.key()]);
     return;
+  }
+  if (averaging()) {
+    torch::serialize::InputArchive trained;
+    archive.read("value_trained", trained);
+    value_->load(trained);
   }
   torch::serialize::InputArchive target, value_optimizer, temperature_optimizer;
   archive.read("value_target", target);

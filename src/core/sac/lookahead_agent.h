@@ -28,6 +28,7 @@
 // symmetries (rewards and values do not change under them), which multiplies the training data.
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <random>
 #include <string>
@@ -48,6 +49,7 @@ class LookaheadAgent : public LearningAgent {
 
   const SacConfig& config() const override { return config_; }
   EpisodeRecord train_episode(const GridFace& face, std::mt19937_64& rng, int max_steps) override;
+  void set_training_progress(double fraction) override;
   std::unique_ptr<Policy> deployed_policy(const std::string& name) override;
   std::vector<float> vertex_scores(const Episode& episode) override;
   void save(torch::serialize::OutputArchive& archive, bool training) const override;
@@ -60,7 +62,13 @@ class LookaheadAgent : public LearningAgent {
   std::vector<double> cut_values(const PartState& state, double face_size);
   // W of the given states (online network, evaluation mode, no gradient), in return units.
   std::vector<double> state_values(const std::vector<const PartState*>& states);
+  // The same with the deployed network (the weight average when weight_average_decay > 0).
+  std::vector<double> deployed_values(const std::vector<const PartState*>& states);
   double temperature() const;
+  // Overrides the configuration's deploy_views (1 to 8) of this agent's deployed policies.
+  void set_deploy_views(int views) { config_.deploy_views = std::max(1, std::min(8, views)); }
+  // The value network's current learning rate (set_training_progress moves it).
+  double learning_rate() const;
 
   // One gradient step on `count` remembered parts, then the target refresh when due. Output:
   // named metrics (value_loss, alpha, entropy, mean_target).
@@ -80,7 +88,10 @@ class LookaheadAgent : public LearningAgent {
 
   SacConfig config_;
   double scale_;
-  ValueNetwork value_{nullptr}, target_{nullptr};
+  bool averaging() const { return config_.weight_average_decay > 0.0; }
+  void update_average();
+
+  ValueNetwork value_{nullptr}, target_{nullptr}, average_{nullptr};  // average_: only when averaging()
   torch::Tensor log_alpha_;
   std::unique_ptr<torch::optim::Adam> value_optimizer_, temperature_optimizer_;
   std::vector<Memory> memory_;

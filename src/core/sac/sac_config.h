@@ -30,6 +30,14 @@ struct SacConfig {
   double lr_critic = 1e-3;
   double lr_actor = 1e-3;
   double lr_temperature = 1e-3;
+  double lr_final_fraction = 1.0;       // lookahead: the value network's learning rate falls along a
+                                        // half cosine to this fraction of lr_value by the last
+                                        // episode (1: constant)
+  double weight_average_decay = 0.0;    // lookahead: the deployed value network is an exponential
+                                        // moving average of the trained one, with this decay per
+                                        // update (0: the trained weights themselves)
+  int deploy_views = 1;                 // lookahead, deployed: a piece's value is the mean over this
+                                        // many of the square's symmetries of it (1 to 8)
   double polyak = 0.01;                 // paper: target networks move this fraction per update
   int target_update_every = 25;         // lookahead: the target network is copied every so many updates
   double direction_target_entropy = 0.3;     // nats; ln 2 = 0.69 is the maximum for 2 directions

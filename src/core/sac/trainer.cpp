@@ -74,6 +74,7 @@ void Trainer::run(const std::function<void(const EpisodeRecord&)>& on_episode, c
   while (episodes_done_ < options_.episodes) {
     if (should_stop && should_stop()) break;
     const size_t index = std::uniform_int_distribution<size_t>(0, train_.faces.size() - 1)(rng_);
+    agent_->set_training_progress(static_cast<double>(episodes_done_) / static_cast<double>(options_.episodes));
     EpisodeRecord record = agent_->train_episode(train_.faces[index], rng_, options_.max_steps);
     record.shape = train_.names.empty() ? std::to_string(index) : train_.names[index];
     record.episode = ++episodes_done_;

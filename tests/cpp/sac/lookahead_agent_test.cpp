@@ -5,6 +5,7 @@
 #include "core/geometry/part_boundary.h"
 #include "core/geometry/part_symmetry.h"
 #include "core/sac/lookahead_agent.h"
+#include "core/sac/policy_file.h"
 #include "support/test_shapes.h"
 
 using namespace autoblock;
@@ -67,4 +68,55 @@ TEST_CASE("trained on a part in all eight symmetries, the value network agrees a
   // ... and it learnt something: the untrained network's values are near 0, the U's targets above 9.8.
   CHECK(mean > 0.5 * target);
   CHECK(target > 9.8);
+}
+
+TEST_CASE("an averaging agent deploys the moving average of its weights, and files keep both", "[sac][lookahead][policy]") {
+  torch::manual_seed(6);
+  SacConfig config = default_sac_config("lookahead");
+  config.weight_average_decay = 0.9;
+  auto agent = std::make_shared<LookaheadAgent>(config);
+  const GridFace u = test::grid_face_of({{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}});
+  const GridFace l = test::grid_face_of({{0, 0}, {4, 0}, {4, 1}, {1, 1}, {1, 3}, {0, 3}});
+  const auto su = make_part_state(u.whole, agent->state_options(u.size));
+  const auto sl = make_part_state(l.whole, agent->state_options(l.size));
+  const std::vector<const PartState*> states{su.get(), sl.get()};
+  // Before any update the average is the trained network.
+  CHECK(agent->deployed_values(states) == agent->state_values(states));
+  agent->remember(u.whole, u.size, 0);
+  agent->remember(l.whole, l.size, 3);
+  std::mt19937_64 rng(3);
+  for (int k = 0; k < 20; ++k) agent->update(2, rng);
+  // The trained network moved; the average lags behind it.
+  const std::vector<double> trained = agent->state_values(states), deployed = agent->deployed_values(states);
+  CHECK(trained != deployed);
+
+  // A policy file holds the deployed (averaged) network; a checkpoint also the trained one.
+  const std::string folder = test::temporary_folder("average");
+  save_policy_file(folder + "/p.pt", *agent, nlohmann::json::object(), false);
+  save_policy_file(folder + "/p.pt.checkpoint", *agent, nlohmann::json::object(), true);
+  auto policy = std::static_pointer_cast<LookaheadAgent>(load_policy_file(folder + "/p.pt", false).agent);
+  CHECK(policy->deployed_values(states) == deployed);
+  CHECK(policy->state_values(states) == deployed);
+  auto checkpoint = std::static_pointer_cast<LookaheadAgent>(load_policy_file(folder + "/p.pt.checkpoint", true).agent);
+  CHECK(checkpoint->deployed_values(states) == deployed);
+  CHECK(checkpoint->state_values(states) == trained);
+  CHECK(checkpoint->config().weight_average_decay == 0.9);
+}
+
+TEST_CASE("the learning rate falls along a half cosine to its final fraction", "[sac][lookahead]") {
+  SacConfig config = default_sac_config("lookahead");
+  config.lr_value = 2e-3;
+  config.lr_final_fraction = 0.1;
+  auto agent = std::make_shared<LookaheadAgent>(config);
+  CHECK(agent->learning_rate() == Approx(2e-3));
+  agent->set_training_progress(0.5);  // halfway: the mean of the two ends
+  CHECK(agent->learning_rate() == Approx(2e-3 * (0.1 + 0.9 * 0.5)));
+  agent->set_training_progress(0.25);  // 0.1 + 0.9 (1 + cos(pi / 4)) / 2 = 0.8681980515
+  CHECK(agent->learning_rate() == Approx(2e-3 * 0.8681980515));
+  agent->set_training_progress(1.0);
+  CHECK(agent->learning_rate() == Approx(2e-4));
+  // The default schedule is constant.
+  auto constant = std::make_shared<LookaheadAgent>(default_sac_config("lookahead"));
+  constant->set_training_progress(0.7);
+  CHECK(constant->learning_rate() == Approx(default_sac_config("lookahead").lr_value));
 }
