@@ -2,8 +2,8 @@
 // mean return under Eq. (1) and as a fraction of the optimal mean, blocks against the minimum
 // partition, mean block aspect ratio, completion rate and decomposition time per face.
 //
-//   build/bin/autoblock_bench_policies --policy sac-paper --policy sac-mesh \
-//       --data models/data/test --generated 200 --large 100 --seed 4242
+//   build/bin/autoblock_bench_policies --policy sac-paper --policy sac-mesh
+//       --data models/data/test --generated 200 --large 100 --seed 4242     (one command line)
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -122,7 +122,7 @@ int main(int argc, char** argv) {
   try {
     set_compute_threads(1);
     std::vector<std::string> policies = learned;
-    for (const std::string& b : {"greedy", "random", "random-split"}) policies.push_back(b);
+    for (const char* b : {"greedy", "random", "random-split"}) policies.push_back(b);
     std::vector<GridFace> shipped;
     for (const std::string& file : collect_shape_files({data})) shipped.push_back(load_input_face(file).grid);
     auto fresh = [seed](int count, int lo, int hi, std::uint64_t offset) {

@@ -12,6 +12,7 @@ import FreeCAD
 
 from .. import console, native, preferences
 from ..transactions import transaction
+from . import properties
 
 TYPE = "AutoBlock::AutoBlock"
 
@@ -62,13 +63,7 @@ class AutoBlockFeature:
     HIDDEN = ("CutSequence",)
 
     def ensure_properties(self, obj):
-        for kind, name, group, tooltip, attributes in self.PROPERTIES:
-            if name not in obj.PropertiesList:
-                obj.addProperty(kind, name, group, tooltip, attributes)
-        for name in self.READ_ONLY:
-            obj.setEditorMode(name, 1)
-        for name in self.HIDDEN:
-            obj.setEditorMode(name, 2)
+        properties.ensure_properties(obj, self.PROPERTIES, self.READ_ONLY, self.HIDDEN)
         self.refresh_choices(obj)
 
     @staticmethod

@@ -12,6 +12,7 @@ also keep the blocks: one group per block).
 import FreeCAD
 
 from .. import paths
+from . import properties
 
 TYPE = "AutoBlock::Mesh"
 
@@ -79,11 +80,7 @@ class AutoBlockMeshFeature:
         self.ensure_properties(obj)
 
     def ensure_properties(self, obj):
-        for kind, name, group, tooltip, attributes in self.PROPERTIES:
-            if name not in obj.PropertiesList:
-                obj.addProperty(kind, name, group, tooltip, attributes)
-        for name in self.READ_ONLY:
-            obj.setEditorMode(name, 1)
+        properties.ensure_properties(obj, self.PROPERTIES, self.READ_ONLY)
 
     def onDocumentRestored(self, obj):
         self.last_error = None

@@ -6,19 +6,10 @@
 #include <limits>
 #include <sstream>
 
+#include "core/io/xml_escape.h"
+
 namespace autoblock {
 namespace {
-
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else out += c;
-  }
-  return out;
-}
 
 // A "nice" tick step giving about `count` ticks over span.
 double tick_step(double span, int count) {
@@ -61,7 +52,7 @@ void draw_panel(std::ostringstream& svg, const ChartPanel& panel, double ox, dou
   auto sx = [&](double x) { return ox + left + (x - x0) / (x1 - x0) * pw; };
   auto sy = [&](double y) { return oy + top + (y1 - y) / (y1 - y0) * ph; };
   svg << "<text x=\"" << ox + left << "\" y=\"" << oy + 20 << "\" font-family=\"sans-serif\" font-size=\"14\">"
-      << escape(panel.title) << "</text>\n";
+      << xml_escape(panel.title) << "</text>\n";
   svg << "<rect x=\"" << ox + left << "\" y=\"" << oy + top << "\" width=\"" << pw << "\" height=\"" << ph
       << "\" fill=\"none\" stroke=\"#444\"/>\n";
   const double ystep = tick_step(y1 - y0, 6);
@@ -77,9 +68,9 @@ void draw_panel(std::ostringstream& svg, const ChartPanel& panel, double ox, dou
         << "\" text-anchor=\"middle\" font-family=\"sans-serif\" font-size=\"11\">" << number(t) << "</text>\n";
   }
   svg << "<text x=\"" << ox + left + pw / 2 << "\" y=\"" << oy + h - 8
-      << "\" text-anchor=\"middle\" font-family=\"sans-serif\" font-size=\"12\">" << escape(panel.x_label) << "</text>\n";
+      << "\" text-anchor=\"middle\" font-family=\"sans-serif\" font-size=\"12\">" << xml_escape(panel.x_label) << "</text>\n";
   svg << "<text transform=\"translate(" << ox + 14 << "," << oy + top + ph / 2
-      << ") rotate(-90)\" text-anchor=\"middle\" font-family=\"sans-serif\" font-size=\"12\">" << escape(panel.y_label)
+      << ") rotate(-90)\" text-anchor=\"middle\" font-family=\"sans-serif\" font-size=\"12\">" << xml_escape(panel.y_label)
       << "</text>\n";
   int legend = 0;
   for (const ChartReference& r : panel.references) {
@@ -97,7 +88,7 @@ void draw_panel(std::ostringstream& svg, const ChartPanel& panel, double ox, dou
     svg << "<line x1=\"" << ox + left + 10 << "\" x2=\"" << ox + left + 34 << "\" y1=\"" << ly - 4 << "\" y2=\"" << ly - 4
         << "\" stroke=\"" << colour << "\" stroke-width=\"2\"" << (dashed ? " stroke-dasharray=\"6 4\"" : "")
         << "/><text x=\"" << ox + left + 40 << "\" y=\"" << ly
-        << "\" font-family=\"sans-serif\" font-size=\"11\">" << escape(label) << "</text>\n";
+        << "\" font-family=\"sans-serif\" font-size=\"11\">" << xml_escape(label) << "</text>\n";
   };
   const size_t entries = panel.series.size() + panel.references.size();
   size_t longest = 0;
@@ -118,7 +109,7 @@ std::string line_chart_svg(const std::vector<ChartPanel>& panels, const std::str
   const double width = w * static_cast<double>(std::max<size_t>(1, panels.size())), height = h + head;
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
       << width << ' ' << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  svg << "<text x=\"16\" y=\"24\" font-family=\"sans-serif\" font-size=\"16\">" << escape(title) << "</text>\n";
+  svg << "<text x=\"16\" y=\"24\" font-family=\"sans-serif\" font-size=\"16\">" << xml_escape(title) << "</text>\n";
   for (size_t p = 0; p < panels.size(); ++p) draw_panel(svg, panels[p], w * static_cast<double>(p), head);
   svg << "</svg>\n";
   return svg.str();

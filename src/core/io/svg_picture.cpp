@@ -5,24 +5,9 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/io/xml_escape.h"
+
 namespace autoblock {
-namespace {
-
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-}  // namespace
 
 std::string block_colour(int index) {
   const double hue = std::fmod(index * 137.50776405, 360.0) / 60.0;
@@ -65,7 +50,7 @@ std::string decomposition_svg(const RectilinearPolygon& polygon, const std::vect
   const std::string lines[2] = {title.substr(0, bar), bar == std::string::npos ? "" : title.substr(bar + 3)};
   for (int l = 0; l < 2; ++l) {
     svg << "<text x=\"" << margin << "\" y=\"" << 20 + 18 * l << "\" font-family=\"sans-serif\" font-size=\"" << (l ? 13 : 15)
-        << "\">" << escape(lines[l]) << "</text>\n";
+        << "\">" << xml_escape(lines[l]) << "</text>\n";
   }
   for (size_t b = 0; b < blocks.size(); ++b) {
     const Box& r = blocks[b];

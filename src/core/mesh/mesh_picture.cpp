@@ -1,6 +1,5 @@
 #include "core/mesh/mesh_picture.h"
 
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -10,23 +9,10 @@
 
 #include "core/common/error.h"
 #include "core/io/svg_picture.h"
+#include "core/io/xml_escape.h"
 
 namespace autoblock {
 namespace {
-
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 // Model to picture coordinates: scale k, margins, y flipped.
 struct View {
@@ -56,7 +42,7 @@ std::string mesh_svg(const RectilinearPolygon& polygon, const std::vector<Box>& 
   const std::string lines[2] = {title.substr(0, bar), bar == std::string::npos ? "" : title.substr(bar + 3)};
   for (int l = 0; l < 2; ++l) {
     svg << "<text x=\"" << margin << "\" y=\"" << 20 + 18 * l << "\" font-family=\"sans-serif\" font-size=\""
-        << (l ? 13 : 15) << "\">" << escape(lines[l]) << "</text>\n";
+        << (l ? 13 : 15) << "\">" << xml_escape(lines[l]) << "</text>\n";
   }
   for (size_t b = 0; b < blocks.size(); ++b) {
     const Box& r = blocks[b];

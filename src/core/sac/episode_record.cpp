@@ -2,6 +2,16 @@
 
 namespace autoblock {
 
+EpisodeRecord episode_record_of(const Episode& episode, const std::map<std::string, double>& metric_sums, int updates) {
+  EpisodeRecord record;
+  record.ret = episode.total_return();
+  record.blocks = static_cast<int>(episode.blocks().size());
+  record.steps = episode.steps();
+  record.complete = episode.status() == EpisodeStatus::Complete;
+  for (const auto& [name, sum] : metric_sums) record.metrics[name] = sum / updates;
+  return record;
+}
+
 nlohmann::json episode_record_json(const EpisodeRecord& r) {
   nlohmann::json j = {{"episode", r.episode}, {"shape", r.shape},   {"return", r.ret},
                       {"blocks", r.blocks},   {"steps", r.steps},   {"complete", r.complete},

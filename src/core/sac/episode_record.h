@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/env/episode.h"
+
 namespace autoblock {
 
 struct EpisodeRecord {
@@ -21,6 +23,12 @@ struct EpisodeRecord {
   double test_return = 0.0;      // mean deterministic return over the test set, when evaluated
   double wall_seconds = 0.0;     // since training started (a resumed run continues the clock)
 };
+
+// Inputs:  episode, as it ended; metric_sums, the metrics of the episode's updates summed by name;
+//          updates, how many there were.
+// Outputs: the episode's return, blocks, steps, completion and mean metrics (the caller adds the
+//          temperatures; the trainer the number, shape, evaluation and clock).
+EpisodeRecord episode_record_of(const Episode& episode, const std::map<std::string, double>& metric_sums, int updates);
 
 nlohmann::json episode_record_json(const EpisodeRecord& record);
 EpisodeRecord episode_record_from_json(const nlohmann::json& json);

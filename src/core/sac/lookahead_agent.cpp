@@ -10,6 +10,7 @@
 
 #include "core/common/error.h"
 #include "core/geometry/part_symmetry.h"
+#include "core/nn/module_blend.h"
 #include "core/sac/state_batch.h"
 
 namespace autoblock {
@@ -101,17 +102,11 @@ LookaheadAgent::LookaheadAgent(const SacConfig& config)
   network.inputs = kLookaheadFeatures;
   value_ = ValueNetwork(network);
   target_ = ValueNetwork(network);
-  {
-    torch::NoGradGuard no_grad;
-    const auto source = value_->named_parameters(true);
-    for (auto& item : target_->named_parameters(true)) item.value().copy_(source[item.key()]);
-  }
+  blend_module(*target_, *value_, 1.0);
   target_->eval();
   if (averaging()) {
     average_ = ValueNetwork(network);
-    torch::NoGradGuard no_grad;
-    const auto source = value_->named_parameters(true);
-    for (auto& item : average_->named_parameters(true)) item.value().copy_(source[item.key()]);
+    blend_module(*average_, *value_, 1.0);
     average_->eval();
   }
   log_alpha_ = torch::full({}, std::log(config.initial_direction_temperature * scale_), torch::requires_grad());
@@ -157,38 +152,28 @@ torch::Tensor LookaheadAgent::forward_values(ValueNetwork& network, const std::v
          scale_;
 }
 
-std::vector<double> LookaheadAgent::state_values(const std::vector<const PartState*>& states) {
+std::vector<double> LookaheadAgent::values_of(ValueNetwork& network, const std::vector<const PartState*>& states) {
   torch::NoGradGuard no_grad;
-  value_->eval();
-  const torch::Tensor w = forward_values(value_, states).contiguous();
+  network->eval();
+  const torch::Tensor w = forward_values(network, states).contiguous();
   return std::vector<double>(w.data_ptr<float>(), w.data_ptr<float>() + w.numel());
 }
 
+std::vector<double> LookaheadAgent::state_values(const std::vector<const PartState*>& states) {
+  return values_of(value_, states);
+}
+
 std::vector<double> LookaheadAgent::deployed_values(const std::vector<const PartState*>& states) {
-  if (!averaging()) return state_values(states);
-  torch::NoGradGuard no_grad;
-  average_->eval();
-  const torch::Tensor w = forward_values(average_, states).contiguous();
-  return std::vector<double>(w.data_ptr<float>(), w.data_ptr<float>() + w.numel());
+  return values_of(averaging() ? average_ : value_, states);
 }
 
 void LookaheadAgent::update_average() {
   // average <- d average + (1 - d) trained, for the weights and batch norm's running statistics,
   // with d = min(decay, (1 + updates) / (10 + updates)) so that early on the average does not hold on
   // to the untrained initial weights.
-  torch::NoGradGuard no_grad;
   const double u = static_cast<double>(updates_);
   const double d = std::min(config_.weight_average_decay, (1.0 + u) / (10.0 + u));
-  const auto parameters = value_->named_parameters(true);
-  for (auto& item : average_->named_parameters(true)) item.value().mul_(d).add_(parameters[item.key()], 1.0 - d);
-  const auto buffers = value_->named_buffers(true);
-  for (auto& item : average_->named_buffers(true)) {
-    if (item.value().is_floating_point()) {
-      item.value().mul_(d).add_(buffers[item.key()], 1.0 - d);
-    } else {
-      item.value().copy_(buffers[item.key()]);
-    }
-  }
+  blend_module(*average_, *value_, 1.0 - d, BufferBlend::Average);
 }
 
 std::vector<double> LookaheadAgent::cut_values(const PartState& state, double face_size) {
@@ -258,12 +243,7 @@ EpisodeRecord LookaheadAgent::train_episode(const GridFace& face, std::mt19937_6
       ++updates;
     }
   }
-  EpisodeRecord record;
-  record.ret = episode.total_return();
-  record.blocks = static_cast<int>(episode.blocks().size());
-  record.steps = episode.steps();
-  record.complete = episode.status() == EpisodeStatus::Complete;
-  for (const auto& [name, sum] : metric_sums) record.metrics[name] = sum / updates;
+  EpisodeRecord record = episode_record_of(episode, metric_sums, updates);
   record.alpha = temperature();
   return record;
 }
@@ -337,11 +317,7 @@ std::map<std::string, double> LookaheadAgent::update(size_t count, std::mt19937_
 
   if (averaging()) update_average();
   if (++updates_ % config_.target_update_every == 0) {
-    torch::NoGradGuard no_grad;
-    const auto source = value_->named_parameters(true);
-    for (auto& item : target_->named_parameters(true)) item.value().copy_(source[item.key()]);
-    const auto buffers = value_->named_buffers(true);
-    for (auto& item : target_->named_buffers(true)) item.value().copy_(buffers[item.key()]);
+    blend_module(*target_, *value_, 1.0);
     target_values_.clear();
   }
   if (target_values_.size() > 200000) target_values_.clear();
@@ -401,13 +377,7 @@ void LookaheadAgent::load(torch::serialize::InputArchive& archive, bool training
   torch::serialize::InputArchive value;
   archive.read("value", value);
   value_->load(value);
-  if (averaging()) {
-    torch::NoGradGuard no_grad;
-    const auto source = value_->named_parameters(true);
-    for (auto& item : average_->named_parameters(true)) item.value().copy_(source[item.key()]);
-    const auto buffers = value_->named_buffers(true);
-    for (auto& item : average_->named_buffers(true)) item.value().copy_(buffers[item.key()]);
-  }
+  if (averaging()) blend_module(*average_, *value_, 1.0);
   torch::Tensor log_alpha;
   archive.read("log_alpha", log_alpha);
   {
@@ -416,9 +386,7 @@ void LookaheadAgent::load(torch::serialize::InputArchive& archive, bool training
   }
   target_values_.clear();
   if (!training) {
-    torch::NoGradGuard no_grad;
-    const auto source = value_->named_parameters(true);
-    for (auto& item : target_->named_parameters(true)) item.value().copy_(source[item.key()]);
+    blend_module(*target_, *value_, 1.0);
     return;
   }
   if (averaging()) {

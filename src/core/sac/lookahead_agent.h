@@ -84,6 +84,7 @@ class LookaheadAgent : public LearningAgent {
     int symmetry = 0;
   };
   torch::Tensor forward_values(ValueNetwork& network, const std::vector<const PartState*>& states);
+  std::vector<double> values_of(ValueNetwork& network, const std::vector<const PartState*>& states);
   std::shared_ptr<const PartState> cached_state(const Part& part, double face_size);
 
   SacConfig config_;

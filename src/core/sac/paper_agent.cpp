@@ -73,12 +73,7 @@ EpisodeRecord PaperAgent::train_episode(const GridFace& face, std::mt19937_64& r
       ++updates;
     }
   }
-  EpisodeRecord record;
-  record.ret = episode.total_return();
-  record.blocks = static_cast<int>(episode.blocks().size());
-  record.steps = episode.steps();
-  record.complete = episode.status() == EpisodeStatus::Complete;
-  for (const auto& [name, sum] : metric_sums) record.metrics[name] = sum / updates;
+  EpisodeRecord record = episode_record_of(episode, metric_sums, updates);
   record.alpha = agent_->direction_temperature();
   record.tau = agent_->vertex_temperature();
   return record;

@@ -4,27 +4,13 @@
 #include <stdexcept>
 
 #include "core/nn/graph_batch.h"
+#include "core/nn/module_blend.h"
 
 namespace autoblock {
 namespace {
 
 constexpr int64_t kObservation = kObservationSize;
 const std::vector<int64_t> kHidden{256, 128, 64};
-
-void copy_module(torch::nn::Module& target, const torch::nn::Module& source, double fraction) {
-  torch::NoGradGuard no_grad;
-  const auto source_parameters = source.named_parameters(true);
-  for (auto& item : target.named_parameters(true)) {
-    const torch::Tensor& s = source_parameters[item.key()];
-    if (fraction >= 1.0) {
-      item.value().copy_(s);
-    } else {
-      item.value().mul_(1.0 - fraction).add_(s, fraction);
-    }
-  }
-  const auto source_buffers = source.named_buffers(true);
-  for (auto& item : target.named_buffers(true)) item.value().copy_(source_buffers[item.key()]);
-}
 
 torch::Tensor stack_observations(const std::vector<const Observation*>& observations) {
   torch::Tensor t = torch::empty({static_cast<int64_t>(observations.size()), kObservation}, torch::kFloat32);
@@ -52,9 +38,9 @@ SacAgent::SacAgent(const SacConfig& config) : config_(config) {
   q2_ = Mlp(kObservation, kHidden, 2, false);
   q1_target_ = Mlp(kObservation, kHidden, 2, false);
   q2_target_ = Mlp(kObservation, kHidden, 2, false);
-  copy_module(*value_target_, *value_, 1.0);
-  copy_module(*q1_target_, *q1_, 1.0);
-  copy_module(*q2_target_, *q2_, 1.0);
+  blend_module(*value_target_, *value_, 1.0);
+  blend_module(*q1_target_, *q1_, 1.0);
+  blend_module(*q2_target_, *q2_, 1.0);
   value_target_->eval();
   log_alpha_ = torch::full({}, std::log(config.initial_direction_temperature), torch::requires_grad());
   log_tau_ = torch::full({}, std::log(config.initial_vertex_temperature), torch::requires_grad());
@@ -203,9 +189,9 @@ std::map<std::string, double> SacAgent::update(const std::vector<const Transitio
   temperature_loss.backward();
   temperature_optimizer_->step();
 
-  copy_module(*value_target_, *value_, config_.polyak);
-  copy_module(*q1_target_, *q1_, config_.polyak);
-  copy_module(*q2_target_, *q2_, config_.polyak);
+  blend_module(*value_target_, *value_, config_.polyak);
+  blend_module(*q1_target_, *q1_, config_.polyak);
+  blend_module(*q2_target_, *q2_, config_.polyak);
 
   return {{"value_loss", value_loss.item<double>()},
           {"critic_loss", critic_loss.item<double>()},
@@ -264,9 +250,9 @@ void SacAgent::load(torch::serialize::InputArchive& archive, bool training) {
     log_tau_.copy_(log_tau);
   }
   if (!training) {
-    copy_module(*value_target_, *value_, 1.0);
-    copy_module(*q1_target_, *q1_, 1.0);
-    copy_module(*q2_target_, *q2_, 1.0);
+    blend_module(*value_target_, *value_, 1.0);
+    blend_module(*q1_target_, *q1_, 1.0);
+    blend_module(*q2_target_, *q2_, 1.0);
     return;
   }
   get("value_target", *value_target_);

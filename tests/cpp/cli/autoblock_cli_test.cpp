@@ -15,15 +15,11 @@
 #include "support/test_shapes.h"
 
 using namespace autoblock;
+using test::read_json;
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
 
 namespace {
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
-
 void check_usage_error(const test::CommandResult& r) {
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.err, StartsWith("error: "));

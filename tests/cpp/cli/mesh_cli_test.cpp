@@ -22,15 +22,11 @@
 #include "support/test_shapes.h"
 
 using namespace autoblock;
+using test::read_json;
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
 
 namespace {
-
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
 
 void check_input_error(const test::CommandResult& r, const std::string& expected) {
   INFO(r.err);

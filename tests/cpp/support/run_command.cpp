@@ -19,6 +19,11 @@ std::string slurp(const std::string& path) {
 }
 }  // namespace
 
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
 CommandResult run_shell(const std::string& command) {
   const std::string folder = temporary_folder("run");
   const std::string out = folder + "/out.txt", err = folder + "/err.txt";
