@@ -134,3 +134,22 @@ TEST_CASE("autoblock: usage errors get exit 2 and a one-line error", "[cli][erro
     check_usage_error(r);
   }
 }
+
+TEST_CASE("autoblock train: bad options and data get exit 2 and a one-line error", "[cli][errors][train]") {
+  // Every case is refused before training starts, so nothing is written.
+  const std::string folder = test::temporary_folder("cli-train");
+  REQUIRE(test::run_autoblock("generate --count 2 --seed 1 --out '" + folder + "/s'").exit_code == 0);
+  const std::string data = "--train '" + folder + "/s' --test '" + folder + "/s' --out '" + folder + "/p.pt' ";
+  const std::vector<std::string> cases{"train", "train --train '" + folder + "/nowhere' --test '" + folder + "/s'",
+                                       "train " + data + "--deploy-views 9", "train " + data + "--weight-average 1",
+                                       "train " + data + "--lr-final 0", "train " + data + "--resume '" + folder + "/none.pt'",
+                                       "train " + data + "--curves '" + folder + "/c.txt'",
+                                       "train --train '" + folder + "/s' --test '" + folder + "/s' --out '" + folder +
+                                           "/no/such/p.pt' --episodes 1"};
+  for (const std::string& arguments : cases) {
+    const auto r = test::run_autoblock(arguments);
+    INFO(arguments << ": " << r.err);
+    check_usage_error(r);
+  }
+  CHECK_FALSE(std::filesystem::exists(folder + "/p.pt"));
+}

@@ -1,0 +1,41 @@
+#include "support/catch_torch.h"
+
+#include "core/common/error.h"
+#include "core/sac/sac_config.h"
+
+using namespace autoblock;
+using Catch::Matchers::Contains;
+
+TEST_CASE("the deployment options round-trip, default for older files and are checked", "[sac][config]") {
+  SacConfig config = default_sac_config("lookahead");
+  CHECK(config.weight_average_decay == 0.998);
+  CHECK(config.deploy_views == 2);
+  CHECK(config.lr_final_fraction == 1.0);
+  CHECK(default_sac_config("paper").deploy_views == 1);
+  config.lr_final_fraction = 0.25;
+  const SacConfig back = sac_config_from_json(sac_config_json(config));
+  CHECK(back.weight_average_decay == 0.998);
+  CHECK(back.deploy_views == 2);
+  CHECK(back.lr_final_fraction == 0.25);
+
+  // A file written before these options existed deploys as it was trained: no average, one view,
+  // constant learning rate.
+  nlohmann::json old = sac_config_json(config);
+  old.erase("weight_average_decay");
+  old.erase("deploy_views");
+  old.erase("lr_final_fraction");
+  const SacConfig legacy = sac_config_from_json(old);
+  CHECK(legacy.weight_average_decay == 0.0);
+  CHECK(legacy.deploy_views == 1);
+  CHECK(legacy.lr_final_fraction == 1.0);
+
+  for (const auto& [key, value] : std::vector<std::pair<std::string, nlohmann::json>>{
+           {"deploy_views", 0}, {"deploy_views", 9}, {"weight_average_decay", 1.0}, {"weight_average_decay", -0.1},
+           {"lr_final_fraction", 0.0}, {"lr_final_fraction", 1.5}}) {
+    nlohmann::json bad = sac_config_json(config);
+    bad[key] = value;
+    INFO(key << " = " << value);
+    CHECK_THROWS_AS(sac_config_from_json(bad), InputError);
+    CHECK_THROWS_WITH(sac_config_from_json(bad), Contains(key));
+  }
+}
