@@ -36,7 +36,7 @@
 
 #include "core/baselines/baseline_policy.h"
 #include "core/sac/compute_threads.h"
-#include "core/sac/policy_source.h"
+#include "core/api/policy_source.h"
 #include "core/common/error.h"
 #include "core/data/shape_generator.h"
 #include "core/env/decomposition.h"

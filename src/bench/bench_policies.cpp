@@ -18,7 +18,8 @@
 #include "core/io/input_face.h"
 #include "core/sac/compute_threads.h"
 #include "core/sac/lookahead_agent.h"
-#include "core/sac/policy_source.h"
+#include "core/api/policy_source.h"
+#include "core/sac/policy_file.h"
 
 using namespace autoblock;
 
@@ -57,8 +58,10 @@ Figures measure(const std::vector<GridFace>& faces, const std::string& name, Rew
   // NAME@V: the learned policy NAME deployed with V symmetric views (lookahead agent).
   const size_t at = name.rfind('@');
   const PolicySource source(at == std::string::npos ? name : name.substr(0, at), baseline);
+  std::shared_ptr<LookaheadAgent> agent;  // NAME@V: a copy of the policy loaded here, with V views
   if (at != std::string::npos) {
-    auto agent = std::dynamic_pointer_cast<LookaheadAgent>(source.agent());
+    if (source.path().empty()) throw InputError(name + ": views apply to learned policies only");
+    agent = std::dynamic_pointer_cast<LookaheadAgent>(load_policy_file(source.path(), false).agent);
     if (!agent) throw InputError(name + ": views apply to the lookahead agent's policies only");
     agent->set_deploy_views(std::stoi(name.substr(at + 1)));
   }
@@ -66,7 +69,7 @@ Figures measure(const std::vector<GridFace>& faces, const std::string& name, Rew
   for (size_t k = 0; k < faces.size(); ++k) {
     EpisodeOptions options;
     options.reward = RewardPreset::Paper;
-    auto policy = source.make(faces[k].size, k);
+    auto policy = agent ? agent->deployed_policy(name) : source.make(faces[k].size, k);
     const Decomposition d = decompose_face(faces[k], *policy, options);
     f.paper_return += d.total_return;
     f.blocks += static_cast<double>(d.blocks.size());

@@ -1,18 +1,19 @@
 #include "cli/cli_common.h"
 
 #include <cstdio>
+#include <map>
 
 namespace autoblock::cli {
 
 void PolicyArguments::add_to(CLI::App& command) {
   command.add_option("--policy", policy,
-                     "random | random-split | greedy | optimal | a shipped policy (sac-paper, sac-mesh) | a policy file "
+                     "auto (exact search, learned where it runs out of time) | random | random-split | greedy | optimal | a shipped policy (sac-paper, sac-mesh) | a policy file "
                      "(default: the shipped default, " + default_policy_name() + ")");
   command.add_option("--seed", seed, "seed of the random policies")->capture_default_str();
   command.add_option("--max-steps", max_steps, "step cap per face (0: 10 x corners + 10)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  command.add_option("--time-limit", time_limit, "optimal: search seconds per face before finishing greedily")
+  command.add_option("--time-limit", time_limit, "seconds per face before greedy finishes the remaining parts (optimal, auto and learned policies)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command.add_option("--reward", reward, "reward preset: paper (Eq. 1) | mesh (few, fat blocks); default: the policy's own")
@@ -23,7 +24,7 @@ std::shared_ptr<const PolicySource> PolicyArguments::source() const {
   if (!source_) {
     BaselineOptions options;
     options.optimal_seconds = time_limit;
-    options.reward = reward.empty() ? RewardPreset::Paper : reward_preset_by_name(reward);
+    options.reward = reward.empty() ? RewardPreset::Paper : reward_preset_by_name(reward);  // optimal's target
     source_ = std::make_shared<PolicySource>(policy, options);
   }
   return source_;
@@ -44,8 +45,15 @@ std::string summary_line(const Decomposition& d) {
   char buf[256];
   std::snprintf(buf, sizeof buf, "%zu blocks (minimum %d), %zu cuts, return %.3f, %s%s, %.1f ms", d.blocks.size(),
                 d.min_blocks, d.cuts.size(), d.total_return, status_name(d.status).c_str(),
-                d.time_capped ? " (search time limit hit)" : "", d.seconds * 1000.0);
-  return buf;
+                d.time_capped ? " (time limit hit: greedy finished)" : "", d.seconds * 1000.0);
+  // Who decided the cuts, when that is not simply the policy itself (auto, a time limit).
+  std::map<std::string, int> deciders;
+  for (const std::string& who : d.decided_by) ++deciders[who];
+  if (deciders.empty() || (deciders.size() == 1 && deciders.begin()->first == d.policy)) return buf;
+  std::string out = std::string(buf) + ", cuts by";
+  for (const auto& [who, count] : deciders) out += " " + who + " " + std::to_string(count) + ",";
+  out.pop_back();
+  return out;
 }
 
 }  // namespace autoblock::cli

@@ -9,7 +9,7 @@
 #include "core/env/decomposition.h"
 #include "core/env/episode.h"
 #include "core/io/input_face.h"
-#include "core/sac/policy_source.h"
+#include "core/api/policy_source.h"
 
 namespace autoblock::cli {
 

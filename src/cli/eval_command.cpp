@@ -14,7 +14,6 @@
 #include "core/io/dataset.h"
 #include "core/io/decomposition_json.h"
 #include "core/io/text_file.h"
-#include "core/sac/compute_threads.h"
 
 namespace autoblock::cli {
 namespace {
@@ -66,7 +65,7 @@ void add_eval_command(CLI::App& app) {
     const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
     const size_t thread_count =
         std::min(faces.size(), static_cast<size_t>(args->threads > 0 ? static_cast<unsigned>(args->threads) : hardware));
-    set_compute_threads(1);  // parallelism comes from the workers
+    // Parallelism comes from the workers: a learned policy computes on one thread (learned_runtime.h).
     const auto start = std::chrono::steady_clock::now();
     std::vector<std::thread> workers;
     for (size_t t = 0; t < thread_count; ++t) workers.emplace_back(work);
@@ -123,7 +122,7 @@ void add_eval_command(CLI::App& app) {
                 report["policy"].get<std::string>().c_str(), faces.size(), s["return"]["mean"].get<double>(),
                 s["return"]["median"].get<double>(), s["blocks"]["mean"].get<double>(),
                 s["min_blocks"]["mean"].get<double>(), s["blocks_over_min"]["mean"].get<double>(), complete, faces.size(),
-                capped ? (", " + std::to_string(capped) + " hit the search time limit").c_str() : "",
+                capped ? (", " + std::to_string(capped) + " hit the time limit").c_str() : "",
                 s["seconds"]["mean"].get<double>() * 1000.0, s["seconds_per_cut"].get<double>() * 1000.0);
     if (!args->json.empty()) {
       write_text_file(args->json, report.dump(2) + "\n");

@@ -10,7 +10,6 @@
 
 #include "cli/commands.h"
 #include "core/common/error.h"
-#include "core/sac/compute_threads.h"
 
 namespace {
 
@@ -26,7 +25,6 @@ std::string one_line(std::string text) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  autoblock::set_compute_threads(1);  // deployment: one thread per decomposition (train sets its own)
   CLI::App app{"AutoBlock: cut planar CAD faces into well-shaped rectangular blocks."};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("autoblock 0.1.0"));

@@ -1,24 +1,18 @@
 // autoblock train --train DIR --test DIR [--episodes N] [--seed S] [--out POLICY]
 //                 [--resume CHECKPOINT] [--threads T] [--reward paper|mesh] ...
+// The training job of core/api (training_job.h) with a terminal around it: a progress bar, Ctrl-C.
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
+#include <vector>
 
 #include "cli/commands.h"
 #include "cli/progress_bar.h"
-#include "core/baselines/baseline_policy.h"
-#include "core/common/error.h"
-#include "core/env/decomposition.h"
-#include "core/io/dataset.h"
-#include "core/io/input_face.h"
-#include "core/io/text_file.h"
+#include "core/api/training_job.h"
 #include "core/raster/picture_file.h"
-#include "core/sac/policy_file.h"
-#include "core/sac/trainer.h"
-#include "core/sac/training_curves.h"
 
 namespace autoblock::cli {
 namespace {
@@ -26,32 +20,9 @@ namespace {
 std::atomic<bool> interrupted{false};
 extern "C" void on_interrupt(int) { interrupted = true; }
 
-TrainingSet load_set(const std::string& folder) {
-  TrainingSet set;
-  for (const std::string& file : collect_shape_files({folder})) {
-    set.faces.push_back(load_input_face(file).grid);
-    set.names.push_back(std::filesystem::path(file).filename().string());
-  }
-  return set;
-}
-
 std::string sibling(const std::string& path, const std::string& suffix) {
   std::filesystem::path p(path);
   return (p.parent_path() / (p.stem().string() + suffix)).string();
-}
-
-double mean_return(const TrainingSet& set, const std::string& policy, RewardPreset reward) {
-  double total = 0.0;
-  EpisodeOptions options;
-  options.reward = reward;
-  for (const GridFace& face : set.faces) {
-    BaselineOptions baseline;
-    baseline.reward = reward;
-    baseline.optimal_seconds = 30;
-    auto p = make_baseline_policy(policy, face.size, baseline);
-    total += decompose_face(face, *p, options).total_return;
-  }
-  return total / static_cast<double>(set.faces.size());
 }
 
 }  // namespace
@@ -114,95 +85,65 @@ void add_train_command(CLI::App& app) {
     if (args->log.empty()) args->log = sibling(args->out, ".csv");
     if (args->curves.empty()) args->curves = sibling(args->out, "-curves.png");
     check_picture_path(args->curves, "--curves");
-    TrainingSet train = load_set(args->train);
-    TrainingSet test = load_set(args->test);
-    TrainerOptions options;
-    options.episodes = args->episodes;
-    options.seed = args->seed;
-    options.threads = args->threads;
-    options.eval_every = args->eval_every;
-    options.checkpoint_every = args->eval_every;
-    options.checkpoint_path = args->checkpoint;
-    std::unique_ptr<Trainer> trainer;
-    if (!args->resume.empty()) {
-      trainer = std::make_unique<Trainer>(Trainer::resume(args->resume, options, train, test));
-    } else {
-      SacConfig config = default_sac_config(args->agent);
-      config.reward = reward_preset_by_name(args->reward);
-      if (!args->value_network.empty()) config.value_network = args->value_network;
-      config.bootstrap = args->bootstrap == "graph" ? Bootstrap::Graph : Bootstrap::Critics;
-      if (args->batch_size > 0) config.batch_size = args->batch_size;
-      if (args->lr_final > 0.0) config.lr_final_fraction = args->lr_final;
-      if (args->average >= 0.0) config.weight_average_decay = args->average;
-      if (args->views > 0) config.deploy_views = args->views;
-      trainer = std::make_unique<Trainer>(config, options, train, test);
-    }
-    const RewardPreset reward = trainer->agent()->config().reward;
-    const double optimal = mean_return(test, "optimal", reward), greedy = mean_return(test, "greedy", reward);
-
-    // The CSV: rewritten from the history (a resume keeps what came before), then appended.
-    std::string csv = training_csv_header();
-    for (const EpisodeRecord& r : trainer->history()) csv += training_csv_row(r);
-    write_text_file(args->log, csv);
-    std::ofstream log(args->log, std::ios::app);
+    TrainingJob job;
+    job.output = args->out;
+    job.checkpoint = args->checkpoint;
+    job.resume = !args->resume.empty();
+    if (job.resume) job.checkpoint = args->resume;
+    job.train_folder = args->train;
+    job.test_folder = args->test;
+    job.episodes = args->episodes;
+    job.seed = args->seed;
+    job.reward = args->reward;
+    job.agent = args->agent;
+    job.threads = args->threads;
+    job.eval_every = args->eval_every;
+    job.value_network = args->value_network;
+    job.bootstrap = args->bootstrap;
+    job.batch_size = args->batch_size;
+    job.lr_final = args->lr_final;
+    job.weight_average = args->average;
+    job.deploy_views = args->views;
+    job.log = args->log;
+    job.curves = args->curves;
 
     interrupted = false;
     std::signal(SIGINT, on_interrupt);
     std::signal(SIGTERM, on_interrupt);
     ProgressBar progress(args->episodes, "train");
-    double window = 0.0;
+    double window = 0.0, last_test = 0.0;
     std::vector<double> recent;
-    double last_test = 0.0;
-    trainer->run(
-        [&](const EpisodeRecord& r) {
-          log << training_csv_row(r) << std::flush;
-          recent.push_back(r.ret);
-          window += r.ret;
-          if (recent.size() > 10) window -= recent[recent.size() - 11];
-          if (r.evaluated) last_test = r.test_return;
-          char note[128];
-          std::snprintf(note, sizeof note, "avg10 %.2f  test %.2f (optimal %.2f)", window / std::min<size_t>(recent.size(), 10),
-                        last_test, optimal);
-          progress.update(r.episode, note);
-        },
-        [] { return interrupted.load(); });
+    TrainingCallbacks callbacks;
+    callbacks.on_episode = [&](const EpisodeRecord& r, bool) {
+      recent.push_back(r.ret);
+      window += r.ret;
+      if (recent.size() > 10) window -= recent[recent.size() - 11];
+      if (r.evaluated) last_test = r.test_return;
+      char note[128];
+      std::snprintf(note, sizeof note, "avg10 %.2f  test %.2f", window / std::min<size_t>(recent.size(), 10), last_test);
+      progress.update(r.episode, note);
+    };
+    callbacks.should_stop = [] { return interrupted.load(); };
+    const TrainingOutcome outcome = run_training_job(job, callbacks);
     progress.finish();
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
 
-    const std::vector<ChartReference> references{{"optimal (test set)", "#2ca02c", optimal},
-                                                 {"greedy (test set)", "#ff7f0e", greedy}};
-    const std::string svg = training_curves_svg(trainer->history(), references,
-                                                "AutoBlock SAC training (" + reward_preset_name(reward) + " reward)");
-    write_picture(args->curves, svg);
-    if (trainer->episodes_done() < args->episodes) {
-      std::cout << "stopped after " << trainer->episodes_done() << " of " << args->episodes
-                << " episodes; resume with: autoblock train --resume " << args->checkpoint << " ...\n";
-      std::cout << "  checkpoint: " << args->checkpoint << "\n  log:        " << args->log << "\n";
+    if (outcome.cancelled) {
+      std::cout << "stopped after " << outcome.episodes_done << " of " << args->episodes
+                << " episodes; resume with: autoblock train --resume " << outcome.checkpoint << " ...\n";
+      std::cout << "  checkpoint: " << outcome.checkpoint << "\n  log:        " << outcome.log << "\n";
       return;
     }
-    const TrainingSpeed speed = training_speed(trainer->history());
-    save_policy_file(args->out, *trainer->agent(),
-                     {{"episodes", trainer->episodes_done()},
-                      {"seed", args->seed},
-                      {"train", args->train},
-                      {"test", args->test},
-                      {"final_test_return", speed.final_test_return},
-                      {"optimal_test_return", optimal},
-                      {"greedy_test_return", greedy},
-                      {"episodes_to_95", speed.episodes_to_95},
-                      {"seconds_to_95", speed.seconds_to_95},
-                      {"wall_seconds", trainer->history().back().wall_seconds}},
-                     false);
     std::printf("trained %d episodes in %.1f min: final test return %.3f (optimal %.3f, greedy %.3f)\n",
-                trainer->episodes_done(), trainer->history().back().wall_seconds / 60.0, speed.final_test_return, optimal,
-                greedy);
-    if (speed.episodes_to_95 > 0) {
-      std::printf("reached the 95%% mark (%s) at episode %d after %.1f min\n", speed.rule.c_str(), speed.episodes_to_95,
-                  speed.seconds_to_95 / 60.0);
+                outcome.episodes_done, outcome.wall_seconds / 60.0, outcome.final_test_return,
+                outcome.optimal_test_return, outcome.greedy_test_return);
+    if (outcome.episodes_to_95 > 0) {
+      std::printf("reached the 95%% mark (%s) at episode %d after %.1f min\n", outcome.rule_95.c_str(),
+                  outcome.episodes_to_95, outcome.seconds_to_95 / 60.0);
     }
-    std::printf("  policy:     %s\n  checkpoint: %s\n  log:        %s\n  curves:     %s\n", args->out.c_str(),
-                args->checkpoint.c_str(), args->log.c_str(), args->curves.c_str());
+    std::printf("  policy:     %s\n  checkpoint: %s\n  log:        %s\n  curves:     %s\n", outcome.policy_file.c_str(),
+                outcome.checkpoint.c_str(), outcome.log.c_str(), outcome.curves.c_str());
   });
 }
 

@@ -26,7 +26,6 @@
 #include "core/io/shape_file.h"
 #include "core/io/svg_picture.h"
 #include "core/mesh/mesh_export.h"
-#include "core/sac/compute_threads.h"
 
 namespace py = pybind11;
 using namespace autoblock;
@@ -364,6 +363,9 @@ py::dict train_py(const py::dict& options, const py::object& progress) {
   d["log"] = outcome.log;
   d["curves"] = outcome.curves;
   d["final_test_return"] = outcome.final_test_return;
+  d["optimal_test_return"] = outcome.optimal_test_return;
+  d["greedy_test_return"] = outcome.greedy_test_return;
+  d["wall_seconds"] = outcome.wall_seconds;
   return d;
 }
 
@@ -397,9 +399,6 @@ PYBIND11_MODULE(autoblock_native, m) {
       PyErr_SetString(PyExc_RuntimeError, e.what());
     }
   });
-
-  // Deployment: one compute thread per decomposition, as the CLI (training sets its own).
-  set_compute_threads(1);
 
   m.def("version", [] { return std::string(AUTOBLOCK_VERSION); }, "The AutoBlock version this module was built from.");
   m.def("capabilities", &capabilities_dict,

@@ -17,7 +17,8 @@ Capabilities capabilities() {
 }
 
 std::vector<std::string> policy_names() {
-  std::vector<std::string> names = shipped_policy_names();
+  std::vector<std::string> names{"auto"};
+  for (const std::string& name : shipped_policy_names()) names.push_back(name);
   for (const char* name : {"optimal", "greedy", "random-split", "random"}) names.push_back(name);
   return names;
 }

@@ -2,7 +2,7 @@
 // policies, the reward presets, the default of each, and what this build can do. The front ends
 // take these lists from here, never from their own copies.
 //
-// Policies come from sac/policy_source.h: the baselines, the shipped trained policies and policy
+// Policies come from api/policy_source.h: the baselines, the shipped trained policies and policy
 // files.
 #pragma once
 
@@ -13,7 +13,7 @@
 
 #include "core/env/policy.h"
 #include "core/geometry/grid_face.h"
-#include "core/sac/policy_source.h"
+#include "core/api/policy_source.h"
 
 namespace autoblock {
 
@@ -26,8 +26,9 @@ struct Capabilities {
 };
 Capabilities capabilities();
 
-// The policy names front ends list: the shipped trained policies, then the baselines. The default
-// (default_policy_name(), sac/policy_source.h) is one of them.
+// The policy names front ends list: "auto" (the exact search where it finishes in time, a learned
+// policy where it does not: baselines/auto_policy.h), the shipped trained policies, then the
+// baselines. The default (default_policy_name(), api/policy_source.h) is one of them.
 std::vector<std::string> policy_names();
 
 // The reward presets: "paper" (Eq. 1) and "mesh". The default is "": each policy's own preset.
@@ -38,7 +39,8 @@ void check_reward_preset(const std::string& name);
 
 struct PolicySettings {
   std::uint64_t seed = 0;     // random policies
-  double time_limit = 30.0;   // optimal: search seconds per face (<= 0: unlimited)
+  double time_limit = 30.0;   // seconds per face (<= 0: unlimited): optimal finishes greedily after it, and so
+                              // do auto and learned policies
 };
 
 // Inputs:  spec, a name of policy_names() or a policy file's path (empty: the default); settings.

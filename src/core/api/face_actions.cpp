@@ -36,7 +36,8 @@ EpisodeSnapshot face_step(const InputFace& face, const std::vector<CutSpec>& cut
 std::vector<double> face_vertex_scores(const InputFace& face, const std::vector<CutSpec>& cuts, int step,
                                        const std::string& policy, int max_steps, RewardPreset reward) {
   const auto source = policy_source(policy, PolicySettings{});
-  if (!source->learned()) {
+  const std::shared_ptr<LearnedPolicy> scorer = source->scoring_policy();
+  if (!scorer) {
     throw InputError("the policy '" + source->name() +
                      "' is a baseline: it has no value network, so there are no vertex scores");
   }
@@ -47,7 +48,7 @@ std::vector<double> face_vertex_scores(const InputFace& face, const std::vector<
   if (!episode.running()) {
     throw InputError("no cut follows step " + std::to_string(step) + ": the episode is over, there is no part to score");
   }
-  const std::vector<float> scores = source->agent()->vertex_scores(episode);
+  const std::vector<float> scores = scorer->vertex_scores(episode);
   return std::vector<double>(scores.begin(), scores.end());
 }
 

@@ -1,8 +1,9 @@
 // Training a policy for a front end (the Python binding, and so the FreeCAD workbench's Train panel
 // and AutoBlock.train): the data (folders of faces or generated shapes), a fresh run or one resumed
 // from its checkpoint, a report per episode and a stop request between episodes, and at the end the
-// policy file, the CSV log and the curves picture (SVG). The CLI's `autoblock train` is the same
-// flow with a terminal around it.
+// policy file, the CSV log and the curves picture. The CLI's `autoblock train` is the same flow
+// with a terminal around it. The work runs in the learned-policy runtime (learned_runtime.h),
+// loaded on first use; this header needs no LibTorch.
 #pragma once
 
 #include <cstdint>
@@ -10,8 +11,8 @@
 #include <string>
 
 #include "core/data/shape_generator.h"
+#include "core/io/dataset.h"
 #include "core/sac/episode_record.h"
-#include "core/sac/trainer.h"
 
 namespace autoblock {
 
@@ -37,6 +38,16 @@ struct TrainingJob {
   int threads = 1;               // LibTorch threads while training
   int eval_every = 25;           // episodes between test evaluations and checkpoints
   int max_steps = 0;
+  // Beyond the defaults of the agent kind (sac_config.h); 0, negative or empty: the default.
+  std::string value_network;     // "small" | "paper"
+  std::string bootstrap;         // paper agent: "graph" | "critics"
+  int batch_size = 0;
+  double lr_final = 0.0;         // lookahead agent: learning rate's fraction left at the end
+  double weight_average = -1.0;  // lookahead agent: moving-average decay of the deployed weights
+  int deploy_views = 0;          // lookahead agent: symmetric views averaged when deployed
+  std::string log;               // CSV log; empty: the output's stem + ".csv"
+  std::string curves;            // curves picture, .svg or .png; empty: the output's stem + "-curves.svg"
+  std::string description;       // what the policy file records as the training data (empty: derived)
 };
 
 struct TrainingCallbacks {
@@ -57,6 +68,12 @@ struct TrainingOutcome {
   std::string log;               // CSV, one line per episode
   std::string curves;            // SVG
   double final_test_return = 0.0;
+  double optimal_test_return = 0.0;  // the exact search's mean return on the test set (reference)
+  double greedy_test_return = 0.0;   // greedy's, likewise
+  int episodes_to_95 = -1;           // first evaluated episode reaching the 95 % mark (-1: never)
+  double seconds_to_95 = -1.0;
+  std::string rule_95;               // how that mark was measured
+  double wall_seconds = 0.0;         // the run's training time, resumed runs included
 };
 
 // Inputs:  folder (when generated.count == 0) or generated; what ("training" or "test"), for messages.
@@ -65,7 +82,7 @@ struct TrainingOutcome {
 TrainingSet load_training_set(const std::string& folder, const GeneratedSet& generated, const std::string& what);
 
 // Inputs:  job; callbacks.
-// Outputs: what the run did and wrote. Throws InputError for bad data or options (a missing output
+// Outputs: what the run did and wrote. Loads the learned-policy runtime. Throws InputError for bad data or options (a missing output
 //          folder, a missing or foreign checkpoint, an unknown reward preset or agent); exceptions
 //          thrown by the callbacks pass through (after the checkpoint is written).
 TrainingOutcome run_training_job(const TrainingJob& job, const TrainingCallbacks& callbacks);

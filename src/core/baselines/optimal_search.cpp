@@ -17,6 +17,14 @@ OptimalSearch::OptimalSearch(double face_size, double seconds, RewardPreset rewa
                 std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(
                     seconds > 0 ? seconds : 0.0))) {}
 
+void OptimalSearch::set_budget(double seconds) {
+  limited_ = seconds > 0;
+  deadline_ = std::chrono::steady_clock::now() +
+              std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                  std::chrono::duration<double>(seconds > 0 ? seconds : 0.0));
+  calls_ = 0;
+}
+
 double OptimalSearch::value(const Part& part) { return part.is_rectangle() ? 0.0 : solve(part).value; }
 
 AxisLine OptimalSearch::best_line(const Part& part) { return solve(part).line; }
@@ -45,19 +53,22 @@ const OptimalSearch::Entry& OptimalSearch::solve(const Part& part) {
   return memo_.emplace(part, best).first->second;
 }
 
+Action action_on_line(const Episode& episode, const AxisLine& line) {
+  const auto& vertices = episode.current_vertices();
+  for (int v = 0; v < static_cast<int>(vertices.size()); ++v) {
+    const Corner& c = vertices[static_cast<size_t>(v)].corner;
+    if ((line.direction == CutDirection::Vertical ? c.i : c.j) == line.index) return Action{v, line.direction};
+  }
+  throw std::logic_error("the best line passes through no vertex");
+}
+
 OptimalPolicy::OptimalPolicy(double face_size, double seconds, RewardPreset reward)
     : search_(face_size, seconds, reward) {}
 
 Action OptimalPolicy::choose(const Episode& episode) {
   if (!capped_) {
     try {
-      const AxisLine line = search_.best_line(episode.current_part());
-      const auto& vertices = episode.current_vertices();
-      for (int v = 0; v < static_cast<int>(vertices.size()); ++v) {
-        const Corner& c = vertices[static_cast<size_t>(v)].corner;
-        if ((line.direction == CutDirection::Vertical ? c.i : c.j) == line.index) return Action{v, line.direction};
-      }
-      throw std::logic_error("OptimalPolicy: the best line passes through no vertex");
+      return action_on_line(episode, search_.best_line(episode.current_part()));
     } catch (const OptimalSearch::TimeLimit&) {
       capped_ = true;
     }

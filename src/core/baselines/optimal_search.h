@@ -36,6 +36,9 @@ class OptimalSearch {
   // Inputs: part, not a rectangle. Output: the first line reaching V(part). Throws TimeLimit.
   AxisLine best_line(const Part& part);
   size_t memo_size() const { return memo_.size(); }
+  // Inputs: seconds, a new budget counted from now (<= 0: unlimited). The memo is kept: every value
+  // in it is exact (a search stopped by TimeLimit memoises nothing it did not finish).
+  void set_budget(double seconds);
 
  private:
   struct Entry {
@@ -51,6 +54,10 @@ class OptimalSearch {
   long calls_ = 0;
   std::unordered_map<Part, Entry, PartHash> memo_;
 };
+
+// Inputs: episode, running; line, a line through a vertex of its current part.
+// Output: the action cutting along that line (throws std::logic_error when no vertex is on it).
+Action action_on_line(const Episode& episode, const AxisLine& line);
 
 // Follows OptimalSearch's best lines; when the time budget runs out it finishes greedily and
 // time_capped() turns true.

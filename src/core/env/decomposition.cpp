@@ -9,8 +9,11 @@ namespace autoblock {
 Decomposition decompose_face(const GridFace& face, Policy& policy, EpisodeOptions options) {
   const auto start = std::chrono::steady_clock::now();
   Episode episode(face, options);
-  while (episode.running()) episode.step(policy.choose(episode));
   Decomposition result;
+  while (episode.running()) {
+    episode.step(policy.choose(episode));
+    result.decided_by.push_back(policy.decided_by());
+  }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.policy = policy.name();
   result.reward = options.reward;

@@ -7,8 +7,15 @@
 #include <nlohmann/json.hpp>
 
 #include "core/data/shape_generator.h"
+#include "core/geometry/grid_face.h"
 
 namespace autoblock {
+
+// Faces to train or test on, with their names (file names, or generated_NNNN).
+struct TrainingSet {
+  std::vector<GridFace> faces;
+  std::vector<std::string> names;
+};
 
 // Inputs:  paths, files and folders.
 // Outputs: the shape files: each file as given, and each folder's .brep, .step and .stp files

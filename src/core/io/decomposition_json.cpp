@@ -22,13 +22,21 @@ nlohmann::json decomposition_json(const std::string& input, const PlanarFace& fa
   report["blocks"] = nlohmann::json::array();
   for (const Box& b : d.blocks) report["blocks"].push_back(box_json(b));
   report["cuts"] = nlohmann::json::array();
-  for (const CutRecord& c : d.cuts) {
-    report["cuts"].push_back({{"part", c.part_id},
-                              {"vertex", point_json(c.position.x, c.position.y)},
-                              {"direction", direction_name(c.direction)},
-                              {"n_parts", c.n_parts},
-                              {"reward", c.reward}});
+  nlohmann::json deciders = nlohmann::json::object();
+  for (size_t k = 0; k < d.cuts.size(); ++k) {
+    const CutRecord& c = d.cuts[k];
+    nlohmann::json cut{{"part", c.part_id},
+                       {"vertex", point_json(c.position.x, c.position.y)},
+                       {"direction", direction_name(c.direction)},
+                       {"n_parts", c.n_parts},
+                       {"reward", c.reward}};
+    if (k < d.decided_by.size()) {
+      cut["decided_by"] = d.decided_by[k];
+      deciders[d.decided_by[k]] = deciders.value(d.decided_by[k], 0) + 1;
+    }
+    report["cuts"].push_back(cut);
   }
+  report["decided_by"] = deciders;  // cuts per deciding policy (auto: optimal and the learned policy)
   report["return"] = d.total_return;
   report["n_blocks"] = d.blocks.size();
   report["min_blocks"] = d.min_blocks;

@@ -44,8 +44,11 @@ nlohmann::json mesh_report_json(const std::string& input, const Decomposition& d
                       {"intervals", r.interval_seconds},
                       {"mesh", r.mesh_seconds},
                       {"checks", r.check_seconds}};
-  report["decomposition"] = {
-      {"complete", d.complete()}, {"min_blocks", d.min_blocks}, {"cuts", d.cuts.size()}, {"return", d.total_return}};
+  nlohmann::json deciders = nlohmann::json::object();
+  for (const std::string& who : d.decided_by) deciders[who] = deciders.value(who, 0) + 1;
+  report["decomposition"] = {{"complete", d.complete()},         {"min_blocks", d.min_blocks},
+                             {"cuts", d.cuts.size()},            {"return", d.total_return},
+                             {"time_capped", d.time_capped},     {"decided_by", deciders}};
   return report;
 }
 

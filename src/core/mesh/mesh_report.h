@@ -22,7 +22,8 @@ namespace autoblock {
 //                      "stray_boundary_edges", "misoriented_edges", "inverted_quads", "quad_area", "face_area",
 //                      "boundary_length", "face_perimeter", "problem"},
 //          "seconds", "timing": {"decomposition", "merge", "intervals", "mesh", "checks"},
-//          "decomposition": {"complete", "min_blocks", "cuts", "return"}}
+//          "decomposition": {"complete", "min_blocks", "cuts", "return", "time_capped",
+//          "decided_by": {policy: cuts it chose}}}
 nlohmann::json mesh_report_json(const std::string& input, const Decomposition& decomposition, const MeshResult& result,
                                 double seconds);
 

@@ -6,7 +6,7 @@
 
 #include "core/common/error.h"
 #include "core/io/text_file.h"
-#include "core/raster/svg_to_png.h"
+#include "core/common/plugin.h"
 
 namespace autoblock {
 namespace {
@@ -29,7 +29,12 @@ void write_picture(const std::string& path, const std::string& svg) {
   if (lower_extension(path) == ".svg") {
     write_text_file(path, svg);
   } else {
-    write_png_from_svg(svg, path, 1200);
+    // Qt rasterises it, in libautoblock_raster.so, loaded now (a command that writes no PNG never
+    // loads Qt).
+    using Entry = void (*)(const std::string&, const std::string&, int);
+    auto entry = reinterpret_cast<Entry>(
+        plugin_symbol("libautoblock_raster.so", "autoblock_write_png_from_svg", "AUTOBLOCK_RASTER_LIBRARY"));
+    entry(svg, path, 1200);
   }
 }
 

@@ -10,7 +10,7 @@ namespace autoblock {
 void check_picture_path(const std::string& path, const std::string& option);
 
 // Inputs: path (.svg or .png), svg, the picture. Writes it atomically, as is or rasterised
-// (1200 pixels wide). Throws InputError for another extension or when the file cannot be written.
+// (1200 pixels wide, by Qt in libautoblock_raster.so, loaded on first use: common/plugin.h). Throws InputError for another extension or when the file cannot be written.
 void write_picture(const std::string& path, const std::string& svg);
 
 }  // namespace autoblock

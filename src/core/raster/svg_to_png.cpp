@@ -72,3 +72,11 @@ void write_png_from_svg(const std::string& svg, const std::string& path, int wid
 }
 
 }  // namespace autoblock
+
+// The entry point libautoblock_raster.so exports for write_picture (picture_file.h), which loads it
+// on first use.
+extern "C" __attribute__((visibility("default"))) void autoblock_write_png_from_svg(const std::string& svg,
+                                                                                   const std::string& path,
+                                                                                   int width) {
+  autoblock::write_png_from_svg(svg, path, width);
+}

@@ -18,15 +18,11 @@
 #include <nlohmann/json.hpp>
 
 #include "core/geometry/grid_face.h"
+#include "core/io/dataset.h"
 #include "core/sac/episode_record.h"
 #include "core/sac/learning_agent.h"
 
 namespace autoblock {
-
-struct TrainingSet {
-  std::vector<GridFace> faces;
-  std::vector<std::string> names;
-};
 
 struct TrainerOptions {
   int episodes = 1500;           // total, counting episodes before a resume
@@ -58,6 +54,7 @@ class Trainer {
   const std::vector<EpisodeRecord>& history() const { return history_; }
   std::shared_ptr<LearningAgent> agent() const { return agent_; }
   const TrainerOptions& options() const { return options_; }
+  const TrainingSet& test_set() const { return test_; }
 
  private:
   Trainer(const TrainerOptions& options, TrainingSet train, TrainingSet test);

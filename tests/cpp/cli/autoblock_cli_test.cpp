@@ -153,3 +153,46 @@ TEST_CASE("autoblock train: bad options and data get exit 2 and a one-line error
   }
   CHECK_FALSE(std::filesystem::exists(folder + "/p.pt"));
 }
+
+TEST_CASE("autoblock loads LibTorch only for a learned policy (the loader's own record)", "[cli][startup]") {
+  const std::string folder = test::temporary_folder("cli-startup");
+  REQUIRE(test::run_autoblock("generate --count 1 --seed 8 --out '" + folder + "/set'").exit_code == 0);
+  const std::string shape = folder + "/set/shape_0000.brep";
+  // LD_DEBUG=files makes the dynamic loader name every library it loads (dlopen included) on stderr.
+  const auto loaded = [](const std::string& arguments) {
+    const auto r = test::run_shell("LD_DEBUG=files '" AUTOBLOCK_CLI "' " + arguments);
+    INFO(arguments << "\n" << r.err.substr(0, 2000));
+    REQUIRE(r.exit_code == 0);
+    return r.err;
+  };
+  for (const std::string arguments :
+       {std::string("--help"), "decompose '" + shape + "' --policy greedy", "decompose '" + shape + "' --policy optimal",
+        "decompose '" + shape + "'", "mesh '" + shape + "' --policy auto --out '" + folder + "/m.msh'"}) {
+    INFO(arguments);
+    const std::string err = loaded(arguments);
+    CHECK_THAT(err, Contains("libTK"));  // the check sees what was loaded ...
+    CHECK_THAT(err, !Contains("libtorch") && !Contains("libautoblock_learn"));
+  }
+  // ... and a learned policy does load the runtime.
+  CHECK_THAT(loaded("decompose '" + shape + "' --policy sac-mesh"), Contains("libautoblock_learn") && Contains("libtorch"));
+}
+
+TEST_CASE("autoblock decompose: auto reports who decided each cut", "[cli][auto]") {
+  const std::string folder = test::temporary_folder("cli-auto");
+  REQUIRE(test::run_autoblock("generate --count 3 --seed 12 --holes --out '" + folder + "/set'").exit_code == 0);
+  for (int k = 0; k < 3; ++k) {
+    const std::string shape = folder + "/set/shape_000" + std::to_string(k) + ".brep";
+    const auto r = test::run_autoblock("decompose '" + shape + "' --json '" + folder + "/r.json'");
+    REQUIRE(r.exit_code == 0);
+    const nlohmann::json report = read_json(folder + "/r.json");
+    CHECK(report["policy"] == "auto");
+    CHECK(report["reward"] == "mesh");
+    CHECK(report["complete"] == true);
+    int counted = 0;
+    for (const auto& cut : report["cuts"]) {
+      CHECK(cut["decided_by"] == "optimal");  // small faces: the exact search finishes in time
+      ++counted;
+    }
+    CHECK(report["decided_by"]["optimal"] == counted);
+  }
+}

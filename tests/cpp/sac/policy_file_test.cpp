@@ -6,7 +6,7 @@
 #include "core/common/error.h"
 #include "core/env/decomposition.h"
 #include "core/sac/policy_file.h"
-#include "core/sac/policy_source.h"
+#include "core/api/policy_source.h"
 #include "support/test_shapes.h"
 
 using namespace autoblock;

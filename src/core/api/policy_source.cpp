@@ -1,4 +1,4 @@
-#include "core/sac/policy_source.h"
+#include "core/api/policy_source.h"
 
 #include <cstdlib>
 #include <filesystem>
@@ -6,8 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/baselines/auto_policy.h"
 #include "core/common/error.h"
-#include "core/sac/policy_file.h"
 
 #ifndef AUTOBLOCK_SOURCE_MODELS
 #define AUTOBLOCK_SOURCE_MODELS "models"
@@ -47,11 +47,24 @@ std::vector<std::string> shipped_policy_names() {
 
 std::string default_policy_name() {
   const nlohmann::json index = policy_index();
-  return index.value("default", std::string("optimal"));
+  return index.value("default", std::string("auto"));
+}
+
+std::string auto_fallback_name() {
+  const nlohmann::json index = policy_index();
+  const std::string name = index.value("auto_fallback", std::string());
+  for (const std::string& shipped : shipped_policy_names()) {
+    if (shipped == name) return name;
+  }
+  return "";
 }
 
 PolicySource::PolicySource(const std::string& name_or_path, BaselineOptions baseline)
     : name_(name_or_path.empty() ? default_policy_name() : name_or_path), baseline_(baseline) {
+  if (name_ == "auto") {
+    auto_ = true;
+    return;
+  }
   if (is_baseline_name(name_)) return;
   std::string path = name_;
   for (const std::string& shipped : shipped_policy_names()) {
@@ -59,18 +72,47 @@ PolicySource::PolicySource(const std::string& name_or_path, BaselineOptions base
   }
   std::error_code ec;
   if (path == name_ && !fs::exists(path, ec)) {
-    std::string known;
+    std::string known = "auto, ";
     for (const std::string& n : baseline_names()) known += n + ", ";
     for (const std::string& n : shipped_policy_names()) known += n + ", ";
     throw InputError("unknown policy '" + name_ + "' (expected " + known + "or a policy file)");
   }
-  agent_ = load_policy_file(path, false).agent;
+  path_ = path;
+  learned_ = learned_runtime().load_policy(path);
 }
 
-RewardPreset PolicySource::reward() const { return agent_ ? agent_->config().reward : baseline_.reward; }
+RewardPreset PolicySource::reward() const {
+  if (auto_) return RewardPreset::Mesh;
+  return learned_ ? learned_->reward() : baseline_.reward;
+}
+
+std::shared_ptr<const PolicySource> PolicySource::auto_fallback() const {
+  std::lock_guard<std::mutex> lock(fallback_mutex_);
+  if (!fallback_) {
+    const std::string name = auto_fallback_name();
+    if (name.empty()) throw InputError("no learned policy ships for auto to fall back on");
+    fallback_ = std::make_shared<PolicySource>(name, BaselineOptions{});
+  }
+  return fallback_;
+}
+
+std::unique_ptr<Policy> PolicySource::make_auto_fallback() const {
+  const auto fallback = auto_fallback();
+  return fallback->learned_policy()->deployed_policy(fallback->name());
+}
+
+std::shared_ptr<LearnedPolicy> PolicySource::scoring_policy() const {
+  if (auto_) return auto_fallback()->learned_policy();
+  return learned_;
+}
 
 std::unique_ptr<Policy> PolicySource::make(double face_size, std::uint64_t seed) const {
-  if (agent_) return agent_->deployed_policy(name_);
+  if (auto_) {
+    AutoPolicyOptions options;
+    options.total_seconds = baseline_.optimal_seconds;
+    return std::make_unique<AutoPolicy>(face_size, options, [this] { return make_auto_fallback(); });
+  }
+  if (learned_) return time_limited(learned_->deployed_policy(name_), baseline_.optimal_seconds);
   BaselineOptions options = baseline_;
   options.seed = seed;
   return make_baseline_policy(name_, face_size, options);

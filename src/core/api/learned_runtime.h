@@ -1,0 +1,55 @@
+// The learned-policy runtime, loaded on first use.
+//
+// Everything that needs LibTorch (the networks, the agents, policy files, training) lives in the
+// shared library libautoblock_learn.so, which no front end links: LibTorch's static initialisation
+// alone costs about 0.8 s per process (platform notes), so a command or a FreeCAD session that uses
+// no network must not pay it. The first call of learned_runtime() loads the library (common/plugin.h)
+// from $AUTOBLOCK_LEARN_LIBRARY if set, else from the folder libautoblock_core.so was loaded from.
+//
+// Inputs/outputs: the interfaces below, with only core types in their signatures.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/api/training_job.h"
+#include "core/env/episode.h"
+#include "core/env/policy.h"
+#include "core/env/reward.h"
+
+namespace autoblock {
+
+// A trained policy, loaded from a policy file; shared by every face it decomposes.
+class LearnedPolicy {
+ public:
+  virtual ~LearnedPolicy() = default;
+  // The reward preset it was trained with.
+  virtual RewardPreset reward() const = 0;
+  // Inputs: name, for reports. Output: the deterministic deployed policy (sharing this one).
+  virtual std::unique_ptr<Policy> deployed_policy(const std::string& name) = 0;
+  // The value network's score at every model vertex of the episode's current part.
+  virtual std::vector<float> vertex_scores(const Episode& episode) = 0;
+};
+
+class LearnedRuntime {
+ public:
+  virtual ~LearnedRuntime() = default;
+  // Inputs: path, a policy file. Throws InputError for a missing, corrupt or incompatible file.
+  virtual std::shared_ptr<LearnedPolicy> load_policy(const std::string& path) = 0;
+  // See run_training_job (training_job.h).
+  virtual TrainingOutcome run_training_job(const TrainingJob& job, const TrainingCallbacks& callbacks) = 0;
+};
+
+// Output: the runtime, loaded on the first call (thread-safe). Throws std::runtime_error naming the
+// library and dlopen's message when it cannot be loaded.
+LearnedRuntime& learned_runtime();
+
+// True once the runtime has been loaded in this process (for tests and reports; never loads it).
+bool learned_runtime_loaded();
+
+}  // namespace autoblock
+
+// The library's one exported entry point (a function, not an object, so that its construction
+// happens on first call).
+extern "C" autoblock::LearnedRuntime* autoblock_learned_runtime();
