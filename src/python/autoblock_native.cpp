@@ -218,6 +218,9 @@ py::dict policy_info_py(const std::string& spec) {
   d["name"] = source->name();
   d["learned"] = source->learned();
   d["reward"] = reward_preset_name(source->reward());
+  // Whose value network scores the vertices (auto: its learned fallback's); None for a baseline.
+  const std::string scorer = source->scoring_policy_name();
+  d["scores_by"] = scorer.empty() ? py::object(py::none()) : py::object(py::str(scorer));
   return d;
 }
 

@@ -44,17 +44,21 @@ class TestNativeModule(unittest.TestCase):
 
         module = native.load()
         self.assertEqual(AutoBlock.policy_names(), list(module.policy_names()))
-        self.assertEqual(AutoBlock.policy_names(), ["sac-mesh", "sac-paper", "optimal", "greedy", "random-split",
-                                                    "random"])
-        self.assertEqual(module.default_policy(), "sac-mesh")
-        self.assertEqual(AutoBlock.default_policy(), "sac-mesh")  # no preference set in the test's user folder
+        self.assertEqual(AutoBlock.policy_names(), ["auto", "sac-mesh", "sac-paper", "optimal", "greedy",
+                                                    "random-split", "random"])
+        self.assertEqual(module.default_policy(), "auto")
+        self.assertEqual(AutoBlock.default_policy(), "auto")  # no preference set in the test's user folder
         self.assertEqual(AutoBlock.reward_presets(), ["paper", "mesh"])
         self.assertEqual(module.default_reward_preset(), "")
         self.assertEqual(AutoBlock.capabilities(), {"learned_policies": True, "training": True, "vertex_scores": True,
                                                     "meshing": True})
-        self.assertEqual(AutoBlock.policy_info(), {"name": "sac-mesh", "learned": True, "reward": "mesh"})
+        self.assertEqual(AutoBlock.policy_info(), {"name": "auto", "learned": False, "reward": "mesh",
+                                                   "scores_by": "sac-mesh"})
+        self.assertEqual(AutoBlock.policy_info("sac-mesh"), {"name": "sac-mesh", "learned": True, "reward": "mesh",
+                                                             "scores_by": "sac-mesh"})
         self.assertEqual(AutoBlock.policy_info("sac-paper")["reward"], "paper")
-        self.assertEqual(AutoBlock.policy_info("greedy"), {"name": "greedy", "learned": False, "reward": "paper"})
+        self.assertEqual(AutoBlock.policy_info("greedy"), {"name": "greedy", "learned": False, "reward": "paper",
+                                                           "scores_by": None})
 
     def test_input_errors_are_value_errors(self):
         from AutoBlock import native
@@ -101,7 +105,7 @@ class TestDecompose(unittest.TestCase):
     def test_decompose_a_sample_face(self):
         face = support.read_face()
         result = AutoBlock.decompose(face)
-        self.assertEqual(result.policy, "sac-mesh")
+        self.assertEqual(result.policy, "auto")
         self.assertEqual(result.reward, "mesh")  # the policy's own preset
         self.assertTrue(result.complete)
         self.check_partition(result, face)
@@ -263,7 +267,7 @@ class TestDecompose(unittest.TestCase):
     def test_stepping_through_a_result(self):
         face = support.read_face()
         result = AutoBlock.decompose(face)
-        self.assertEqual(result.policy, "sac-mesh")
+        self.assertEqual(result.policy, "auto")
         stepper = result.stepper()
         self.assertEqual(stepper.reward, "mesh")
         self.assertEqual(stepper.steps, len(result.cuts))
@@ -356,9 +360,9 @@ class TestAutoBlockObject(unittest.TestCase):
         obj = AutoBlock.make_autoblock(source)
         self.assertTrue(AutoBlock.is_autoblock(obj))
         self.assertEqual(obj.Source[0], source)
-        self.assertEqual(obj.Policy, "sac-mesh")
+        self.assertEqual(obj.Policy, "auto")
         self.assertEqual(obj.RewardPreset, "")  # the policy's own ...
-        self.assertEqual(obj.RewardUsed, "mesh")  # ... which is sac-mesh's mesh preset
+        self.assertEqual(obj.RewardUsed, "mesh")  # ... which is auto's mesh preset
         self.assertEqual(obj.getEnumerationsOfProperty("Policy"), AutoBlock.policy_names())
         self.assertEqual(obj.getEnumerationsOfProperty("RewardPreset"), ["", "paper", "mesh"])
         expected = AutoBlock.decompose(source)
@@ -674,7 +678,7 @@ class TestMeshes(unittest.TestCase):
         self.assertEqual(mesh.fem_mesh().QuadrangleCount, len(mesh.quads))
         # A face straight away (decomposed with the default policy), and the automatic size.
         auto = AutoBlock.mesh(face)
-        self.assertEqual(auto.decomposition.policy, "sac-mesh")
+        self.assertEqual(auto.decomposition.policy, "auto")
         box = face.BoundBox
         self.assertAlmostEqual(auto.target_size, max(box.XLength, box.YLength) / 20)
 

@@ -101,6 +101,11 @@ std::unique_ptr<Policy> PolicySource::make_auto_fallback() const {
   return fallback->learned_policy()->deployed_policy(fallback->name());
 }
 
+std::string PolicySource::scoring_policy_name() const {
+  if (auto_) return auto_fallback_name();
+  return learned_ ? name_ : std::string();
+}
+
 std::shared_ptr<LearnedPolicy> PolicySource::scoring_policy() const {
   if (auto_) return auto_fallback()->learned_policy();
   return learned_;

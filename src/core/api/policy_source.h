@@ -46,6 +46,8 @@ class PolicySource {
   // The value network that scores vertices: the trained policy's; auto's learned fallback (loaded
   // now); null for a baseline.
   std::shared_ptr<LearnedPolicy> scoring_policy() const;
+  // Its name ("sac-mesh" for auto; the policy's own name; empty for a baseline), without loading it.
+  std::string scoring_policy_name() const;
   // The policy file's path (empty for a baseline).
   std::string path() const { return path_; }
 
