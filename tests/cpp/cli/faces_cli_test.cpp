@@ -81,7 +81,7 @@ TEST_CASE("autoblock faces lists a part's faces with number, surface, area and n
   check_input_error(test::run_autoblock("faces '" + part.folder + "/missing.step'"));
 }
 
-TEST_CASE("--face N picks a face of a STEP part: good, missing, out of range, curved", "[cli][faces][errors]") {
+TEST_CASE("the option --face N picks a face of a STEP part: good, missing, out of range, curved", "[cli][faces][errors]") {
   const StepPart part = step_part();
   const std::string file = "'" + part.path + "'";
   const std::string top = std::to_string(part.top);
