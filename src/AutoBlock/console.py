@@ -15,7 +15,7 @@ import json
 import FreeCAD  # noqa: F401  (before Part)
 import Part
 
-from . import faces, native, preferences
+from . import faces, native, preferences, text
 
 
 class Cut:
@@ -38,8 +38,9 @@ class Cut:
         self.children = children
 
     def __repr__(self):
-        return "Cut(part {}, {} at ({:g}, {:g}), {} pieces, reward {:.3f})".format(
-            self.part, self.direction, self.local[0], self.local[1], self.n_parts, self.reward)
+        return "Cut(part {}, {} at {}, {}, reward {:.3f})".format(
+            self.part, self.direction, text.point(self.local[0], self.local[1]), text.counted(self.n_parts, "piece"),
+            self.reward)
 
 
 class DecompositionResult:
@@ -81,8 +82,9 @@ class DecompositionResult:
 
     def summary(self):
         """'6 blocks (minimum 5), 5 cuts, return 30.593 (paper reward), complete'"""
-        return "{} blocks (minimum {}), {} cuts, return {:.3f} ({} reward), {}{}".format(
-            self.n_blocks, self.min_blocks, len(self.cuts), self.ret, self.reward, self.status,
+        return "{} (minimum {}), {}, return {:.3f} ({} reward), {}{}".format(
+            text.counted(self.n_blocks, "block"), self.min_blocks, text.counted(len(self.cuts), "cut"), self.ret,
+            self.reward, self.status,
             " (search time limit hit)" if self.time_capped else "")
 
     def __repr__(self):
@@ -170,11 +172,13 @@ def local_face(target, sub=None):
     return face, faces.into_frame(face, frame), frame, label
 
 
-def _in_frame_note(frame, error):
+def _in_frame_note(frame, error, size=0.0):
+    """The core's message about a face in its own frame, with where that frame lies (size: the face's, for the
+    tolerance its coordinates are printed to; 0: the origin's distance from the model's origin)."""
     if faces.is_identity(frame):
         return error
-    return ValueError("{} (coordinates in the face's own plane: origin ({:g}, {:g}, {:g}))".format(
-        error, frame.Base.x, frame.Base.y, frame.Base.z))
+    return ValueError("{} (coordinates in the face's own plane: origin {})".format(
+        error, text.vector(frame.Base, text.tolerance_of(size or frame.Base.Length))))
 
 
 def check_face(target, sub=None):
@@ -184,7 +188,7 @@ def check_face(target, sub=None):
     try:
         return dict(native.load().check_face(local.exportBrepToString(), label))
     except ValueError as error:
-        raise _in_frame_note(frame, error) from None
+        raise _in_frame_note(frame, error, face.BoundBox.DiagonalLength) from None
 
 
 def decompose(face_or_object, policy=None, reward=None, seed=0, time_limit=30.0, max_steps=0, sub=None):
@@ -192,7 +196,7 @@ def decompose(face_or_object, policy=None, reward=None, seed=0, time_limit=30.0,
 
     face_or_object: a Part.Face, a shape holding one face (or closed wires, as a sketch), a document
         object, or (object, "FaceN").
-    policy: a name of AutoBlock.policy_names() or a policy file; None: the preferred default (sac-mesh unless
+    policy: a name of AutoBlock.policy_names() or a policy file; None: the preferred default (auto unless
         the preferences say otherwise).
     reward: a reward preset (AutoBlock.reward_presets()) to score the cuts with; "": the policy's own (a
         trained policy's, "paper" for the baselines); None: the preferred one ("" unless set).
@@ -207,7 +211,7 @@ def decompose(face_or_object, policy=None, reward=None, seed=0, time_limit=30.0,
                                 preferences.reward_preset() if reward is None else reward, int(seed),
                                 float(time_limit), int(max_steps), label)
     except ValueError as error:
-        raise _in_frame_note(frame, error) from None
+        raise _in_frame_note(frame, error, face.BoundBox.DiagonalLength) from None
     return DecompositionResult(data, face, local, frame, label)
 
 
@@ -217,13 +221,14 @@ def policy_names():
 
 
 def default_policy():
-    """The policy used when none is given: the preferences' choice, else the core's default (sac-mesh)."""
+    """The policy used when none is given: the preferences' choice, else the core's default (auto)."""
     return preferences.default_policy()
 
 
 def policy_info(policy=None):
     """What a policy is (from the core): {"name", "learned" (a trained policy, with a value network), "reward"
-    (the preset it aims at)}. policy: a name or a policy file; None: the default. ValueError when unknown."""
+    (the preset it aims at), "scores_by" (whose value network scores vertices: its own, auto's fallback's, or
+    None)}. policy: a name or a policy file; None: the default. ValueError when unknown."""
     return dict(native.load().policy_info(policy or preferences.default_policy()))
 
 
@@ -270,8 +275,9 @@ class MeshResult:
 
     def summary(self):
         """'5 blocks, 96 nodes, 70 quads, size 0.6 (max deviation 0.0 %), min scaled Jacobian 1, conformal'"""
-        return "{} blocks, {} nodes, {} quads, size {:.4g} (max deviation {:.1f} %), min scaled Jacobian {:.4g}, {}".format(
-            self.n_blocks, len(self.nodes), len(self.quads), self.target_size, 100.0 * self.max_relative_deviation,
+        return "{}, {}, {}, size {} (max deviation {:.1f} %), min scaled Jacobian {:.4g}, {}".format(
+            text.counted(self.n_blocks, "block"), text.counted(len(self.nodes), "node"),
+            text.counted(len(self.quads), "quad"), text.significant(self.target_size), 100.0 * self.max_relative_deviation,
             self.quality["min_scaled_jacobian"], "conformal" if self.conformal else "NOT conformal")
 
     def __repr__(self):

@@ -10,6 +10,8 @@ own frame first (face_frame), cut there, and the blocks carried back.
 import FreeCAD
 import Part
 
+from . import text
+
 IDENTITY = FreeCAD.Placement()
 
 
@@ -90,7 +92,9 @@ def _single_face(shape, label):
     if not wires:
         raise ValueError("{} holds no face and no closed wire".format(label))
     if not all(w.isClosed() for w in wires):
-        raise ValueError("{} holds no face, and not all of its {} wire(s) are closed".format(label, len(wires)))
+        if len(wires) == 1:
+            raise ValueError("{} holds no face, and its wire is not closed".format(label))
+        raise ValueError("{} holds no face, and not all of its {} are closed".format(label, text.counted(len(wires), "wire")))
     try:
         made = Part.makeFace(wires, "Part::FaceMakerBullseye")
     except Exception as error:
@@ -118,7 +122,7 @@ def face_frame(face):
     normal = FreeCAD.Vector(surface.Axis)
     normal.normalize()
     size = max(face.BoundBox.XLength, face.BoundBox.YLength, face.BoundBox.ZLength, 1e-300)
-    tolerance = 1e-7 * size
+    tolerance = text.tolerance_of(size)
     if abs(abs(normal.z) - 1.0) < 1e-12:
         for edge in lines:
             d = edge.Vertexes[-1].Point - edge.Vertexes[0].Point

@@ -73,6 +73,15 @@ class Stepper:
     def steps(self):
         return len(self.cuts)
 
+    @property
+    def scores_by(self):
+        """Whose value network gives the scores: the policy's own, auto's learned fallback (sac-mesh), or the
+        policy's name when the core cannot say."""
+        try:
+            return native.load().policy_info(self.policy).get("scores_by") or self.policy
+        except (ValueError, RuntimeError, native.NativeModuleMissing):
+            return self.policy
+
     def step(self, k):
         """The StepView after k cuts (0 <= k <= steps). Raises ValueError when the cuts do not belong
         to the face."""

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <map>
 
+#include "core/common/format.h"
+
 namespace autoblock::cli {
 
 void PolicyArguments::add_to(CLI::App& command) {
@@ -41,11 +43,31 @@ EpisodeOptions PolicyArguments::episode_options() const {
   return options;
 }
 
+void FaceArguments::add_to(CLI::App& command) {
+  command.add_option("--face", face,
+                     "the face to use when the file holds several (a solid, a shell): its number N, as FreeCAD "
+                     "numbers faces (Face1, Face2, ...); `autoblock faces FILE` lists them")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            int n = 0;
+            return CLI::detail::lexical_cast(text, n) && n >= 1
+                       ? std::string()
+                       : "faces are numbered from 1 (Face1, Face2, ...), not " + text;
+          },
+          "N >= 1"));
+}
+
+InputFace FaceArguments::load(const std::string& file) const {
+  return load_input_face(file, face, "choose one with --face N (`autoblock faces " + file + "` lists them)");
+}
+
 std::string summary_line(const Decomposition& d) {
   char buf[256];
-  std::snprintf(buf, sizeof buf, "%zu blocks (minimum %d), %zu cuts, return %.3f, %s%s, %.1f ms", d.blocks.size(),
-                d.min_blocks, d.cuts.size(), d.total_return, status_name(d.status).c_str(),
-                d.time_capped ? " (time limit hit: greedy finished)" : "", d.seconds * 1000.0);
+  std::snprintf(buf, sizeof buf, "%s (minimum %d), %s, return %.3f, %s%s, %.1f ms",
+                counted(static_cast<long long>(d.blocks.size()), "block").c_str(), d.min_blocks,
+                counted(static_cast<long long>(d.cuts.size()), "cut").c_str(), d.total_return,
+                status_name(d.status).c_str(), d.time_capped ? " (time limit hit: greedy finished)" : "",
+                d.seconds * 1000.0);
   // Who decided the cuts, when that is not simply the policy itself (auto, a time limit).
   std::map<std::string, int> deciders;
   for (const std::string& who : d.decided_by) ++deciders[who];

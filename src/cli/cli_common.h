@@ -32,6 +32,15 @@ struct PolicyArguments {
   mutable std::shared_ptr<const PolicySource> source_;
 };
 
+// The --face option of the commands that read a face from a file.
+struct FaceArguments {
+  int face = 0;  // 1-based, as FreeCAD numbers faces (Face1, Face2, ...); 0: the file's only face
+
+  void add_to(CLI::App& command);
+  // Inputs: file. Output: its chosen face, checked. Throws InputError that says how to choose.
+  InputFace load(const std::string& file) const;
+};
+
 // "7 blocks (minimum 5), 6 cuts, return 23.41, complete, 1.2 ms"
 std::string summary_line(const Decomposition& decomposition);
 

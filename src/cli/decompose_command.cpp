@@ -1,4 +1,4 @@
-// autoblock decompose FILE [--policy NAME] [--out blocks.brep] [--json report.json]
+// autoblock decompose FILE [--face N] [--policy NAME] [--out blocks.brep] [--json report.json]
 //                          [--picture blocks.svg] [--seed S] [--max-steps N] [--time-limit T]
 #include <filesystem>
 #include <iostream>
@@ -35,10 +35,12 @@ void add_decompose_command(CLI::App& app) {
   struct Arguments {
     std::string file, out, json, picture;
     PolicyArguments policy;
+    FaceArguments face;
   };
   auto args = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("decompose", "Cut one planar face into rectangular blocks.");
-  command->add_option("FILE", args->file, "a .brep, .step or .stp file holding one planar face")->required();
+  command->add_option("FILE", args->file, "a .brep, .step or .stp file: one planar face, or a part with --face N")->required();
+  args->face.add_to(*command);
   args->policy.add_to(*command);
   command->add_option("--out", args->out, "write the blocks (a conformal compound of faces sharing their edges) to a .brep, .step or .stp file");
   command->add_option("--json", args->json, "write the report as JSON");
@@ -46,7 +48,7 @@ void add_decompose_command(CLI::App& app) {
   command->callback([args] {
     require_extension(args->out, {".brep", ".brp", ".step", ".stp"}, "--out");
     if (!args->picture.empty()) check_picture_path(args->picture, "--picture");
-    const InputFace face = load_input_face(args->file);
+    const InputFace face = args->face.load(args->file);
     std::unique_ptr<Policy> policy = args->policy.make(face);
     const EpisodeOptions options = args->policy.episode_options();
     const Decomposition result = decompose_face(face.grid, *policy, options);
@@ -64,7 +66,7 @@ void add_decompose_command(CLI::App& app) {
                                 " | " + summary_line(result);
       write_picture(args->picture, decomposition_svg(face.planar.polygon, result.blocks, result.cuts, title));
     }
-    std::cout << args->file << ": " << result.policy << ": " << summary_line(result) << "\n";
+    std::cout << face.source << ": " << result.policy << ": " << summary_line(result) << "\n";
     if (!args->out.empty()) std::cout << "  blocks:  " << args->out << "\n";
     if (!args->json.empty()) std::cout << "  report:  " << args->json << "\n";
     if (!args->picture.empty()) std::cout << "  picture: " << args->picture << "\n";

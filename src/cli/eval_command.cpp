@@ -1,4 +1,4 @@
-// autoblock eval DIR_OR_FILES... [--policy NAME] [--json out.json] [--seed S] [--threads T]
+// autoblock eval DIR_OR_FILES... [--face N] [--policy NAME] [--json out.json] [--seed S] [--threads T]
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_common.h"
+#include "core/common/format.h"
 #include "cli/commands.h"
 #include "cli/progress_bar.h"
 #include "core/io/dataset.h"
@@ -36,10 +37,12 @@ void add_eval_command(CLI::App& app) {
     std::string json;
     int threads = 0;
     PolicyArguments policy;
+    FaceArguments face;
   };
   auto args = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("eval", "Decompose a set of faces and report per-shape and overall figures.");
   command->add_option("DIR_OR_FILES", args->paths, "folders of .brep/.step/.stp files, or files")->required();
+  args->face.add_to(*command);
   args->policy.add_to(*command);
   command->add_option("--json", args->json, "write per-shape reports and the summary as JSON");
   command->add_option("--threads", args->threads, "worker threads (0: one per core)")
@@ -49,7 +52,7 @@ void add_eval_command(CLI::App& app) {
     // Read and check every input before any work, so bad input stops the run at once.
     const std::vector<std::string> files = collect_shape_files(args->paths);
     std::vector<InputFace> faces;
-    for (const std::string& file : files) faces.push_back(load_input_face(file));
+    for (const std::string& file : files) faces.push_back(args->face.load(file));
     const std::string policy_name = args->policy.source()->name();  // loads the policy, or says why not
 
     std::vector<Decomposition> results(faces.size());
@@ -117,9 +120,9 @@ void add_eval_command(CLI::App& app) {
         {"wall_seconds", wall},
         {"threads", thread_count}};
     const nlohmann::json& s = report["summary"];
-    std::printf("\n%s on %zu shapes: return mean %.3f median %.3f; blocks mean %.2f (minimum %.2f, ratio %.3f); "
+    std::printf("\n%s on %s: return mean %.3f median %.3f; blocks mean %.2f (minimum %.2f, ratio %.3f); "
                 "complete %zu/%zu%s; %.2f ms per shape, %.3f ms per cut\n",
-                report["policy"].get<std::string>().c_str(), faces.size(), s["return"]["mean"].get<double>(),
+                report["policy"].get<std::string>().c_str(), counted(static_cast<long long>(faces.size()), "shape").c_str(), s["return"]["mean"].get<double>(),
                 s["return"]["median"].get<double>(), s["blocks"]["mean"].get<double>(),
                 s["min_blocks"]["mean"].get<double>(), s["blocks_over_min"]["mean"].get<double>(), complete, faces.size(),
                 capped ? (", " + std::to_string(capped) + " hit the time limit").c_str() : "",

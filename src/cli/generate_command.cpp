@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "core/common/format.h"
 #include "core/data/shape_generator.h"
 #include "core/io/dataset.h"
 
@@ -42,7 +43,7 @@ void add_generate_command(CLI::App& app) {
                                       {"min_side", args->options.min_side},
                                       {"max_side", args->options.max_side}};
     write_dataset(args->out, shapes, generator);
-    std::cout << "wrote " << shapes.size() << " shapes and index.json to " << args->out << "\n";
+    std::cout << "wrote " << counted(static_cast<long long>(shapes.size()), "shape") << " and index.json to " << args->out << "\n";
   });
 }
 

@@ -1,4 +1,4 @@
-// autoblock mesh FILE [--policy NAME] [--size H] [--intervals X0,Y0,X1,Y1=N ...]
+// autoblock mesh FILE [--face N] [--policy NAME] [--size H] [--intervals X0,Y0,X1,Y1=N ...]
 //                     [--out mesh.msh|.vtu|.inp] [--picture mesh.svg|.png] [--json report.json]
 //                     [--seed S] [--max-steps N] [--time-limit T]
 #include <chrono>
@@ -11,6 +11,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "core/common/error.h"
+#include "core/common/format.h"
 #include "core/io/text_file.h"
 #include "core/mesh/mesh_export.h"
 #include "core/mesh/mesh_picture.h"
@@ -58,24 +59,29 @@ void require_folder(const std::string& path, const std::string& option) {
   }
 }
 
+// The element size to four significant digits, as a plain decimal.
+std::string size_text(const MeshResult& r) { return format_significant(r.intervals.target_size, 4); }
+
 std::string mesh_summary(const Decomposition& d, const MeshResult& r, double seconds) {
   char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "%zu blocks, %zu nodes, %zu quads, size %.4g (max deviation %.1f %%), min scaled Jacobian %.4g, "
-                "%d irregular interior vertices, %s, %.1f ms",
-                d.blocks.size(), r.mesh.nodes.size(), r.mesh.quads.size(), r.intervals.target_size,
+  std::snprintf(buf, sizeof buf, "%s, %s, %s, size %s (max deviation %.1f %%), min scaled Jacobian %.4g, %s, %s, %.1f ms",
+                counted(static_cast<long long>(d.blocks.size()), "block").c_str(),
+                counted(static_cast<long long>(r.mesh.nodes.size()), "node").c_str(),
+                counted(static_cast<long long>(r.mesh.quads.size()), "quad").c_str(), size_text(r).c_str(),
                 100.0 * r.intervals.max_relative_deviation, r.quality.min_scaled_jacobian,
-                r.quality.irregular_interior_nodes, r.conformity.conformal ? "conformal" : "NOT conformal",
-                seconds * 1000.0);
+                counted(r.quality.irregular_interior_nodes, "irregular interior vertex", "irregular interior vertices").c_str(),
+                r.conformity.conformal ? "conformal" : "NOT conformal", seconds * 1000.0);
   return buf;
 }
 
 // The picture's second title line, short enough for its width.
 std::string picture_summary(const Decomposition& d, const MeshResult& r) {
   char buf[256];
-  std::snprintf(buf, sizeof buf, "%zu blocks, %zu quads, size %.4g, min scaled Jacobian %.4g, %d irregular vertices",
-                d.blocks.size(), r.mesh.quads.size(), r.intervals.target_size, r.quality.min_scaled_jacobian,
-                r.quality.irregular_interior_nodes);
+  std::snprintf(buf, sizeof buf, "%s, %s, size %s, min scaled Jacobian %.4g, %s",
+                counted(static_cast<long long>(d.blocks.size()), "block").c_str(),
+                counted(static_cast<long long>(r.mesh.quads.size()), "quad").c_str(), size_text(r).c_str(),
+                r.quality.min_scaled_jacobian,
+                counted(r.quality.irregular_interior_nodes, "irregular vertex", "irregular vertices").c_str());
   return buf;
 }
 
@@ -87,10 +93,12 @@ void add_mesh_command(CLI::App& app) {
     double size = 0.0;
     std::vector<std::string> intervals;
     PolicyArguments policy;
+    FaceArguments face;
   };
   auto args = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("mesh", "Decompose one planar face into blocks and mesh them with quadrilaterals.");
-  command->add_option("FILE", args->file, "a .brep, .step or .stp file holding one planar face")->required();
+  command->add_option("FILE", args->file, "a .brep, .step or .stp file: one planar face, or a part with --face N")->required();
+  args->face.add_to(*command);
   args->policy.add_to(*command);
   command->add_option("--size", args->size,
                       "target element size (default: 1/20 of the longer side of the face's bounding box)")
@@ -113,7 +121,7 @@ void add_mesh_command(CLI::App& app) {
     options.episode = args->policy.episode_options();
     for (const std::string& text : args->intervals) options.fixed.push_back(parse_edge_intervals(text));
 
-    const InputFace face = load_input_face(args->file);
+    const InputFace face = args->face.load(args->file);
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<Policy> policy = args->policy.make(face);
     const Decomposition decomposition = decompose_face(face.grid, *policy, options.episode);
@@ -135,7 +143,7 @@ void add_mesh_command(CLI::App& app) {
     if (!args->out.empty()) write_text_file(args->out, mesh_text);
     if (!args->picture.empty()) write_picture(args->picture, picture);
     if (!args->json.empty()) write_text_file(args->json, report);
-    std::cout << args->file << ": " << decomposition.policy << ": " << mesh_summary(decomposition, result, seconds) << "\n";
+    std::cout << face.source << ": " << decomposition.policy << ": " << mesh_summary(decomposition, result, seconds) << "\n";
     if (!args->out.empty()) std::cout << "  mesh:    " << args->out << "\n";
     if (!args->json.empty()) std::cout << "  report:  " << args->json << "\n";
     if (!args->picture.empty()) std::cout << "  picture: " << args->picture << "\n";

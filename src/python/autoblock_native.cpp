@@ -23,6 +23,7 @@
 #include "core/api/training_job.h"
 #include "core/baselines/min_rectangles.h"
 #include "core/common/error.h"
+#include "core/common/format.h"
 #include "core/io/shape_file.h"
 #include "core/io/svg_picture.h"
 #include "core/mesh/mesh_export.h"
@@ -35,7 +36,7 @@ namespace {
 // The face held by BREP text (exactly one face), checked.
 InputFace face_of(const std::string& brep, const std::string& source) {
   const TopoDS_Shape shape = read_brep_text(brep);
-  return check_face(single_face(shape, source), source);
+  return check_shape_face(shape, source, 0);
 }
 
 CutDirection direction_of(const std::string& name) {
@@ -412,6 +413,10 @@ PYBIND11_MODULE(autoblock_native, m) {
   m.def("default_reward_preset", &default_reward_preset, "The default reward preset.");
   m.def("block_colours", &block_colours, py::arg("count"),
         "Distinct pastel colours (r, g, b in [0, 1]) for blocks 0 .. count-1, as in the SVG pictures.");
+  m.def("format_number", [](double value, double tolerance) { return format_number(value, tolerance); },
+        py::arg("value"), py::arg("tolerance") = 0.0,
+        "A number as messages print it: a plain decimal ('80', '2.5') rounded to `tolerance` (noise below it reads "
+        "'0'; 0: exact), scientific notation only beyond 1e15 or below 1e-4.");
   m.def("check_face", &check_face_py, py::arg("brep"), py::arg("source") = "face",
         "Validate the single planar face held by BREP text. Returns its figures; raises ValueError saying what is "
         "wrong and where.");

@@ -90,6 +90,41 @@ class TestNativeModule(unittest.TestCase):
                           "test_folder": support.SAMPLES})
 
 
+class TestText(unittest.TestCase):
+    def test_counts_agree_with_their_nouns(self):
+        from AutoBlock import text
+
+        self.assertEqual(text.counted(0, "cut"), "0 cuts")
+        self.assertEqual(text.counted(1, "cut"), "1 cut")
+        self.assertEqual(text.counted(2, "cut"), "2 cuts")
+        self.assertEqual(text.counted(1, "vertex", "vertices"), "1 vertex")
+        self.assertEqual(text.counted(4, "vertex", "vertices"), "4 vertices")
+
+    def test_numbers_read_as_a_cad_user_writes_them_the_cores_way(self):
+        from AutoBlock import text
+
+        self.assertEqual(text.number(80), "80")
+        self.assertEqual(text.number(0.1), "0.1")
+        self.assertEqual(text.number(-2.22044604925031e-15, 1e-5), "0")
+        self.assertEqual(text.number(82.99999999999999, 1e-5), "83")
+        self.assertEqual(text.number(1e20), "1e20")
+        self.assertEqual(text.number(2.5e-9), "2.5e-9")
+        self.assertEqual(text.vector(FreeCAD.Vector(80, 3.0000000000000004, -1e-16), text.tolerance_of(83)), "(80, 3, 0)")
+        self.assertEqual(text.point(0.5, 12), "(0.5, 12)")
+        self.assertEqual(text.significant(12345.6), "12350")
+        self.assertEqual(text.significant(0.61234, 3), "0.612")
+
+    def test_messages_about_faces_print_coordinates_plainly(self):
+        # A chamfered top face: the core's message, through the binding, prints plain numbers.
+        face = Part.makePolygon([FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(80, 0, 0), FreeCAD.Vector(83, 3, 0),
+                                 FreeCAD.Vector(83, 40, 0), FreeCAD.Vector(0, 40, 0), FreeCAD.Vector(0, 0, 0)])
+        with self.assertRaises(ValueError) as caught:
+            AutoBlock.decompose(Part.Face(face))
+        message = str(caught.exception)
+        self.assertIn("from (80, 0) to (83, 3), is not parallel to the X or Y axis", message)
+        self.assertNotIn("e+", message)
+
+
 class TestDecompose(unittest.TestCase):
     def check_partition(self, result, face):
         self.assertEqual(len(result.blocks), result.n_blocks)
@@ -139,6 +174,43 @@ class TestDecompose(unittest.TestCase):
         self.assertEqual(result.n_blocks, expected["n_blocks"])
         self.assertAlmostEqual(result.ret, expected["return"], places=9)
         self.assertEqual([c.local for c in result.cuts], [tuple(c["vertex"]) for c in expected["cuts"]])
+
+    def test_the_cli_numbers_a_steps_faces_as_freecad_does(self):
+        """`autoblock faces` and `--face N` on a solid FreeCAD wrote to STEP: FaceN is the same face on both sides."""
+        cli = os.environ.get("AUTOBLOCK_CLI")
+        if not cli:
+            self.skipTest("AUTOBLOCK_CLI not set")
+        folder = support.temporary_folder()
+        try:
+            solid = support.l_face(width=6, height=5, notch=3).extrude(FreeCAD.Vector(0, 0, 2))
+            path = os.path.join(folder, "part.step")
+            solid.exportStep(path)
+            shape = Part.read(path)
+            listed = subprocess.run([cli, "faces", path], capture_output=True, text=True, timeout=60)
+            self.assertEqual(listed.returncode, 0, listed.stderr)
+            rows = [line.split() for line in listed.stdout.splitlines()[2:]]
+            self.assertEqual(len(rows), len(shape.Faces))
+            for row, face in zip(rows, shape.Faces):
+                self.assertAlmostEqual(float(row[2]), face.Area, places=4)
+            top = [i for i, f in enumerate(shape.Faces, 1) if f.BoundBox.ZLength < 1e-9 and f.BoundBox.ZMin > 1]
+            self.assertEqual(len(top), 1)
+            self.assertEqual(rows[top[0] - 1][3:6], ["(0,", "0,", "1)"])
+            report = os.path.join(folder, "report.json")
+            run = subprocess.run([cli, "decompose", path, "--face", str(top[0]), "--json", report], capture_output=True,
+                                 text=True, timeout=120)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            self.assertTrue(run.stdout.startswith("{} (Face{}): ".format(path, top[0])))
+            with open(report) as f:
+                expected = json.load(f)
+            result = AutoBlock.decompose(shape.Faces[top[0] - 1])
+            self.assertEqual(result.n_blocks, expected["n_blocks"])
+            self.assertAlmostEqual(expected["face"]["z"], 2.0)
+            missing = subprocess.run([cli, "decompose", path], capture_output=True, text=True, timeout=60)
+            self.assertEqual(missing.returncode, 2)
+            self.assertIn("--face N", missing.stderr)
+            self.assertIn("autoblock faces", missing.stderr)
+        finally:
+            support.remove_folder(folder)
 
     def test_every_policy_and_holes(self):
         face = support.read_face(support.HOLES_SAMPLE)
@@ -248,7 +320,7 @@ class TestDecompose(unittest.TestCase):
                 (triangle, "not parallel"),
                 (disc, "only straight edges"),
                 (Part.makeCompound([support.l_face(), support.l_face().translate(V(10, 0, 0))]), "2 faces"),
-                (Part.makePolygon([V(0, 0, 0), V(1, 0, 0), V(1, 1, 0)]), "not all of its"),
+                (Part.makePolygon([V(0, 0, 0), V(1, 0, 0), V(1, 1, 0)]), "its wire is not closed"),
             ]
             for target, words in cases:
                 with self.subTest(words=words):
@@ -513,17 +585,36 @@ class TestAutoBlockObject(unittest.TestCase):
         self.doc.save()
         self.assertTrue(os.path.getsize(path) > 0)
 
+    def reported(self):
+        """Replaces write_back's report view messages by a list, restored at the end of the test."""
+        from AutoBlock.objects import write_back
+
+        said = []
+        original = write_back.report
+        write_back.report = said.append
+        self.addCleanup(setattr, write_back, "report", original)
+        return said
+
     def test_write_back_as_a_new_part_feature(self):
+        said = self.reported()
         source = support.add_face(self.doc, support.read_face())
         obj = AutoBlock.make_autoblock(source)
+        self.assertTrue(obj.Visibility)
         feature = AutoBlock.write_back(obj, "new")
         name = feature.Name
         self.assertEqual(feature.TypeId, "Part::Feature")
         self.assertEqual(len(feature.Shape.Faces), obj.NumberOfBlocks)
         self.assertAlmostEqual(feature.Shape.Area, obj.Shape.Area)
         self.assertEqual(self.doc.UndoNames[0], "Write back blocks")
+        # The AutoBlock object shows the same blocks in the same place: it is hidden, and the report says so.
+        self.assertFalse(obj.Visibility)
+        self.assertTrue(feature.Visibility)
+        self.assertEqual(said, ["wrote the {} blocks of {} to the new Part feature {}; hid {}, which shows the same "
+                                "blocks in the same place".format(obj.NumberOfBlocks, obj.Label, feature.Label,
+                                                                  obj.Label)])
         self.doc.undo()
         self.assertIsNone(self.doc.getObject(name))
+        self.assertTrue(obj.Visibility)
         with self.assertRaisesRegex(ValueError, "'new' or 'replace'"):
             AutoBlock.write_back(obj, "sideways")
 
@@ -532,9 +623,14 @@ class TestAutoBlockObject(unittest.TestCase):
         source = support.add_face(self.doc, support.read_face())
         source.Placement.Base = FreeCAD.Vector(0, 0, 3)
         obj = AutoBlock.make_autoblock(source)
-        n, name = obj.NumberOfBlocks, obj.Name
+        n, name, label = obj.NumberOfBlocks, obj.Name, obj.Label
+        said = self.reported()
         result = AutoBlock.write_back(obj, "replace")
         self.assertIs(result, source)
+        self.assertTrue(source.Visibility)
+        self.assertEqual(len(said), 1)
+        self.assertIn("{} now holds the {} blocks in place of its face".format(source.Label, n), said[0])
+        self.assertIn("removed {}".format(label), said[0])
         self.assertEqual(len(source.Shape.Faces), n)
         self.assertIsNone(self.doc.getObject(name))
         self.assertEqual(source.Placement.Base, FreeCAD.Vector(0, 0, 3))
@@ -808,7 +904,8 @@ class TestTraining(unittest.TestCase):
             with open(result["log"]) as f:
                 self.assertEqual(len(f.read().splitlines()), 1 + 6)
             # The trained policy: its own reward, value scores, a parametric object.
-            self.assertEqual(AutoBlock.policy_info(output), {"name": output, "learned": True, "reward": "mesh"})
+            self.assertEqual(AutoBlock.policy_info(output), {"name": output, "learned": True, "reward": "mesh",
+                                                             "scores_by": output})
             decomposition = AutoBlock.decompose(support.read_face(), policy=output)
             self.assertTrue(decomposition.complete)
             self.assertEqual(decomposition.reward, "mesh")

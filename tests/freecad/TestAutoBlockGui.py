@@ -217,9 +217,9 @@ class TestWorkbench(GuiTestCase):
             self.assertEqual(presets, ["each policy's own", "paper", "mesh"])
             params.SetString(preferences.DEFAULT_POLICY, "")
             page.loadSettings()
-            self.assertEqual(page.form.defaultPolicy.currentText(), "sac-mesh")  # the core's default
+            self.assertEqual(page.form.defaultPolicy.currentText(), "auto")  # the core's default
             self.assertEqual(page.form.rewardPreset.currentIndex(), 0)
-            self.assertIn("sac-mesh", page.form.noteLabel.text())
+            self.assertIn("auto", page.form.noteLabel.text())
             page.saveSettings()
             self.assertEqual(params.GetString(preferences.REWARD_PRESET, "x"), "")
             page.form.rewardPreset.setCurrentText("paper")
@@ -256,7 +256,7 @@ class TestAutoBlockCommand(GuiTestCase):
         self.assertEqual(len(objects), 1)
         obj = objects[0]
         expected = AutoBlock.decompose(source)
-        self.assertEqual(obj.Policy, "sac-mesh")
+        self.assertEqual(obj.Policy, "auto")
         self.assertEqual(obj.NumberOfBlocks, expected.n_blocks)
         self.assertEqual(self.doc.UndoCount, undo_count + 1)
         self.assertEqual(self.doc.UndoNames[0], "Auto-Block")
@@ -410,7 +410,7 @@ class TestStepThroughPanel(GuiTestCase):
 
         source = self.add_sample()
         obj = self.auto_block(source)[0]
-        self.assertEqual(obj.Policy, "sac-mesh")
+        self.assertEqual(obj.Policy, "auto")
         mesh = mesh_objects_of(obj)[0]
         top_view()
         before = ([o.Name for o in self.doc.Objects], self.doc.UndoCount, obj.Shape.exportBrepToString(),
@@ -430,15 +430,20 @@ class TestStepThroughPanel(GuiTestCase):
         n = obj.NumberOfCuts
         self.assertGreaterEqual(n, 3)
         self.assertEqual(form.slider.maximum(), n)
-        self.assertEqual(form.positionLabel.text(), "Cut 1 of {}".format(n))
+        # Step 0 shows the face before any cut, and the first cut in red.
+        self.assertEqual(form.positionLabel.text(), "Step 0 of {}: no cut made yet; in red: cut 1".format(n))
         form.nextButton.click()
         pump()
         self.assertEqual(form.slider.value(), 1)
-        self.assertEqual(form.positionLabel.text(), "Cut 2 of {}".format(n))
+        self.assertEqual(form.positionLabel.text(), "Step 1 of {}: 1 cut made; in red: cut 2".format(n))
         form.lastButton.click()
         pump()
-        self.assertEqual(form.positionLabel.text(), "All {} cuts made: complete".format(n))
+        self.assertEqual(form.positionLabel.text(), "Step {0} of {0}: all {0} cuts made, complete".format(n))
         self.assertEqual(form.blocksLabel.text(), "{} blocks".format(obj.NumberOfBlocks))
+        self.assertEqual(step_through.StepThroughPanel.position_text(1, 1, "complete"),
+                         "Step 1 of 1: the only cut made, complete")
+        self.assertEqual(step_through.StepThroughPanel.position_text(0, 1, "complete"),
+                         "Step 0 of 1: no cut made yet; in red: cut 1")
         self.assertEqual(form.returnLabel.text(), "{:.3f} (total)".format(obj.Return))
         form.firstButton.click()
         pump()
@@ -454,13 +459,19 @@ class TestStepThroughPanel(GuiTestCase):
         scores = [x for x in view.next.scores if x is not None]
         self.assertEqual(len(view.next.scores), len(view.next.vertices))
         self.assertGreater(len(scores), 2)
-        self.assertIn("value network of sac-mesh", form.scoresLabel.text())
-        self.assertIn("highest {:.3f}".format(max(scores)), form.scoresLabel.text())
-        self.assertIn("scores {:.3f}".format(view.next.scores[view.next.chosen]), form.scoresLabel.text())
-        texts = self.scene_texts(panel.scene.content)
-        self.assertEqual(sorted(texts), sorted("{:.2f}".format(x) for x in scores))
+        words = step_through.plain_text(form.scoresLabel.text())
+        self.assertIn("value network of sac-mesh", words)
+        self.assertIn("<span style='white-space:nowrap'>sac-mesh</span>", form.scoresLabel.text())
+        self.assertIn("highest {:.3f}".format(max(scores)), words)
+        self.assertIn("scores {:.3f}".format(view.next.scores[view.next.chosen]), words)
+        self.assertIn("ringed in red", words)
+        # One screen-space mark (an image) per scored vertex, labelled with its score.
+        self.assertEqual(sorted(panel.scene.labels), sorted("{:.2f}".format(x) for x in scores))
+        self.assertEqual(len(self.scene_nodes_of_type(panel.scene.content, "SoImage")), len(scores))
+        self.assertEqual(self.scene_nodes_of_type(panel.scene.content, "SoText2"), [])
         FreeCADGui.Selection.clearSelection()
         screenshot("step-through")
+        self.check_screenshot_on_a_light_background("step-through-light")
         panel.reject()
         pump()
         self.assertFalse(FreeCADGui.Control.activeDialog())
@@ -474,16 +485,68 @@ class TestStepThroughPanel(GuiTestCase):
         self.assertIsNone(FreeCAD.getActiveTransaction())
 
     @staticmethod
-    def scene_texts(node):
-        """The strings of every SoText2 under `node`."""
+    def scene_nodes_of_type(node, type_name):
+        """Every node of the Coin type `type_name` under `node`."""
         from pivy import coin
 
         search = coin.SoSearchAction()
-        search.setType(coin.SoText2.getClassTypeId())
+        search.setType(coin.SoType.fromName(type_name))
         search.setInterest(coin.SoSearchAction.ALL)
         search.apply(node)
         paths = search.getPaths()
-        return [paths[i].getTail().string.getValues()[0] for i in range(paths.getLength())]
+        return [paths[i].getTail() for i in range(paths.getLength())]
+
+    def check_screenshot_on_a_light_background(self, name):
+        """The same picture on a plain light background (saved as `name` when screenshots are taken)."""
+        params = FreeCAD.ParamGet("User parameter:BaseApp/Preferences/View")
+        saved = (params.GetBool("Simple", False), params.GetBool("Gradient", True),
+                 params.GetUnsigned("BackgroundColor", 0))
+        try:
+            params.SetBool("Gradient", False)
+            params.SetBool("Simple", True)
+            params.SetUnsigned("BackgroundColor", 0xF2F2F2FF)
+            pump()
+            screenshot(name)
+        finally:
+            params.SetUnsigned("BackgroundColor", saved[2])
+            params.SetBool("Simple", saved[0])
+            params.SetBool("Gradient", saved[1])
+            pump()
+
+    def test_the_chosen_vertex_is_ringed_in_red_and_marks_keep_their_size_in_pixels(self):
+        from PySide2 import QtGui
+
+        from AutoBlock.taskpanels import step_scene
+
+        def pixels(colour, label, chosen):
+            width, height, data = step_scene.badge_image(colour, label, chosen)
+            image = QtGui.QImage(data, width, height, 4 * width, QtGui.QImage.Format_RGBA8888).mirrored(False, True)
+            return image, width, height
+
+        chosen, width, height = pixels((0.2, 0.35, 1.0), "0.42", True)
+        plain, width2, height2 = pixels((0.2, 0.35, 1.0), "0.42", False)
+        self.assertEqual((width, height), (width2, height2))
+        cx, cy = width // 2, height // 2
+        ring = step_scene.BADGE_RADIUS + 2 + step_scene.RING_WIDTH / 2.0
+        # Around the disc, left of the vertex (the label is on the right): red when chosen, nothing otherwise; no
+        # white halo anywhere around the ring.
+        for dx, dy in ((-ring, 0), (0, -ring), (0, ring)):
+            red = QtGui.QColor(chosen.pixel(int(round(cx + dx)), int(round(cy + dy))))
+            self.assertGreater(red.red(), 180)
+            self.assertLess(red.green(), 60)
+            self.assertEqual(QtGui.QColor.fromRgba(plain.pixel(int(round(cx + dx)), int(round(cy + dy)))).alpha(), 0)
+        self.assertEqual(QtGui.QColor.fromRgba(chosen.pixel(0, cy)).alpha(), 0)
+        # The disc has the score's colour at the vertex.
+        centre = QtGui.QColor(chosen.pixel(cx, cy))
+        self.assertEqual((centre.red(), centre.green(), centre.blue()), (51, 89, 255))
+        # The label is white on a dark box, right of the disc.
+        label = [QtGui.QColor.fromRgba(chosen.pixel(x, y)) for x in range(cx + int(ring) + 4, width)
+                 for y in range(height)]
+        self.assertTrue(any(c.red() > 240 and c.green() > 240 and c.alpha() > 240 for c in label))
+        self.assertTrue(any(c.red() < 40 and c.alpha() > 180 for c in label))
+        # A fixed size in pixels: no model size enters the marks (SoImage draws them in screen space).
+        self.assertLess(width, 120)
+        self.assertLess(height, 40)
 
     def test_a_baseline_has_no_scores_and_the_panel_says_so(self):
         from AutoBlock.taskpanels import step_through
@@ -494,8 +557,10 @@ class TestStepThroughPanel(GuiTestCase):
         pump()
         panel = step_through.current_panel()
         self.assertIsNone(panel.current.next.scores)
-        self.assertIn("'optimal' is a baseline", panel.form.scoresLabel.text())
-        self.assertEqual(self.scene_texts(panel.scene.content), [])
+        self.assertIn("'optimal' is a baseline", step_through.plain_text(panel.form.scoresLabel.text()))
+        self.assertEqual(panel.scene.labels, [])
+        # Only the chosen vertex gets a mark (its red ring); the others are plain dots.
+        self.assertEqual(len(self.scene_nodes_of_type(panel.scene.content, "SoImage")), 1)
         panel.reject()
         pump()
 

@@ -36,7 +36,8 @@ class AutoBlockFeature:
     PROPERTIES = [
         ("App::PropertyLinkSub", "Source", "Input", "The face to cut: an object and, when it has several faces, one "
          "of them. Recomputes when it changes.", 0),
-        ("App::PropertyEnumeration", "Policy", "Decomposition", "How cuts are chosen: a shipped trained policy "
+        ("App::PropertyEnumeration", "Policy", "Decomposition", "How cuts are chosen: auto (the default: the exact "
+         "search where it finishes in time, the trained sac-mesh where it does not), a shipped trained policy "
          "(sac-mesh: few, fat blocks; sac-paper: Eq. (1)) or a baseline (optimal: maximum return by exact search; "
          "greedy; random).", 0),
         ("App::PropertyFile", "PolicyFile", "Decomposition", "A policy file made by training (Train a policy); "
@@ -125,7 +126,7 @@ class AutoBlockFeature:
 def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, seed=0, time_limit=30.0,
                    name="AutoBlock", mesh=None):
     """Create the parametric AutoBlock object of `source` (a document object; sub: "FaceN" when it has several
-    faces) and compute it. policy: a name or policy file (None: the preferred default, sac-mesh unless set);
+    faces) and compute it. policy: a name or policy file (None: the preferred default, auto unless set);
     reward: a preset, "" for the policy's own (None: the preferred one, "" unless set); mesh_size (None: the
     preferred one); mesh: also make its FEM mesh object (fem_mesh.py) of the blocks (None: when the
     decomposition is complete, which meshing needs; True: required; False: no).

@@ -10,14 +10,24 @@ just the face, its new shape is the compound of the blocks; when the face belong
 shell, the face is split into the blocks in place (OpenCASCADE's general fuse). The AutoBlock object
 has then done its job and is removed, with its FEM mesh object (the mesh of a face that no longer has a
 parametric source). Either mode is one undoable transaction.
+
+A new Part feature lies exactly where the AutoBlock object is, so the AutoBlock object (now redundant) is
+hidden, as Auto-Block hides the source. Either mode says in the report view what it created, hid or
+removed.
 """
 
 import FreeCAD
 
+from .. import text
 from ..transactions import transaction
 from .autoblock_feature import is_autoblock
 
 MODES = ("new", "replace")
+
+
+def report(message):
+    """Say `message` in the report view (tests replace this to read it)."""
+    FreeCAD.Console.PrintMessage("AutoBlock: {}\n".format(message))
 
 
 def write_back(obj, mode="new", name=None):
@@ -49,7 +59,14 @@ def _new(obj, name):
     feature.Label = name or "{} blocks".format(obj.Label)
     feature.Shape = obj.Shape.copy()
     _copy_colours(obj, feature)
+    blocks = text.counted(len(feature.Shape.Faces), "block")
+    if obj.Visibility:
+        obj.Visibility = False
+        hidden = "; hid {}, which shows the same blocks in the same place".format(obj.Label)
+    else:
+        hidden = ""
     doc.recompute()
+    report("wrote the {} of {} to the new Part feature {}{}".format(blocks, obj.Label, feature.Label, hidden))
     return feature
 
 
@@ -92,11 +109,14 @@ def _replace(obj):
     local.Placement = placement
     from .fem_mesh import mesh_objects_of
 
+    blocks = text.counted(len(blocks.Faces), "block")
+    removed = [obj.Label] + [mesh.Label for mesh in mesh_objects_of(obj)]
     for mesh in mesh_objects_of(obj):
         doc.removeObject(mesh.Name)
     doc.removeObject(obj.Name)
     source.Shape = local
-    if FreeCAD.GuiUp:
-        source.ViewObject.Visibility = True
+    source.Visibility = True
     doc.recompute()
+    report("{} now holds the {} in place of its face, and is shown; removed {}, no longer needed".format(
+        source.Label, blocks, " and ".join(removed)))
     return source

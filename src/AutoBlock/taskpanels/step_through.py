@@ -7,11 +7,14 @@ Position k (0 .. number of cuts) is the episode after k cuts, with the cut the p
 part, vertex, line and reward; the return is shown before and after that cut.
 """
 
+import html
+import re
+
 import FreeCAD
 import FreeCADGui
 from PySide2 import QtGui, QtWidgets
 
-from .. import paths
+from .. import paths, text
 from ..viewproviders.view_autoblock import block_colours
 from .step_scene import CURRENT_COLOUR, CUT_COLOUR, PART_COLOUR, StepScene
 
@@ -53,8 +56,14 @@ def _hex(colour):
     return "#{:02x}{:02x}{:02x}".format(*(int(round(255 * c)) for c in colour[:3]))
 
 
-def _vector(v):
-    return "({:.6g}, {:.6g}, {:.6g})".format(v.x, v.y, v.z)
+def _nowrap(words):
+    """Rich text that keeps `words` on one line (a policy name such as sac-mesh must not split at its hyphen)."""
+    return "<span style='white-space:nowrap'>{}</span>".format(html.escape(str(words)))
+
+
+def plain_text(rich):
+    """The text a rich-text label shows, without its tags (for tests and the console)."""
+    return html.unescape(re.sub(r"<br\s*/?>", "\n", re.sub(r"<(?!br)[^>]*>", "", rich)))
 
 
 class StepThroughPanel:
@@ -74,14 +83,17 @@ class StepThroughPanel:
             button.clicked.connect(slot)
         self.form.slider.setRange(0, stepper.steps)
         self.form.slider.valueChanged.connect(self.show_step)
-        self.form.titleLabel.setText("<b>{}</b><br>{}".format(obj.Label, obj.Status))
-        self.form.legendLabel.setText(
-            "<span style='color:{b}'>&#9632;</span> blocks set aside (final colours) &nbsp; "
-            "<span style='color:{p}'>&#9632;</span> parts still to cut &nbsp; "
-            "<span style='color:{c}'>&#9632;</span> the part cut at this step &nbsp; "
-            "<span style='color:{r}'>&#9679; &#9473;</span> chosen vertex and cut line".format(
-                b=_hex(self.colours[0]), p=_hex([c * 0.85 for c in PART_COLOUR]), c=_hex(CURRENT_COLOUR),
-                r=_hex(CUT_COLOUR)))
+        policy, _, status = obj.Status.partition(": ")
+        self.form.titleLabel.setText("<b>{}</b><br>{}{}".format(
+            html.escape(obj.Label), _nowrap(policy), (": " + html.escape(status)) if status else ""))
+        # One entry per line: the panel is often a narrow column (the Combo View).
+        self.form.legendLabel.setText("<br>".join(
+            "<span style='color:{}'>{}</span>&nbsp;{}".format(colour, mark, words) for colour, mark, words in (
+                (_hex(self.colours[0]), "&#9632;", "blocks set aside (final colours)"),
+                (_hex([c * 0.85 for c in PART_COLOUR]), "&#9632;", "parts still to cut"),
+                (_hex(CURRENT_COLOUR), "&#9632;", "the part cut at this step"),
+                (_hex(CUT_COLOUR), "&#9675;", "the chosen vertex, ringed in red"),
+                (_hex(CUT_COLOUR), "&#9473;", "the cut line"))))
         gui_document = FreeCADGui.getDocument(obj.Document.Name)
         self.view = gui_document.ActiveView
         if not hasattr(self.view, "getSceneGraph"):
@@ -134,43 +146,55 @@ class StepThroughPanel:
         self.form.nextButton.setEnabled(k < self.stepper.steps)
         self.form.lastButton.setEnabled(k < self.stepper.steps)
 
+    @staticmethod
+    def position_text(step, steps, status):
+        """What the panel says about where it is: 'Step 0 of 3: no cut made yet; in red: cut 1', ...,
+        'Step 3 of 3: all 3 cuts made, complete'."""
+        if steps == 0:
+            return "The face is a rectangle: no cut needed"
+        if step < steps:
+            made = "no cut made yet" if step == 0 else text.counted(step, "cut") + " made"
+            return "Step {} of {}: {}; in red: cut {}".format(step, steps, made, step + 1)
+        made = "the only cut made" if steps == 1 else "all {} made".format(text.counted(steps, "cut"))
+        return "Step {} of {}: {}, {}".format(step, steps, made, status)
+
     def update_labels(self, view):
         f = self.form
         queued = sum(1 for p in view.pieces if not p.block)
+        tolerance = text.tolerance_of(view.size)
+        f.positionLabel.setText(self.position_text(view.step, view.steps, view.status))
         if view.next is None:
-            if view.steps == 0:
-                f.positionLabel.setText("The face is a rectangle: no cut needed")
-            else:
-                f.positionLabel.setText("All {} cuts made: {}".format(view.steps, view.status))
             for label in (f.partLabel, f.vertexLabel, f.directionLabel, f.rewardLabel):
                 label.setText("-")
             f.returnLabel.setText("{:.3f} (total)".format(view.ret))
-            f.blocksLabel.setText("{} blocks{}".format(
-                view.blocks, ", {} parts left unfinished".format(queued) if queued else ""))
+            f.blocksLabel.setText("{}{}".format(
+                text.counted(view.blocks, "block"),
+                ", {} left unfinished".format(text.counted(queued, "part")) if queued else ""))
             f.scoresLabel.setText("No cut at this step.")
             return
         cut = view.next
-        f.positionLabel.setText("Cut {} of {}".format(view.step + 1, view.steps))
-        f.partLabel.setText("#{} ({} corners)".format(cut.part, len(cut.vertices)))
-        f.vertexLabel.setText(_vector(cut.vertex))
+        f.partLabel.setText("#{} ({})".format(cut.part, text.counted(len(cut.vertices), "corner")))
+        f.vertexLabel.setText(text.vector(cut.vertex, tolerance))
         if cut.n_parts == 1:
             f.directionLabel.setText("{}, along the boundary: nothing cut".format(cut.direction))
         else:
-            f.directionLabel.setText("{}, leaves {} pieces".format(cut.direction, cut.n_parts))
+            f.directionLabel.setText("{}, leaves {}".format(cut.direction, text.counted(cut.n_parts, "piece")))
         f.rewardLabel.setText("{:+.3f}".format(cut.reward))
         f.returnLabel.setText("{:.3f} (before this cut: {:.3f})".format(view.ret + cut.reward, view.ret))
-        f.blocksLabel.setText("{} set aside, {} part{} to cut".format(view.blocks, queued, "" if queued == 1 else "s"))
+        f.blocksLabel.setText("{} set aside, {} to cut".format(text.counted(view.blocks, "block"),
+                                                               text.counted(queued, "part")))
         scored = [i for i, score in enumerate(cut.scores or []) if score is not None]
         if scored:
             best = max(scored, key=lambda i: cut.scores[i])
             chosen = cut.scores[cut.chosen] if cut.chosen < len(cut.scores) else None
             f.scoresLabel.setText(
-                "The value network of {}: markers from blue (low) to red (high); highest {:.3f} at {}; the chosen "
+                "The value network of {}: discs from blue (low) to red (high); highest {:.3f} at {}; the chosen "
                 "vertex (ringed in red) scores {}.".format(
-                    self.stepper.policy, cut.scores[best], _vector(cut.vertices[best]),
+                    _nowrap(self.stepper.scores_by), cut.scores[best],
+                    _nowrap(text.vector(cut.vertices[best], tolerance)),
                     "-" if chosen is None else "{:.3f}".format(chosen)))
         else:
-            f.scoresLabel.setText("Not shown: {}.".format(cut.scores_note or "no scores"))
+            f.scoresLabel.setText("Not shown: {}.".format(html.escape(cut.scores_note or "no scores")))
 
     # -- task panel protocol ----------------------------------------------------------------------
     def getStandardButtons(self):

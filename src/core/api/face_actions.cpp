@@ -10,6 +10,14 @@ namespace autoblock {
 
 InputFace check_face(const TopoDS_Face& face, const std::string& source) { return input_face_from_occt(face, source); }
 
+std::vector<FaceSummary> shape_faces(const TopoDS_Shape& shape) { return list_faces(shape); }
+
+InputFace check_shape_face(const TopoDS_Shape& shape, const std::string& source, int face_number,
+                           const std::string& how_to_choose) {
+  return input_face_from_occt(select_face(shape, source, face_number, how_to_choose),
+                              face_source_name(source, face_number));
+}
+
 FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSettings& settings) {
   check_reward_preset(settings.reward);
   const auto source = policy_source(settings.policy, settings.policy_settings);

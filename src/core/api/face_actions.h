@@ -12,6 +12,7 @@
 #include "core/api/catalog.h"
 #include "core/env/decomposition.h"
 #include "core/env/episode_snapshot.h"
+#include "core/io/face_selection.h"
 #include "core/io/input_face.h"
 #include "core/mesh/mesh_pipeline.h"
 
@@ -36,6 +37,18 @@ struct FaceDecomposition {
 // Inputs:  face, any OpenCASCADE face; source, its name for messages.
 // Outputs: the face in every form (validated). Throws InputError saying what is wrong and where.
 InputFace check_face(const TopoDS_Face& face, const std::string& source);
+
+// Inputs:  shape, e.g. a part read from a file.
+// Outputs: its faces, numbered as FreeCAD numbers them (Face1, Face2, ...), with surface, area, normal
+//          and whether AutoBlock takes each (see face_selection.h).
+std::vector<FaceSummary> shape_faces(const TopoDS_Shape& shape);
+
+// Inputs:  shape; source, its name for messages; face_number, 1-based (0: the shape's only face);
+//          how_to_choose, said when the choice is missing or out of range.
+// Outputs: that face, checked. Throws InputError naming what the shape holds, or what is wrong with
+//          the face and where.
+InputFace check_shape_face(const TopoDS_Shape& shape, const std::string& source, int face_number,
+                           const std::string& how_to_choose = "");
 
 // Inputs:  face, a checked face; settings.
 // Outputs: the decomposition and its blocks as faces. Throws InputError for a bad policy or reward

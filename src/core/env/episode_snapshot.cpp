@@ -103,8 +103,8 @@ namespace {
 
 void check_step(int step, int steps) {
   if (step < 0 || step > steps) {
-    throw InputError("step " + std::to_string(step) + " is out of range (the sequence has " + std::to_string(steps) +
-                     " cuts)");
+    throw InputError("step " + std::to_string(step) + " is out of range (the sequence has " + counted(steps, "cut") +
+                     ")");
   }
 }
 
@@ -131,8 +131,8 @@ class SequencePolicy : public Policy {
   std::string name() const override { return name_; }
   Action choose(const Episode& episode) override {
     if (next_ >= static_cast<int>(cuts_.size())) {
-      throw InputError("the cut sequence ends after " + std::to_string(cuts_.size()) +
-                       " cuts, before the episode does; it does not belong to this face");
+      throw InputError("the cut sequence ends after " + counted(static_cast<long long>(cuts_.size()), "cut") +
+                       ", before the episode does; it does not belong to this face");
     }
     return action_of(episode, cuts_, next_++);
   }
@@ -159,7 +159,7 @@ Decomposition replay_decomposition(const GridFace& face, const std::vector<CutSp
   Decomposition result = decompose_face(face, sequence, options);
   if (sequence.used() != static_cast<int>(cuts.size())) {
     throw InputError("the episode ends after " + std::to_string(sequence.used()) + " of the sequence's " +
-                     std::to_string(cuts.size()) + " cuts; the cut sequence does not belong to this face");
+                     counted(static_cast<long long>(cuts.size()), "cut") + "; the cut sequence does not belong to this face");
   }
   return result;
 }

@@ -2,12 +2,14 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomLib_IsPlanarSurface.hxx>
+#include <Bnd_Box.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -15,6 +17,7 @@
 #include <TopoDS_Wire.hxx>
 #include <gp_Pln.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -57,14 +60,35 @@ std::string curve_type_name(GeomAbs_CurveType type) {
   }
 }
 
-gp_Pln face_plane(const TopoDS_Face& face) {
+// The face's plane, if its surface is a plane or within 1e-7 of one.
+bool plane_of(const TopoDS_Face& face, gp_Pln* plane) {
   BRepAdaptor_Surface surface(face, false);
-  if (surface.GetType() == GeomAbs_Plane) return surface.Plane();
-  GeomLib_IsPlanarSurface planar(BRep_Tool::Surface(face), 1e-7);
-  if (!planar.IsPlanar()) {
-    throw InputError("the face is not planar: its surface is a " + surface_type_name(surface.GetType()));
+  if (surface.GetType() == GeomAbs_Plane) {
+    *plane = surface.Plane();
+    return true;
   }
-  return planar.Plan();
+  GeomLib_IsPlanarSurface planar(BRep_Tool::Surface(face), 1e-7);
+  if (!planar.IsPlanar()) return false;
+  *plane = planar.Plan();
+  return true;
+}
+
+gp_Pln face_plane(const TopoDS_Face& face) {
+  gp_Pln plane;
+  if (!plane_of(face, &plane)) {
+    throw InputError("the face is not planar: its surface is " + with_article(surface_name(face)));
+  }
+  return plane;
+}
+
+// The face's tolerance (see tolerance.h) from its bounding box, for messages before its polygon is checked.
+double face_tolerance(const TopoDS_Face& face) {
+  Bnd_Box box;
+  BRepBndLib::Add(face, box, false);
+  if (box.IsVoid()) return 0.0;
+  double xmin, ymin, zmin, xmax, ymax, zmax;
+  box.Get(xmin, ymin, zmin, xmax, ymax, zmax);
+  return tolerance_for_size(std::max(xmax - xmin, ymax - ymin));
 }
 
 TopoDS_Wire polygon_wire(const Ring& ring, double z) {
@@ -76,20 +100,35 @@ TopoDS_Wire polygon_wire(const Ring& ring, double z) {
 
 }  // namespace
 
+std::string surface_name(const TopoDS_Face& face) {
+  return surface_type_name(BRepAdaptor_Surface(face, false).GetType());
+}
+
+bool planar_face_normal(const TopoDS_Face& face, gp_Dir* normal) {
+  gp_Pln plane;
+  if (face.IsNull() || !plane_of(face, &plane)) return false;
+  *normal = plane.Axis().Direction();
+  if (face.Orientation() == TopAbs_REVERSED) normal->Reverse();
+  return true;
+}
+
 PlanarFace planar_face_from_occt(const TopoDS_Face& face) {
   if (face.IsNull()) throw InputError("the face is empty (a null shape)");
   const gp_Pln plane = face_plane(face);
   gp_Dir normal = plane.Axis().Direction();
   if (face.Orientation() == TopAbs_REVERSED) normal.Reverse();
   if (std::fabs(normal.Z()) < 1.0 - 1e-9) {
-    throw InputError("the face lies in a plane with normal (" + format_number(normal.X()) + ", " +
-                     format_number(normal.Y()) + ", " + format_number(normal.Z()) +
+    constexpr double kDirectionTolerance = 1e-9;
+    throw InputError("the face lies in a plane with normal (" + format_number(normal.X(), kDirectionTolerance) + ", " +
+                     format_number(normal.Y(), kDirectionTolerance) + ", " +
+                     format_number(normal.Z(), kDirectionTolerance) +
                      "); only faces parallel to the XY plane are supported for now");
   }
   PlanarFace result;
   result.normal_up = normal.Z() > 0;
   result.z = plane.Location().Z();
 
+  const double tol = face_tolerance(face);
   const TopoDS_Wire outer = BRepTools::OuterWire(face);
   std::vector<RawRing> rings;
   std::vector<double> zs;
@@ -114,8 +153,8 @@ PlanarFace planar_face_from_occt(const TopoDS_Face& face) {
         TopExp::Vertices(edge, v1, v2, true);
         const gp_Pnt a = BRep_Tool::Pnt(v1), b = BRep_Tool::Pnt(v2);
         throw InputError("edge " + std::to_string(walked) + " of the " + ring.name + ", from " +
-                         format_point(a.X(), a.Y()) + " to " + format_point(b.X(), b.Y()) + ", is a " +
-                         curve_type_name(curve.GetType()) + "; only straight edges are supported");
+                         format_point(a.X(), a.Y(), tol) + " to " + format_point(b.X(), b.Y(), tol) + ", is " +
+                         with_article(curve_type_name(curve.GetType())) + "; only straight edges are supported");
       }
       ring.points.push_back(Point2{start.X(), start.Y()});
       zs.push_back(start.Z());
@@ -128,7 +167,7 @@ PlanarFace planar_face_from_occt(const TopoDS_Face& face) {
   result.polygon = validate_rings(rings, &result.tolerance);
   for (double z : zs) {
     if (std::fabs(z - result.z) > std::max(result.tolerance, 1e-7)) {
-      throw InputError("a vertex of the face lies off its plane z = " + format_number(result.z));
+      throw InputError("a vertex of the face lies off its plane z = " + format_number(result.z, result.tolerance));
     }
   }
   return result;

@@ -11,8 +11,9 @@
 namespace autoblock {
 namespace {
 
-std::string edge_text(const Point2& a, const Point2& b) {
-  return "from " + format_point(a.x, a.y) + " to " + format_point(b.x, b.y);
+// Coordinates in messages are rounded to the face's tolerance: noise below it reads 0.
+std::string edge_text(const Point2& a, const Point2& b, double tol) {
+  return "from " + format_point(a.x, a.y, tol) + " to " + format_point(b.x, b.y, tol);
 }
 
 // Chain-cluster sorted values: neighbours closer than tol share one representative (their mean).
@@ -33,7 +34,7 @@ std::map<double, double> snap_map(std::vector<double> values, double tol) {
 }
 
 // Removes vertices between collinear edges; throws when the boundary doubles back on itself.
-Ring merge_collinear(Ring ring, const std::string& name) {
+Ring merge_collinear(Ring ring, const std::string& name, double tol) {
   bool changed = true;
   while (changed && ring.size() >= 3) {
     changed = false;
@@ -47,7 +48,7 @@ Ring merge_collinear(Ring ring, const std::string& name) {
       const double in = in_x ? cur.x - prev.x : cur.y - prev.y;
       const double out = in_x ? next.x - cur.x : next.y - cur.y;
       if ((in > 0) != (out > 0)) {
-        throw InputError("the " + name + " doubles back on itself at " + format_point(cur.x, cur.y));
+        throw InputError("the " + name + " doubles back on itself at " + format_point(cur.x, cur.y, tol));
       }
       ring.erase(ring.begin() + static_cast<long>(k));
       changed = true;
@@ -88,7 +89,7 @@ bool segments_meet(const Segment& s, const Segment& t, Point2* where) {
   return true;
 }
 
-void check_no_contact(const std::vector<Ring>& rings, const std::vector<std::string>& names) {
+void check_no_contact(const std::vector<Ring>& rings, const std::vector<std::string>& names, double tol) {
   std::vector<Segment> segments;
   for (size_t r = 0; r < rings.size(); ++r) {
     const Ring& ring = rings[r];
@@ -121,8 +122,8 @@ void check_no_contact(const std::vector<Ring>& rings, const std::vector<std::str
           s.ring == t.ring ? "the " + names[static_cast<size_t>(s.ring)] + " " + what + " itself"
                            : "the " + names[static_cast<size_t>(first.ring)] + " " + what + " the " +
                                  names[static_cast<size_t>(second.ring)];
-      throw InputError(subject + " at " + format_point(where.x, where.y) + " (edges " +
-                       edge_text(first.a, first.b) + " and " + edge_text(second.a, second.b) + ")");
+      throw InputError(subject + " at " + format_point(where.x, where.y, tol) + " (edges " +
+                       edge_text(first.a, first.b, tol) + " and " + edge_text(second.a, second.b, tol) + ")");
     }
   }
 }
@@ -136,7 +137,7 @@ RectilinearPolygon validate_rings(const std::vector<RawRing>& raw, double* toler
   for (const RawRing& ring : raw) {
     if (ring.points.size() < 3) {
       throw InputError("the face has zero or tiny area: the " + ring.name + " has only " +
-                       std::to_string(ring.points.size()) + " straight edge(s)");
+                       counted(static_cast<long long>(ring.points.size()), "straight edge"));
     }
     for (const Point2& p : ring.points) {
       if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
@@ -152,14 +153,14 @@ RectilinearPolygon validate_rings(const std::vector<RawRing>& raw, double* toler
   }
   const double size = box.longer_side();
   if (size < kMinimumFaceSize) {
-    throw InputError("the face has zero or tiny area: its bounding box is " + format_number(box.width()) +
-                     " x " + format_number(box.height()) + ", below the smallest supported size " +
+    throw InputError("the face has zero or tiny area: its bounding box is " + format_number(box.width(), size * 1e-3) +
+                     " x " + format_number(box.height(), size * 1e-3) + ", below the smallest supported size " +
                      format_number(kMinimumFaceSize));
   }
   const double tol = tolerance_for_size(size);
   if (box.shorter_side() <= tol) {
-    throw InputError("the face has zero or tiny area: its bounding box is " + format_number(box.width()) +
-                     " x " + format_number(box.height()) + " (tolerance " + format_number(tol) + ")");
+    throw InputError("the face has zero or tiny area: its bounding box is " + format_number(box.width(), tol * 1e-3) +
+                     " x " + format_number(box.height(), tol * 1e-3) + " (tolerance " + format_number(tol, tol * 1e-3) + ")");
   }
 
   // Every edge must run along X or Y, and be longer than the tolerance.
@@ -170,10 +171,10 @@ RectilinearPolygon validate_rings(const std::vector<RawRing>& raw, double* toler
       const Point2& a = ring.points[k];
       const Point2& b = ring.points[(k + 1) % n];
       const double dx = std::fabs(b.x - a.x), dy = std::fabs(b.y - a.y);
-      const std::string where = "edge " + std::to_string(k + 1) + " of the " + ring.name + ", " + edge_text(a, b);
+      const std::string where = "edge " + std::to_string(k + 1) + " of the " + ring.name + ", " + edge_text(a, b, tol);
       if (dx > tol && dy > tol) throw InputError(where + ", is not parallel to the X or Y axis");
       if (dx <= tol && dy <= tol) {
-        throw InputError(where + ", is shorter than the tolerance " + format_number(tol));
+        throw InputError(where + ", is shorter than the tolerance " + format_number(tol, tol * 1e-3));
       }
       xs.push_back(a.x);
       ys.push_back(a.y);
@@ -188,15 +189,15 @@ RectilinearPolygon validate_rings(const std::vector<RawRing>& raw, double* toler
     for (const Point2& p : ring.points) {
       const Point2 q{snap_x.at(p.x), snap_y.at(p.y)};
       if (!snapped.empty() && snapped.back() == q) {
-        throw InputError("the " + ring.name + " has vertices too close to tell apart near " + format_point(p.x, p.y) +
-                         " (tolerance " + format_number(tol) + ")");
+        throw InputError("the " + ring.name + " has vertices too close to tell apart near " + format_point(p.x, p.y, tol) +
+                         " (tolerance " + format_number(tol, tol * 1e-3) + ")");
       }
       snapped.push_back(q);
     }
-    rings.push_back(merge_collinear(snapped, ring.name));
+    rings.push_back(merge_collinear(snapped, ring.name, tol));
     names.push_back(ring.name);
   }
-  check_no_contact(rings, names);
+  check_no_contact(rings, names, tol);
 
   // The outer ring is the one with the largest area; every other ring must lie inside it and
   // outside every other hole (rings do not meet, so one vertex decides).
@@ -209,12 +210,12 @@ RectilinearPolygon validate_rings(const std::vector<RawRing>& raw, double* toler
     if (r == outer) continue;
     if (!point_in_ring(rings[r][0], rings[outer])) {
       throw InputError("the " + names[r] + " lies outside the " + names[outer] + " (vertex " +
-                       format_point(rings[r][0].x, rings[r][0].y) + ")");
+                       format_point(rings[r][0].x, rings[r][0].y, tol) + ")");
     }
     for (size_t s = 0; s < rings.size(); ++s) {
       if (s != outer && s != r && point_in_ring(rings[r][0], rings[s])) {
         throw InputError("the " + names[r] + " lies inside the hole bounded by the " + names[s] +
-                         " (vertex " + format_point(rings[r][0].x, rings[r][0].y) + ")");
+                         " (vertex " + format_point(rings[r][0].x, rings[r][0].y, tol) + ")");
       }
     }
   }

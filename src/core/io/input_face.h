@@ -18,8 +18,12 @@ struct InputFace {
   GridFace grid;
 };
 
-// Inputs: path (.brep, .step, .stp). Output: the file's face. Throws InputError (see shape_file.h).
-InputFace load_input_face(const std::string& path);
+// Inputs:  path (.brep, .step, .stp); face_number, which face of the file (1-based, as FreeCAD numbers
+//          them; 0: the file's only face); how_to_choose, said when the choice is missing or out of
+//          range (see face_selection.h).
+// Outputs: the face; its source is the path, with "(FaceN)" when a number was given.
+// Throws InputError (see shape_file.h and face_selection.h).
+InputFace load_input_face(const std::string& path, int face_number = 0, const std::string& how_to_choose = "");
 
 // Inputs: face; source, its name. Output: the face in every form. Throws InputError.
 InputFace input_face_from_occt(const TopoDS_Face& face, const std::string& source);

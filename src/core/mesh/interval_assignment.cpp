@@ -98,9 +98,8 @@ IntervalAssignment assign_intervals(const StripLayout& layout, const IntervalOpt
   for (const FixedIntervals& f : options.fixed) {
     if (f.strips.empty()) throw std::logic_error("assign_intervals: a fixed count without strips");
     if (f.intervals < static_cast<int>(f.strips.size())) {
-      throw InputError(f.what + " cannot have " + std::to_string(f.intervals) + " interval" +
-                       (f.intervals == 1 ? "" : "s") + ": mesh lines divide it into " +
-                       std::to_string(f.strips.size()) + " strips, each needing at least one");
+      throw InputError(f.what + " cannot have " + counted(f.intervals, "interval") + ": mesh lines divide it into " +
+                       counted(static_cast<long long>(f.strips.size()), "strip") + ", each needing at least one");
     }
     for (int s : f.strips) {
       lo[static_cast<size_t>(s)] = 1;

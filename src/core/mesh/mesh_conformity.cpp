@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "core/common/format.h"
+
 namespace autoblock {
 namespace {
 
@@ -63,10 +65,10 @@ Conformity check_conformity(const QuadMesh& mesh, const RectilinearPolygon& face
   const double area_tolerance = 1e-9 * std::max(c.face_area, 1e-300);
   const double length_tolerance = 1e-9 * c.face_perimeter;
   if (mesh.quads.empty()) c.problem = "the mesh has no quads";
-  else if (c.overused_edges) c.problem = std::to_string(c.overused_edges) + " edges are used by more than two quads";
-  else if (c.stray_boundary_edges) c.problem = std::to_string(c.stray_boundary_edges) + " edges inside the face belong to one quad only (hanging nodes or unshared edges)";
-  else if (c.misoriented_edges) c.problem = std::to_string(c.misoriented_edges) + " interior edges are run the same way by both their quads (inconsistent orientation)";
-  else if (c.inverted_quads) c.problem = std::to_string(c.inverted_quads) + " quads are inverted or degenerate";
+  else if (c.overused_edges) c.problem = counted(c.overused_edges, "edge") + (c.overused_edges == 1 ? " is" : " are") + " used by more than two quads";
+  else if (c.stray_boundary_edges) c.problem = counted(c.stray_boundary_edges, "edge") + " inside the face " + (c.stray_boundary_edges == 1 ? "belongs" : "belong") + " to one quad only (hanging nodes or unshared edges)";
+  else if (c.misoriented_edges) c.problem = counted(c.misoriented_edges, "interior edge") + (c.misoriented_edges == 1 ? " is" : " are") + " run the same way by both their quads (inconsistent orientation)";
+  else if (c.inverted_quads) c.problem = counted(c.inverted_quads, "quad") + (c.inverted_quads == 1 ? " is" : " are") + " inverted or degenerate";
   else if (std::fabs(c.quad_area - c.face_area) > area_tolerance) c.problem = "the quads' area differs from the face's";
   else if (std::fabs(c.boundary_length - c.face_perimeter) > length_tolerance) c.problem = "the mesh boundary does not cover the face's boundary";
   c.conformal = c.problem.empty();

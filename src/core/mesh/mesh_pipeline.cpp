@@ -13,6 +13,7 @@
 #include <string>
 
 #include "core/common/error.h"
+#include "core/common/format.h"
 #include "core/env/occt_replay.h"
 #include "core/mesh/mapped_mesh.h"
 
@@ -46,9 +47,10 @@ double target_size_for(const InputFace& face, double size) {
 
 MeshResult mesh_decomposition(const InputFace& face, const Decomposition& d, const MeshOptions& options) {
   if (!d.complete()) {
-    throw InputError("the decomposition is incomplete (" + std::to_string(d.unfinished.size()) +
-                     " parts are not rectangles after " + std::to_string(d.cuts.size()) +
-                     " cuts); meshing needs rectangles only: raise --max-steps or use another policy");
+    const size_t left = d.unfinished.size();
+    throw InputError("the decomposition is incomplete (" + counted(static_cast<long long>(left), "part") +
+                     (left == 1 ? " is not a rectangle" : " are not rectangles") + " after " +
+                     counted(static_cast<long long>(d.cuts.size()), "cut") + "); meshing needs rectangles only: raise --max-steps or use another policy");
   }
   if (!std::isfinite(options.size) || options.size < 0) throw InputError("the element size must be a positive number");
   MeshResult result;

@@ -28,7 +28,7 @@ void check_usage_error(const test::CommandResult& r) {
 }  // namespace
 
 TEST_CASE("autoblock --help works for every command", "[cli]") {
-  for (const std::string command : {"", "generate", "decompose", "eval", "mesh"}) {
+  for (const std::string command : {"", "generate", "decompose", "eval", "mesh", "faces"}) {
     const auto r = test::run_autoblock(command + " --help");
     INFO(command);
     CHECK(r.exit_code == 0);

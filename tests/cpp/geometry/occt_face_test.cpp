@@ -1,11 +1,24 @@
 #include <catch2/catch.hpp>
 
+#include <BRepBndLib.hxx>
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <Bnd_Box.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <gp_Vec.hxx>
 
+#include <string>
+
+#include "core/common/error.h"
 #include "core/geometry/occt_properties.h"
 #include "core/geometry/occt_face.h"
+#include "support/bad_shapes.h"
 #include "support/test_shapes.h"
 
 using namespace autoblock;
+using Catch::Matchers::Contains;
 
 TEST_CASE("occt_face_from_polygon builds a valid face with the exact area", "[geometry][occt]") {
   const RectilinearPolygon polygon = test::polygon_of(test::square3(), {test::centre_hole()});
@@ -37,4 +50,53 @@ TEST_CASE("generated faces survive the trip to OpenCASCADE and back", "[geometry
     CHECK(read.polygon.outer.size() == shape.polygon.outer.size());
     CHECK(read.polygon.holes.size() == shape.polygon.holes.size());
   }
+}
+
+namespace {
+
+// The message planar_face_from_occt gives for face, or "" when it accepts the face.
+std::string rejection(const TopoDS_Face& face) {
+  try {
+    planar_face_from_occt(face);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("the chamfered top face of a box is rejected with coordinates as a CAD user writes them",
+          "[geometry][occt][errors][format]") {
+  // An 83 x 40 x 10 box with its vertical edge at (83, 0) chamfered by 3, by a boolean cut along the plane
+  // y = x - 80: the top face has a slanted edge from (80, 0) to (83, 3).
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(83, 40, 10).Shape();
+  const TopoDS_Shape corner =
+      BRepPrimAPI_MakePrism(TopoDS::Face(test::raw_polygon_face({{79, -1}, {85, -1}, {85, 5}}, -1)), gp_Vec(0, 0, 12))
+          .Shape();
+  BRepAlgoAPI_Cut chamfer(box, corner);
+  REQUIRE(chamfer.IsDone());
+  std::string message;
+  for (TopExp_Explorer faces(chamfer.Shape(), TopAbs_FACE); faces.More(); faces.Next()) {
+    const TopoDS_Face face = TopoDS::Face(faces.Current());
+    Bnd_Box bounds;
+    BRepBndLib::Add(face, bounds);
+    if (bounds.CornerMin().Z() > 9.99 && bounds.CornerMax().Z() < 10.01) message = rejection(face);
+  }
+  INFO(message);
+  CHECK_THAT(message, Contains("is not parallel to the X or Y axis"));
+  CHECK_THAT(message, Contains("(80, 0)"));
+  CHECK_THAT(message, Contains("(83, 3)"));
+  CHECK_THAT(message, !Contains("e+") && !Contains("e-"));
+}
+
+TEST_CASE("coordinate noise far below the face's tolerance reads 0 in messages", "[geometry][occt][errors][format]") {
+  // The same outline by hand, with the noise OpenCASCADE's operations leave in a coordinate.
+  const std::string message = rejection(TopoDS::Face(
+      test::raw_polygon_face({{0, 0}, {80, -2.22044604925031e-15}, {83, 3.0000000000000004}, {83, 40}, {0, 40}}, 10)));
+  CHECK(message == "edge 2 of the outer wire, from (80, 0) to (83, 3), is not parallel to the X or Y axis");
+  // A curved edge is named the same way, with its article.
+  const std::string arc = rejection(TopoDS::Face(test::bad_shapes()[0].shape));
+  CHECK_THAT(arc, Contains("is a circular arc"));
+  CHECK_THAT(arc, !Contains("e+") && !Contains("e-"));
 }

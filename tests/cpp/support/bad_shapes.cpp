@@ -6,6 +6,7 @@
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
 #include <BRep_Builder.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <TopExp_Explorer.hxx>
@@ -15,6 +16,8 @@
 #include <TopoDS_Wire.hxx>
 #include <gp_Circ.hxx>
 #include <gp_Pln.hxx>
+
+#include "core/geometry/occt_face.h"
 
 namespace autoblock::test {
 
@@ -67,6 +70,21 @@ std::vector<BadShape> bad_shapes() {
     shapes.push_back({"wire-only", polygon.Wire(), "holds a wire with no face"});
   }
   return shapes;
+}
+
+TopoDS_Shape part_with_many_faces() {
+  RectilinearPolygon outline;
+  outline.outer = {{0, 0}, {10, 0}, {10, 4}, {4, 4}, {4, 8}, {0, 8}};
+  outline.holes = {{{1, 1}, {1, 3}, {3, 3}, {3, 1}}};
+  const TopoDS_Face face = occt_face_from_polygon(outline, 0, true);
+  const TopoDS_Shape slab = BRepPrimAPI_MakePrism(face, gp_Vec(0, 0, 3)).Shape();
+  const TopoDS_Shape cylinder = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 0, 0), gp_Dir(0, 0, 1)), 2, 3).Shape();
+  TopoDS_Compound part;
+  BRep_Builder builder;
+  builder.MakeCompound(part);
+  builder.Add(part, slab);
+  builder.Add(part, cylinder);
+  return part;
 }
 
 }  // namespace autoblock::test
