@@ -7,6 +7,10 @@
 // never asserted.
 //
 //   build/bin/autoblock_bench_nn --faces 100 --large-faces 30 --seed 7   (a few minutes on 2 cores)
+//
+// --graph refined|bounded picks part_graph's method (part_graph.h); --thin draws the faces of the
+// size statistics on a bounded grid (2-10 rectangles: grid 32, sides 3-18; 11-40: grid 64, sides
+// 4-24), where features one unit wide are common.
 #include <CLI/CLI.hpp>
 #include <torch/torch.h>
 
@@ -17,7 +21,9 @@
 #include <iostream>
 #include <random>
 
+#include "bench/bench_stats.h"
 #include "core/baselines/greedy_policy.h"
+#include "core/data/thin_features.h"
 #include "core/baselines/random_policy.h"
 #include "core/data/shape_generator.h"
 #include "core/env/episode.h"
@@ -33,20 +39,15 @@ using namespace autoblock;
 
 namespace {
 
+GraphOptions graph_options;  // --graph
+
 using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-double quantile(std::vector<double> v, double q) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const double position = q * static_cast<double>(v.size() - 1);
-  const auto low = static_cast<size_t>(position);
-  const size_t high = std::min(low + 1, v.size() - 1);
-  return v[low] + (position - static_cast<double>(low)) * (v[high] - v[low]);
-}
+using bench::quantile;
 
 double mean(const std::vector<double>& v) {
   double sum = 0;
@@ -78,7 +79,7 @@ std::vector<FaceParts> greedy_parts(int count, std::uint64_t seed, const Generat
 void print_graph_sizes(const std::string& title, const std::vector<Part>& parts) {
   std::vector<double> nodes, edges, vertices;
   for (const Part& part : parts) {
-    const PartGraph g = part_graph(part);
+    const PartGraph g = part_graph(part, graph_options);
     nodes.push_back(g.node_count());
     edges.push_back(g.edge_count() / 2.0);
     vertices.push_back(static_cast<double>(g.vertex_nodes.size()));
@@ -93,15 +94,13 @@ void print_graph_sizes(const std::string& title, const std::vector<Part>& parts)
   row("undirected edges", edges);
 }
 
-void graph_statistics(std::uint64_t seed) {
-  std::printf("\n### Triangulation sizes (part_graph, default options)\n\n");
+void graph_statistics(std::uint64_t seed, bool thin) {
+  std::printf("\n### Triangulation sizes (part_graph, %s graphs%s)\n\n", graph_method_name(graph_options.method),
+              thin ? ", thin-feature faces" : "");
   std::printf("| set | quantity | mean | min | 10%% | median | 90%% | max |\n|---|---|---:|---:|---:|---:|---:|---:|\n");
   for (bool holes : {false, true}) {
     for (auto [low, high] : {std::pair<int, int>{2, 10}, {11, 40}}) {
-      GeneratorOptions options;
-      options.min_rects = low;
-      options.max_rects = high;
-      options.holes = holes;
+      const GeneratorOptions options = generator_kind_options(thin, low, high, holes);
       std::mt19937_64 rng(seed);
       std::vector<Part> faces, pieces;
       RandomPolicy policy(seed, /*splitting_only=*/true);
@@ -195,7 +194,7 @@ void time_decompositions(const std::string& title, const std::vector<FaceParts>&
       torch::NoGradGuard no_grad;
       // Warm up allocators and thread pools.
       for (int k = 0; k < 5; ++k) {
-        const PartGraph g = part_graph(faces[0].parts[0]);
+        const PartGraph g = part_graph(faces[0].parts[0], graph_options);
         const GraphBatch b = graph_batch_of(g);
         net(b.x, b.edge_index, b.pseudo);
       }
@@ -206,7 +205,7 @@ void time_decompositions(const std::string& title, const std::vector<FaceParts>&
           double total = 0;
           for (const Part& part : face.parts) {
             auto start = Clock::now();
-            const PartGraph g = part_graph(part);
+            const PartGraph g = part_graph(part, graph_options);
             const double graph_time = ms_since(start);
             start = Clock::now();
             const GraphBatch b = graph_batch_of(g);
@@ -237,7 +236,7 @@ void time_training_steps(const std::vector<FaceParts>& faces, int batch_size, co
   std::vector<PartGraph> graphs;
   for (const FaceParts& f : faces) {
     for (const Part& p : f.parts) {
-      if (static_cast<int>(graphs.size()) < batch_size) graphs.push_back(part_graph(p));
+      if (static_cast<int>(graphs.size()) < batch_size) graphs.push_back(part_graph(p, graph_options));
     }
   }
   std::vector<const PartGraph*> pointers;
@@ -272,7 +271,8 @@ int main(int argc, char** argv) {
   CLI::App app{"Time part_graph and the value network's forward pass as deployed."};
   int faces = 100, large_faces = 30, repeats = 1, batch = 64;
   std::uint64_t seed = 7;
-  bool skip_sizes = false, skip_kernels = false;
+  bool skip_sizes = false, skip_kernels = false, thin = false, skip_timing = false;
+  std::string method = "bounded";
   app.add_option("--faces", faces, "generated 2-10 rectangle faces")->capture_default_str();
   app.add_option("--large-faces", large_faces, "generated 11-40 rectangle faces")->capture_default_str();
   app.add_option("--seed", seed, "generator seed")->capture_default_str();
@@ -280,6 +280,9 @@ int main(int argc, char** argv) {
   app.add_option("--batch", batch, "graphs in the training-step timing (0: skip it)")->capture_default_str();
   app.add_flag("--skip-sizes", skip_sizes, "do not print the triangulation sizes");
   app.add_flag("--skip-kernels", skip_kernels, "do not compare the weighting kernels");
+  app.add_flag("--skip-timing", skip_timing, "do not time decompositions and training steps");
+  app.add_flag("--thin", thin, "triangulation sizes on thin-feature faces (bounded grid)");
+  app.add_option("--graph", method, "graph method: bounded or refined")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
     const char* blas_env = std::getenv("OPENBLAS_NUM_THREADS");
@@ -287,8 +290,10 @@ int main(int argc, char** argv) {
                 torch::get_num_threads(), blas_env ? blas_env : "(unset)");
     const int blas_default = blas_threads();
     std::printf("OpenBLAS threads by default: %d (-1: the BLAS is not OpenBLAS)\n", blas_default);
-    if (!skip_sizes) graph_statistics(seed);
+    graph_options.method = graph_method_by_name(method);
+    if (!skip_sizes) graph_statistics(seed, thin);
     if (!skip_kernels) compare_kernels();
+    if (skip_timing) return 0;
     std::vector<Threads> setups{{1, 0}, {2, 0}};
     if (blas_default > 0) setups.insert(setups.end(), {Threads{1, 1}, Threads{2, 1}});
     GeneratorOptions small;

@@ -1,4 +1,5 @@
-// autoblock generate --count N --seed S [--min-rects 2] [--max-rects 10] [--holes] --out DIR
+// autoblock generate --count N --seed S [--min-rects 2] [--max-rects 10] [--holes]
+//                    [--grid 0] [--min-side 2] [--max-side 12] --out DIR
 #include <iostream>
 #include <random>
 
@@ -29,6 +30,17 @@ void add_generate_command(CLI::App& app) {
   command->add_option("--max-rects", args->options.max_rects, "most rectangles per shape")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
+  command->add_option("--min-side", args->options.min_side, "shortest rectangle side (grid units)")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  command->add_option("--max-side", args->options.max_side, "longest rectangle side (grid units)")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  command->add_option("--grid", args->options.grid,
+                      "keep every rectangle inside a GRID x GRID square (0: unbounded); with a small grid "
+                      "and long sides, features one unit wide are common")
+      ->check(CLI::Range(0, 100000))
+      ->capture_default_str();
   command->add_flag("--holes", args->options.holes, "give every shape one or two holes");
   command->add_option("--out", args->out, "output folder (created when missing)")->required();
   command->callback([args] {
@@ -41,7 +53,8 @@ void add_generate_command(CLI::App& app) {
                                       {"max_rects", args->options.max_rects},
                                       {"holes", args->options.holes},
                                       {"min_side", args->options.min_side},
-                                      {"max_side", args->options.max_side}};
+                                      {"max_side", args->options.max_side},
+                                      {"grid", args->options.grid}};
     write_dataset(args->out, shapes, generator);
     std::cout << "wrote " << counted(static_cast<long long>(shapes.size()), "shape") << " and index.json to " << args->out << "\n";
   });

@@ -89,22 +89,35 @@ GeneratedShape generate_shape(std::mt19937_64& rng, const GeneratorOptions& opti
                      std::to_string(options.min_rects) + " and " + std::to_string(options.max_rects) + ")");
   }
   if (options.min_side < 1 || options.max_side < options.min_side) {
-    throw InputError("rectangle sides must satisfy 1 <= min <= max");
+    throw InputError("rectangle sides must satisfy 1 <= min <= max (got " + std::to_string(options.min_side) +
+                     " and " + std::to_string(options.max_side) + ")");
+  }
+  if (options.grid < 0 || (options.grid > 0 && options.grid < options.max_side)) {
+    throw InputError("the grid must be 0 (unbounded) or at least the longest side (got grid " +
+                     std::to_string(options.grid) + ", longest side " + std::to_string(options.max_side) + ")");
   }
   if (options.max_rects == 1 && !options.holes) {
     throw InputError("one rectangle is always a rectangle: ask for at least 2");
   }
   for (int attempt = 0; attempt < 100000; ++attempt) {
     const int k = uniform(rng, options.min_rects, options.max_rects);
+    const int grid = options.grid;
     std::vector<IntRect> rects;
-    rects.push_back(IntRect{0, 0, uniform(rng, options.min_side, options.max_side),
-                            uniform(rng, options.min_side, options.max_side)});
+    IntRect first{0, 0, uniform(rng, options.min_side, options.max_side), uniform(rng, options.min_side, options.max_side)};
+    if (grid > 0) {
+      first.x = uniform(rng, 0, grid - first.w);
+      first.y = uniform(rng, 0, grid - first.h);
+    }
+    rects.push_back(first);
     while (static_cast<int>(rects.size()) < k) {
       const IntRect& anchor = rects[static_cast<size_t>(uniform(rng, 0, static_cast<int>(rects.size()) - 1))];
       IntRect r{0, 0, uniform(rng, options.min_side, options.max_side), uniform(rng, options.min_side, options.max_side)};
-      // Positive-area overlap with the anchor.
-      r.x = uniform(rng, anchor.x - r.w + 1, anchor.x + anchor.w - 1);
-      r.y = uniform(rng, anchor.y - r.h + 1, anchor.y + anchor.h - 1);
+      // Positive-area overlap with the anchor (and, on a grid, inside it: the ranges are never
+      // empty because the anchor is inside it).
+      const int x_low = anchor.x - r.w + 1, x_high = anchor.x + anchor.w - 1;
+      const int y_low = anchor.y - r.h + 1, y_high = anchor.y + anchor.h - 1;
+      r.x = grid > 0 ? uniform(rng, std::max(x_low, 0), std::min(x_high, grid - r.w)) : uniform(rng, x_low, x_high);
+      r.y = grid > 0 ? uniform(rng, std::max(y_low, 0), std::min(y_high, grid - r.h)) : uniform(rng, y_low, y_high);
       rects.push_back(r);
     }
     int x0 = rects[0].x, y0 = rects[0].y, x1 = x0, y1 = y0;

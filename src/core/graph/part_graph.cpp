@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/common/error.h"
 #include "core/geometry/part_boundary.h"
 
 namespace autoblock {
@@ -71,6 +72,14 @@ bool in_part(const Cdt& cdt, const FaceHandle& f) { return !cdt.is_infinite(f) &
 
 }  // namespace
 
+const char* graph_method_name(GraphMethod method) { return method == GraphMethod::Bounded ? "bounded" : "refined"; }
+
+GraphMethod graph_method_by_name(const std::string& name) {
+  if (name == "bounded") return GraphMethod::Bounded;
+  if (name == "refined") return GraphMethod::Refined;
+  throw InputError("unknown graph method '" + name + "' (expected bounded or refined)");
+}
+
 PartGraph part_graph(const Part& part, const GraphOptions& options) {
   if (!(options.size_fraction > 0.0) || !(options.shape_bound > 0.0) || options.shape_bound > 0.125 ||
       options.max_nodes < 0) {
@@ -79,11 +88,18 @@ PartGraph part_graph(const Part& part, const GraphOptions& options) {
   const Grid& grid = part.grid();
   const std::vector<CornerRing> loops = part_boundary(part);
 
+  const bool bounded = options.method == GraphMethod::Bounded;
+  const double size_bound = options.size_fraction * part.bbox().longer_side();
+  size_t corner_count = 0;
+  for (const CornerRing& loop : loops) corner_count += loop.size();
+
   PartGraph graph;
   Cdt cdt;
   int corners = 0;
+  size_t splits = 0;  // Bounded: edge points inserted so far
   for (const CornerRing& loop : loops) {
     std::vector<VertexHandle> ring;
+    std::vector<Point2> points;
     ring.reserve(loop.size());
     for (const Corner& c : loop) {
       const Point2 p{grid.xs[static_cast<size_t>(c.i)], grid.ys[static_cast<size_t>(c.j)]};
@@ -94,18 +110,40 @@ PartGraph part_graph(const Part& part, const GraphOptions& options) {
       graph.features.push_back({0.f, 0.f, 1.f});
       graph.vertex_nodes.push_back(v->info().node);
       ring.push_back(v);
+      points.push_back(p);
     }
-    for (size_t k = 0; k < ring.size(); ++k) cdt.insert_constraint(ring[k], ring[(k + 1) % ring.size()]);
+    for (size_t k = 0; k < ring.size(); ++k) {
+      const size_t next = (k + 1) % ring.size();
+      VertexHandle from = ring[k];
+      if (bounded) {
+        // Split the edge evenly into pieces no longer than the size bound (at most
+        // ceil(1 / size_fraction) - 1 points, as no edge is longer than the bounding box).
+        const Point2 a = points[k], b = points[next];
+        const double length = std::abs(b.x - a.x) + std::abs(b.y - a.y);
+        const int pieces = static_cast<int>(std::ceil(length / size_bound - 1e-9));
+        for (int s = 1; s < pieces; ++s) {
+          if (options.max_nodes > 0 && corner_count + splits >= static_cast<size_t>(options.max_nodes)) break;
+          const double t = static_cast<double>(s) / pieces;
+          const VertexHandle v = cdt.insert(Kernel::Point_2(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)));
+          cdt.insert_constraint(from, v);
+          from = v;
+          ++splits;
+        }
+      }
+      cdt.insert_constraint(from, ring[next]);
+    }
   }
 
   mark_part_faces(cdt);
-  Mesher mesher(cdt, Criteria(options.shape_bound, options.size_fraction * part.bbox().longer_side()));
-  mesher.init(/*domain_specified=*/true);
-  if (options.max_nodes == 0) {
-    mesher.refine_mesh();
-  } else {
-    const auto cap = static_cast<Cdt::size_type>(options.max_nodes);
-    while (cdt.number_of_vertices() < cap && mesher.step_by_step_refine_mesh()) {
+  if (!bounded) {
+    Mesher mesher(cdt, Criteria(options.shape_bound, size_bound));
+    mesher.init(/*domain_specified=*/true);
+    if (options.max_nodes == 0) {
+      mesher.refine_mesh();
+    } else {
+      const auto cap = static_cast<Cdt::size_type>(options.max_nodes);
+      while (cdt.number_of_vertices() < cap && mesher.step_by_step_refine_mesh()) {
+      }
     }
   }
 

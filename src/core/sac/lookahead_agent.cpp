@@ -1,6 +1,7 @@
 #include "core/sac/lookahead_agent.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -11,6 +12,7 @@
 #include "core/common/error.h"
 #include "core/geometry/part_symmetry.h"
 #include "core/nn/module_blend.h"
+#include "core/sac/deploy_profile.h"
 #include "core/sac/state_batch.h"
 
 namespace autoblock {
@@ -36,65 +38,79 @@ double soft_maximum(const std::vector<double>& q, double alpha) {
   return top + alpha * std::log(z);
 }
 
-// The deployed policy: argmax of Q over the candidate cuts, with a cache of the states it built
-// (a cut's pieces are the next parts to cut). Owns no training state; safe to use one per thread.
-class LookaheadPolicy : public Policy {
- public:
-  LookaheadPolicy(std::shared_ptr<LookaheadAgent> agent, std::string name) : agent_(std::move(agent)), name_(std::move(name)) {}
-  std::string name() const override { return name_; }
-
-  Action choose(const Episode& episode) override {
-    const auto state = state_of(episode.current_part(), episode.face().size);
-    const std::vector<double> q = values(*state, episode.face().size);
-    const size_t best = static_cast<size_t>(std::max_element(q.begin(), q.end()) - q.begin());
-    const LineCandidate& line = state->lines[best];
-    return Action{line.vertex, line.line.direction};
-  }
-
-  // Q(P, L) for every candidate cut; with deploy_views > 1 each piece's value is the mean over that
-  // many of the square's symmetries of the piece (test-time augmentation: the network is trained to
-  // be invariant under them, and averaging its views cancels part of its error).
-  std::vector<double> values(const PartState& state, double face_size) {
-    static constexpr int kViewOrder[8] = {0, 4, 2, 6, 1, 5, 3, 7};  // identity, half turn, quarter turns, mirrors
-    const int views = std::clamp(agent_->config().deploy_views, 1, 8);
-    std::vector<const PartState*> children;
-    std::vector<std::shared_ptr<const PartState>> keep;
-    for (const LineCandidate& line : state.lines) {
-      for (const Part& piece : line.to_cut) {
-        for (int v = 0; v < views; ++v) {
-          keep.push_back(state_of(piece, face_size, kViewOrder[v]));
-          children.push_back(keep.back().get());
-        }
-      }
-    }
-    const std::vector<double> w = children.empty() ? std::vector<double>{} : agent_->deployed_values(children);
-    std::vector<double> q;
-    size_t k = 0;
-    for (const LineCandidate& line : state.lines) {
-      double value = line.reward;
-      for (size_t c = 0; c < line.to_cut.size(); ++c) {
-        double mean = 0.0;
-        for (int v = 0; v < views; ++v) mean += w[k++];
-        value += agent_->config().gamma * mean / views;
-      }
-      q.push_back(value);
-    }
-    return q;
-  }
-
-  std::shared_ptr<const PartState> state_of(const Part& part, double face_size, int symmetry = 0) {
-    auto& slot = cache_[symmetry][part];
-    if (!slot) slot = make_part_state(symmetry == 0 ? part : transform_part(part, symmetry), agent_->state_options(face_size));
-    return slot;
-  }
-
- private:
-  std::shared_ptr<LookaheadAgent> agent_;
-  std::string name_;
-  std::unordered_map<Part, std::shared_ptr<const PartState>, PartHash> cache_[8];  // per symmetry, keyed by the untransformed part
-};
-
 }  // namespace
+
+LookaheadPolicy::LookaheadPolicy(std::shared_ptr<LookaheadAgent> agent, std::string name)
+    : agent_(std::move(agent)), name_(std::move(name)), reuse_values_(agent_->deploy_reuse()) {}
+
+Action LookaheadPolicy::choose(const Episode& episode) {
+  const auto state = state_of(episode.current_part(), episode.face().size);
+  const std::vector<double> q = values(*state, episode.face().size);
+  const size_t best = static_cast<size_t>(std::max_element(q.begin(), q.end()) - q.begin());
+  const LineCandidate& line = state->lines[best];
+  return Action{line.vertex, line.line.direction};
+}
+
+std::vector<double> LookaheadPolicy::values(const PartState& state, double face_size) {
+  static constexpr int kViewOrder[8] = {0, 4, 2, 6, 1, 5, 3, 7};  // identity, half turn, quarter turns, mirrors
+  const int views = std::clamp(agent_->config().deploy_views, 1, 8);
+  if (!reuse_values_) values_.clear();
+  // The views of every piece not valued yet, in one batch.
+  const bool bounded = agent_->config().graph.method == GraphMethod::Bounded;
+  std::vector<const Part*> fresh;
+  std::vector<std::shared_ptr<const PartState>> keep;
+  std::vector<const PartState*> batch;
+  long reused = 0;
+  for (const LineCandidate& line : state.lines) {
+    for (const Part& piece : line.to_cut) {
+      const auto [slot, inserted] = values_.try_emplace(piece, 0.0);
+      if (!inserted) {
+        reused += std::find_if(fresh.begin(), fresh.end(), [&](const Part* p) { return *p == piece; }) == fresh.end();
+        continue;
+      }
+      fresh.push_back(&slot->first);
+      const std::shared_ptr<const PartState> base = state_of(piece, face_size);
+      for (int v = 0; v < views; ++v) {
+        const int symmetry = kViewOrder[v];
+        if (symmetry == 0) {
+          keep.push_back(base);
+        } else if (bounded) {
+          keep.push_back(symmetric_view(*base, symmetry));  // no second triangulation
+        } else {
+          // Refined graphs (policies trained before issue 8): the transformed part's own
+          // triangulation, as those policies were validated with.
+          auto& view = refined_views_[symmetry][piece];
+          if (!view) view = make_part_state(transform_part(piece, symmetry), agent_->state_options(face_size));
+          keep.push_back(view);
+        }
+        batch.push_back(keep.back().get());
+      }
+    }
+  }
+  deploy_profile().values_reused += reused;
+  if (!batch.empty()) {
+    const std::vector<double> w = agent_->deployed_values(batch);
+    for (size_t p = 0; p < fresh.size(); ++p) {
+      double mean = 0.0;
+      for (int v = 0; v < views; ++v) mean += w[p * static_cast<size_t>(views) + static_cast<size_t>(v)];
+      values_[*fresh[p]] = mean / views;
+    }
+  }
+  std::vector<double> q;
+  q.reserve(state.lines.size());
+  for (const LineCandidate& line : state.lines) {
+    double value = line.reward;
+    for (const Part& piece : line.to_cut) value += agent_->config().gamma * values_.at(piece);
+    q.push_back(value);
+  }
+  return q;
+}
+
+std::shared_ptr<const PartState> LookaheadPolicy::state_of(const Part& part, double face_size) {
+  auto& slot = states_[part];
+  if (!slot) slot = make_part_state(part, agent_->state_options(face_size));
+  return slot;
+}
 
 LookaheadAgent::LookaheadAgent(const SacConfig& config)
     : config_(config), scale_(lookahead_reward_scale(config.reward)) {
@@ -164,7 +180,13 @@ std::vector<double> LookaheadAgent::state_values(const std::vector<const PartSta
 }
 
 std::vector<double> LookaheadAgent::deployed_values(const std::vector<const PartState*>& states) {
-  return values_of(averaging() ? average_ : value_, states);
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<double> values = values_of(averaging() ? average_ : value_, states);
+  DeployProfile& profile = deploy_profile();
+  profile.forward_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ++profile.forwards;
+  profile.graphs_evaluated += static_cast<long>(states.size());
+  return values;
 }
 
 void LookaheadAgent::update_average() {
@@ -333,7 +355,7 @@ std::unique_ptr<Policy> LookaheadAgent::deployed_policy(const std::string& name)
 }
 
 std::vector<float> LookaheadAgent::vertex_scores(const Episode& episode) {
-  LookaheadPolicy policy(std::static_pointer_cast<LookaheadAgent>(shared_from_this()), "");
+  LookaheadPolicy policy(std::static_pointer_cast<LookaheadAgent>(shared_from_this()), "");  // fresh caches
   const auto state = policy.state_of(episode.current_part(), episode.face().size);
   const std::vector<double> q = policy.values(*state, episode.face().size);
   // A vertex scores the better of the cuts through it (lines through no other corner count too).

@@ -26,6 +26,13 @@
 // entropy of vertex_target_entropy_fraction * ln(number of cuts). The tree of parts is handled by
 // the sum over the pieces. Each remembered part is presented in one of the square's eight
 // symmetries (rewards and values do not change under them), which multiplies the training data.
+//
+// Deployed (LookaheadPolicy below), a piece's value is the mean over deploy_views symmetric views
+// of it; with bounded graphs (part_graph.h) a view is the piece's graph transformed
+// (symmetric_view), not a second triangulation. Within a decomposition nothing is done twice: a
+// part's state (graph, lookahead) and a piece's value are kept, keyed by the part (its cells on the
+// face's grid, which identify it within one face), and the pieces a step has not valued yet go
+// through the network as one batch.
 #pragma once
 
 #include <algorithm>
@@ -42,6 +49,34 @@
 #include "core/sac/part_state.h"
 
 namespace autoblock {
+
+class LookaheadAgent;
+
+// The deployed policy: argmax of Q over the candidate cuts (see above), with caches of the states
+// it built and of the pieces' values (a cut's pieces are the next parts to cut). Owns no training
+// state; one per thread and per decomposition (its caches grow with the parts it meets).
+class LookaheadPolicy : public Policy {
+ public:
+  LookaheadPolicy(std::shared_ptr<LookaheadAgent> agent, std::string name);
+  std::string name() const override { return name_; }
+  Action choose(const Episode& episode) override;
+
+  // Q(P, L) for every candidate cut of state (a lookahead state of this policy's face); a piece's
+  // value is the mean of the network's values over deploy_views symmetric views of it, computed
+  // once per piece.
+  std::vector<double> values(const PartState& state, double face_size);
+  // The part's lookahead state, built once.
+  std::shared_ptr<const PartState> state_of(const Part& part, double face_size);
+  size_t valued_pieces() const { return values_.size(); }
+
+ private:
+  std::shared_ptr<LookaheadAgent> agent_;
+  std::string name_;
+  bool reuse_values_ = true;
+  std::unordered_map<Part, std::shared_ptr<const PartState>, PartHash> states_;
+  std::unordered_map<Part, std::shared_ptr<const PartState>, PartHash> refined_views_[8];  // refined graphs only
+  std::unordered_map<Part, double, PartHash> values_;  // W of pieces, mean over the views
+};
 
 class LookaheadAgent : public LearningAgent {
  public:
@@ -67,6 +102,10 @@ class LookaheadAgent : public LearningAgent {
   double temperature() const;
   // Overrides the configuration's deploy_views (1 to 8) of this agent's deployed policies.
   void set_deploy_views(int views) { config_.deploy_views = std::max(1, std::min(8, views)); }
+  // Whether this agent's deployed policies keep the pieces' values from step to step (default
+  // true). Off, every step values all its pieces again, as before issue 8 (for benchmarks).
+  void set_deploy_reuse(bool reuse) { deploy_reuse_ = reuse; }
+  bool deploy_reuse() const { return deploy_reuse_; }
   // The value network's current learning rate (set_training_progress moves it).
   double learning_rate() const;
 
@@ -89,6 +128,7 @@ class LookaheadAgent : public LearningAgent {
 
   SacConfig config_;
   double scale_;
+  bool deploy_reuse_ = true;
   bool averaging() const { return config_.weight_average_decay > 0.0; }
   void update_average();
 

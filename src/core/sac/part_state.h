@@ -37,4 +37,15 @@ struct PartState {
 // Inputs: part; options. Output: the part's state.
 std::shared_ptr<const PartState> make_part_state(const Part& part, const PartStateOptions& options);
 
+// Inputs:  state, of a part P; symmetry in 0..7 (part_symmetry.h: bit 0 mirrors x, bits 1-2 count
+//          quarter turns).
+// Outputs: what the value network reads of transform_part(P, symmetry), made from state without a
+//          second triangulation: the same nodes, node kinds and edges; positions and
+//          pseudo-coordinates transformed; with lookahead features, a quarter turn swaps the
+//          horizontal and vertical cut summaries. With the bounded graph method this equals
+//          make_part_state(transform_part(P, symmetry)) up to the order of the nodes and the
+//          triangulation's choice of diagonal among cocircular points. Observations and
+//          candidate cuts are left empty (the value network does not read them).
+std::shared_ptr<const PartState> symmetric_view(const PartState& state, int symmetry);
+
 }  // namespace autoblock

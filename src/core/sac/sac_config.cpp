@@ -25,7 +25,10 @@ nlohmann::json sac_config_json(const SacConfig& c) {
           {"value_network", c.value_network},
           {"actor_output_relu", c.actor_output_relu},
           {"reward", reward_preset_name(c.reward)},
-          {"graph", {{"size_fraction", c.graph.size_fraction}, {"shape_bound", c.graph.shape_bound}}},
+          {"graph",
+           {{"size_fraction", c.graph.size_fraction},
+            {"shape_bound", c.graph.shape_bound},
+            {"method", graph_method_name(c.graph.method)}}},
           {"bootstrap", c.bootstrap == Bootstrap::Graph ? "graph" : "critics"},
           {"gamma", c.gamma},
           {"batch_size", c.batch_size},
@@ -57,6 +60,8 @@ SacConfig sac_config_from_json(const nlohmann::json& j) {
     c.reward = reward_preset_by_name(j.at("reward").get<std::string>());
     c.graph.size_fraction = j.at("graph").at("size_fraction").get<double>();
     c.graph.shape_bound = j.at("graph").at("shape_bound").get<double>();
+    // Files written before issue 8 name no method: their networks learned on refined graphs.
+    c.graph.method = graph_method_by_name(j.at("graph").value("method", std::string("refined")));
     const std::string bootstrap = j.at("bootstrap").get<std::string>();
     if (bootstrap != "graph" && bootstrap != "critics") throw InputError("unknown bootstrap '" + bootstrap + "'");
     c.bootstrap = bootstrap == "graph" ? Bootstrap::Graph : Bootstrap::Critics;

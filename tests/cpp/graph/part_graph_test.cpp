@@ -6,6 +6,8 @@
 #include <sstream>
 
 #include "core/baselines/random_policy.h"
+#include "core/common/error.h"
+#include "core/data/thin_features.h"
 #include "core/env/episode.h"
 #include "core/geometry/part_boundary.h"
 #include "core/graph/part_graph.h"
@@ -157,6 +159,13 @@ std::vector<Part> cut_pieces(int count, std::uint64_t seed, const GeneratorOptio
 
 }  // namespace
 
+TEST_CASE("graph methods have names", "[graph]") {
+  CHECK(graph_method_by_name(graph_method_name(GraphMethod::Bounded)) == GraphMethod::Bounded);
+  CHECK(graph_method_by_name(graph_method_name(GraphMethod::Refined)) == GraphMethod::Refined);
+  CHECK(std::string(graph_method_name(GraphMethod::Bounded)) == "bounded");
+  CHECK_THROWS_AS(graph_method_by_name("fine"), InputError);
+}
+
 TEST_CASE("part_graph of the L-shape: corners first, in boundary order, then Steiner points", "[graph]") {
   const GridFace face = test::grid_face_of(test::l_shape());
   const PartGraph g = part_graph(face.whole);
@@ -167,9 +176,14 @@ TEST_CASE("part_graph of the L-shape: corners first, in boundary order, then Ste
     CHECK(g.positions[k] == corners[k]);
     CHECK(g.features[k] == std::array<float, 3>{0, 0, 1});
   }
-  // Size bound 0.35 * 2 = 0.7 < 1: every unit edge of the L gets split, so there are edge nodes.
+  // Size bound 0.35 * 2 = 0.7: the two edges 2 long are split in three, the four 1 long in two.
   const auto edge_nodes = std::count(g.features.begin(), g.features.end(), std::array<float, 3>{0, 1, 0});
-  CHECK(edge_nodes >= 8);
+  CHECK(edge_nodes == 8);
+  CHECK(g.node_count() == 14);
+  // Refined (CGAL's Delaunay refinement), every unit edge gets split too.
+  const PartGraph refined = part_graph(face.whole, GraphOptions{0.35, 0.125, 1000, GraphMethod::Refined});
+  CHECK(std::count(refined.features.begin(), refined.features.end(), std::array<float, 3>{0, 1, 0}) >= 8);
+  CHECK(graph_problem(face.whole, refined) == "");
   CHECK(graph_problem(face.whole, g) == "");
   CHECK(std::is_sorted(g.edges.begin(), g.edges.end()));
 }
@@ -196,12 +210,12 @@ TEST_CASE("part_graph with no effective size bound: a rectangle keeps its corner
   CHECK(pseudo_of(1, 2) == std::array<float, 2>{0.5f, 0.25f});
 }
 
-TEST_CASE("part_graph with no effective size bound splits the L-shape's encroached edges", "[graph]") {
+TEST_CASE("refined graphs with no effective size bound split the L-shape's encroached edges", "[graph]") {
   // The re-entrant corner (1,1) lies on the diametral circles of the long edges (0,0)-(2,0) and
   // (0,2)-(0,0) (centres (1,0) and (0,1), radius 1): CGAL's conforming refinement splits both at
   // their midpoints, and nothing else is needed. 8 nodes: 6 corners, (1,0) and (0,1) on edges.
   const GridFace face = test::grid_face_of(test::l_shape());
-  const PartGraph g = part_graph(face.whole, GraphOptions{10.0, 0.125, 0});
+  const PartGraph g = part_graph(face.whole, GraphOptions{10.0, 0.125, 0, GraphMethod::Refined});
   CHECK(graph_problem(face.whole, g) == "");
   REQUIRE(g.node_count() == 8);
   std::vector<std::pair<double, double>> extra;
@@ -306,21 +320,61 @@ TEST_CASE("part_graph is a valid, small triangulation of generated faces and the
   }
 }
 
-TEST_CASE("part_graph caps the refinement of thin parts", "[graph]") {
+TEST_CASE("refined graphs cap the refinement of thin parts", "[graph]") {
   // An L with arms 1 long and 0.001 thick: the 20.7 degree bound alone needs about 2000 nodes.
   const GridFace face = test::grid_face_of({{0, 0}, {1, 0}, {1, 0.001}, {0.001, 0.001}, {0.001, 1}, {0, 1}});
-  GraphOptions uncapped;
+  GraphOptions refined;
+  refined.method = GraphMethod::Refined;
+  GraphOptions uncapped = refined;
   uncapped.max_nodes = 0;
   const PartGraph full = part_graph(face.whole, uncapped);
   CHECK(full.node_count() > 1500);
   CHECK(graph_problem(face.whole, full) == "");
-  const PartGraph capped = part_graph(face.whole);  // default cap: 1000 nodes
+  const PartGraph capped = part_graph(face.whole, refined);  // default cap: 1000 nodes
   CHECK(capped.node_count() <= 1000);
   CHECK(capped.node_count() >= 990);
   CHECK(graph_problem(face.whole, capped) == "");
   // Typical parts never reach the cap: the same graph with and without it.
   for (const GeneratedShape& shape : test::generated_shapes(20, 31, GeneratorOptions{})) {
     const Part part = make_grid_face(shape.polygon).whole;
-    CHECK(part_graph(part).edges == part_graph(part, uncapped).edges);
+    CHECK(part_graph(part, refined).edges == part_graph(part, uncapped).edges);
+  }
+}
+
+TEST_CASE("bounded graphs stay small on thin parts", "[graph]") {
+  // A 1:1000 strip: the long sides are split into three (size bound 0.35 x 1000), nothing else.
+  const GridFace strip = test::grid_face_of({{0, 0}, {1000, 0}, {1000, 1}, {0, 1}});
+  const PartGraph s = part_graph(strip.whole);
+  CHECK(s.node_count() == 8);
+  CHECK(graph_problem(strip.whole, s) == "");
+  // An L with arms 1 long and 0.001 thick (about 2000 nodes refined): 6 corners, and 2 points on
+  // each of the four long edges.
+  const GridFace thin_l = test::grid_face_of({{0, 0}, {1, 0}, {1, 0.001}, {0.001, 0.001}, {0.001, 1}, {0, 1}});
+  const PartGraph l = part_graph(thin_l.whole);
+  CHECK(l.node_count() == 14);
+  CHECK(graph_problem(thin_l.whole, l) == "");
+  // The same L a thousand times thinner still: the same graph size.
+  const GridFace thinner = test::grid_face_of({{0, 0}, {1, 0}, {1, 1e-6}, {1e-6, 1e-6}, {1e-6, 1}, {0, 1}});
+  CHECK(part_graph(thinner.whole).node_count() == 14);
+}
+
+TEST_CASE("bounded graphs have at most three nodes per corner on thin-feature faces and their pieces", "[graph]") {
+  // Faces drawn on a bounded grid, where features one unit wide are common (as in the issue-8
+  // benchmarks), and the pieces random splitting makes of them.
+  for (bool holes : {false, true}) {
+    const GeneratorOptions options = thin_feature_options(11, 40, holes);
+    std::vector<Part> parts = cut_pieces(8, holes ? 21 : 20, options);
+    for (const GeneratedShape& s : test::generated_shapes(8, holes ? 23 : 22, options)) {
+      parts.push_back(make_grid_face(s.polygon).whole);
+    }
+    int largest_ratio_hit = 0;
+    for (const Part& part : parts) {
+      const PartGraph g = part_graph(part);
+      INFO("part with " << part.cell_count() << " cells, " << g.vertex_nodes.size() << " corners");
+      REQUIRE(graph_problem(part, g) == "");
+      CHECK(g.node_count() <= 3 * static_cast<int>(g.vertex_nodes.size()));
+      largest_ratio_hit += g.node_count() > static_cast<int>(g.vertex_nodes.size());
+    }
+    CHECK(largest_ratio_hit > 0);  // edges do get split
   }
 }

@@ -2,8 +2,11 @@
 
 #include <cmath>
 
+#include "core/data/thin_features.h"
+#include "core/env/decomposition.h"
 #include "core/geometry/part_boundary.h"
 #include "core/geometry/part_symmetry.h"
+#include "core/sac/deploy_profile.h"
 #include "core/sac/lookahead_agent.h"
 #include "core/sac/policy_file.h"
 #include "support/test_shapes.h"
@@ -119,4 +122,55 @@ TEST_CASE("the learning rate falls along a half cosine to its final fraction", "
   auto constant = std::make_shared<LookaheadAgent>(default_sac_config("lookahead"));
   constant->set_training_progress(0.7);
   CHECK(constant->learning_rate() == Approx(default_sac_config("lookahead").lr_value));
+}
+
+TEST_CASE("a batched forward equals the unbatched one", "[sac][lookahead]") {
+  // The deployed network (evaluation mode: batch norm uses its running statistics) values each
+  // graph of a batch as it values it alone.
+  torch::manual_seed(6);
+  auto agent = std::make_shared<LookaheadAgent>(default_sac_config("lookahead"));
+  const GeneratorOptions options = thin_feature_options(2, 10);
+  std::vector<std::shared_ptr<const PartState>> states;
+  std::vector<const PartState*> raw;
+  for (const GeneratedShape& shape : test::generated_shapes(12, 8, options)) {
+    const GridFace face = make_grid_face(shape.polygon);
+    states.push_back(make_part_state(face.whole, agent->state_options(face.size)));
+    raw.push_back(states.back().get());
+  }
+  const std::vector<double> together = agent->deployed_values(raw);
+  REQUIRE(together.size() == raw.size());
+  for (size_t k = 0; k < raw.size(); ++k) {
+    const double alone = agent->deployed_values({raw[k]})[0];
+    CHECK(together[k] == Approx(alone).epsilon(1e-5).margin(1e-5));
+  }
+}
+
+TEST_CASE("the deployed policy's cached values are what a fresh evaluation gives", "[sac][lookahead][policy]") {
+  // Along whole decompositions, the policy that keeps states and piece values from earlier steps
+  // scores every cut as a fresh policy (empty caches) does, and it does reuse values.
+  torch::manual_seed(7);
+  auto agent = std::make_shared<LookaheadAgent>(default_sac_config("lookahead"));
+  const GeneratorOptions options = thin_feature_options(6, 10);
+  long reused = 0;
+  for (const GeneratedShape& shape : test::generated_shapes(4, 9, options)) {
+    const GridFace face = make_grid_face(shape.polygon);
+    // Reuse across steps, by a policy that only chooses.
+    LookaheadPolicy plain(agent, "plain");
+    deploy_profile() = {};
+    decompose_face(face, plain);
+    reused += deploy_profile().values_reused;
+
+    LookaheadPolicy cached(agent, "cached");
+    Episode episode(face);
+    while (episode.running()) {
+      const auto state = cached.state_of(episode.current_part(), face.size);
+      const std::vector<double> q = cached.values(*state, face.size);
+      LookaheadPolicy fresh(agent, "fresh");
+      const std::vector<double> expected = fresh.values(*fresh.state_of(episode.current_part(), face.size), face.size);
+      REQUIRE(q.size() == expected.size());
+      for (size_t k = 0; k < q.size(); ++k) CHECK(q[k] == Approx(expected[k]).epsilon(1e-5).margin(1e-5));
+      episode.step(cached.choose(episode));
+    }
+  }
+  CHECK(reused > 0);
 }

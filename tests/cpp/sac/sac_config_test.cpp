@@ -39,3 +39,19 @@ TEST_CASE("the deployment options round-trip, default for older files and are ch
     CHECK_THROWS_WITH(sac_config_from_json(bad), Contains(key));
   }
 }
+
+TEST_CASE("the graph method round-trips, is refined for older files and is checked", "[sac][config]") {
+  SacConfig config = default_sac_config("lookahead");
+  CHECK(config.graph.method == GraphMethod::Bounded);  // new policies learn on bounded graphs
+  CHECK(sac_config_from_json(sac_config_json(config)).graph.method == GraphMethod::Bounded);
+  config.graph.method = GraphMethod::Refined;
+  CHECK(sac_config_from_json(sac_config_json(config)).graph.method == GraphMethod::Refined);
+  // A file written before issue 8 names no method: its network learned on refined graphs.
+  nlohmann::json old = sac_config_json(default_sac_config("lookahead"));
+  old["graph"].erase("method");
+  CHECK(sac_config_from_json(old).graph.method == GraphMethod::Refined);
+  nlohmann::json bad = sac_config_json(default_sac_config("lookahead"));
+  bad["graph"]["method"] = "fine";
+  CHECK_THROWS_AS(sac_config_from_json(bad), InputError);
+  CHECK_THROWS_WITH(sac_config_from_json(bad), Contains("graph method"));
+}
