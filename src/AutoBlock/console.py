@@ -200,7 +200,7 @@ def decompose(face_or_object, policy=None, reward=None, seed=0, time_limit=30.0,
         the preferences say otherwise).
     reward: a reward preset (AutoBlock.reward_presets()) to score the cuts with; "": the policy's own (a
         trained policy's, "paper" for the baselines); None: the preferred one ("" unless set).
-    seed: for the random policies; time_limit: seconds of exact search for "optimal";
+    seed: for the random policies; time_limit: seconds per face before greedy finishes (optimal, auto, learned);
     max_steps: step cap (0: 10 x corners + 10).
     Returns a DecompositionResult. Raises ValueError for an unsupported face or a bad option.
     """

@@ -46,8 +46,8 @@ class AutoBlockFeature:
          "for the policy's own (sac-mesh: mesh; sac-paper, the baselines: paper), paper (Eq. (1) of DiPrete et al. "
          "2022) or mesh (few, fat blocks). The baselines maximise it.", 0),
         ("App::PropertyInteger", "Seed", "Decomposition", "Seed of the random policies.", 0),
-        ("App::PropertyFloat", "TimeLimit", "Decomposition", "optimal: seconds of exact search before finishing "
-         "greedily.", 0),
+        ("App::PropertyFloat", "TimeLimit", "Decomposition", "Seconds per face before greedy finishes the "
+         "remaining parts (optimal, auto and learned policies).", 0),
         ("App::PropertyLength", "MeshSize", "Mesh", "Target quad size of the object's FEM mesh (0: automatic, 1/20 "
          "of the face's longer side).", 0),
         ("App::PropertyInteger", "NumberOfBlocks", "Result", "Blocks in the partition.", 8),
