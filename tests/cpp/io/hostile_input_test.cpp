@@ -3,7 +3,8 @@
 // not by the reader's time budget (shape_file.h). Inputs: tests/data/hostile/*.brep, named by what
 // they did before: hang_reader_* (OpenCASCADE's BREP reader looped for ever), hang_checker_* (its
 // checker or projections looped on an infinite parameter), hang_splitter_* (the cut never ended),
-// internal_* (exit 1: OpenCASCADE's cut disagreed with the polygon or failed).
+// internal_* (exit 1: OpenCASCADE's cut disagreed with the polygon or failed), crash_* (a
+// segmentation fault inside OpenCASCADE's reader; contained by the reading child process).
 #include <catch2/catch.hpp>
 
 #include <cstdlib>
@@ -52,7 +53,9 @@ TEST_CASE("every hostile input is refused by the CLI with exit 2 and one line", 
     CHECK(test::line_count(r.err) == 1);
     CHECK_THAT(r.err, !Contains("took longer"));
     // ... and in this process, without a time budget: the hardened reader and the checks stop it
-    // themselves (a regression would hang here until `timeout` kills it: exit 137).
+    // themselves (a regression would hang here until `timeout` kills it: exit 137). Not for the
+    // crash_* inputs: in this process nothing catches OpenCASCADE's access violations.
+    if (fs::path(file).filename().string().rfind("crash_", 0) == 0) continue;
     r = test::run_shell("AUTOBLOCK_READ_TIMEOUT=0 timeout -s KILL 60 '" + std::string(AUTOBLOCK_CLI) + "' decompose " +
                         quoted(file) + " --policy greedy --out " + quoted(folder + "/b.brep"));
     INFO("in process: " << r.err);
