@@ -5,6 +5,7 @@
 #include <Geom2d_Curve.hxx>
 #include <Geom_Curve.hxx>
 #include <Geom_Surface.hxx>
+#include <Precision.hxx>
 #include <TopExp.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
@@ -90,8 +91,9 @@ double check_finite_geometry(const TopoDS_Face& face) {
     farthest = std::max(farthest, point.Distance(origin));
   }
   // Parameters on the surface are distances from its origin: far away, their rounding error
-  // (about 1e-16 of the distance, times what OpenCASCADE's algorithms lose) exceeds the tolerance.
-  if (farthest * 1e-14 > std::max(largest, 1e-7)) {
+  // (about 1e-16 of the distance, times what OpenCASCADE's algorithms lose) exceeds the fixed
+  // precision its algorithms work to (Precision::Confusion(), 1e-7), whatever the tolerances say.
+  if (farthest * 1e-15 > Precision::Confusion()) {
     throw InputError("the face lies " + format_number(farthest) +
                      " away from its surface's origin: too far for OpenCASCADE to compute on it precisely");
   }
@@ -134,8 +136,14 @@ InputFace load_input_face(const std::string& path) {
 }
 
 InputFace input_face_from_brep_text(const std::string& text, const std::string& source) {
-  const TopoDS_Shape shape =
-      read_brep_text(text, [&](const TopoDS_Shape& read) { input_face_from_occt(single_face(read, source), source); });
+  TopoDS_Shape shape;
+  try {
+    shape = read_brep_text(text, [&](const TopoDS_Shape& read) { input_face_from_occt(single_face(read, source), source); });
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    if (message.rfind(source, 0) == 0) throw;
+    throw InputError(source + ": " + message);  // the reader's messages do not know the source
+  }
   return input_face_from_occt(single_face(shape, source), source);
 }
 
