@@ -33,11 +33,9 @@ using namespace autoblock;
 
 namespace {
 
-// The face held by BREP text (exactly one face), checked.
-InputFace face_of(const std::string& brep, const std::string& source) {
-  const TopoDS_Shape shape = read_brep_text(brep);
-  return check_shape_face(shape, source, 0);
-}
+// The face held by BREP text (exactly one face), checked; read and checked first in a child
+// process (shape_file.h), so malformed text cannot hang or crash FreeCAD.
+InputFace face_of(const std::string& brep, const std::string& source) { return input_face_from_brep_text(brep, source); }
 
 CutDirection direction_of(const std::string& name) {
   if (name == "horizontal") return CutDirection::Horizontal;

@@ -143,6 +143,10 @@ RectilinearPolygon validate_rings(const std::vector<RawRing>& raw, double* toler
       if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
         throw InputError("the " + ring.name + " has a vertex with a coordinate that is not a finite number");
       }
+      if (std::fabs(p.x) > kMaximumCoordinate || std::fabs(p.y) > kMaximumCoordinate) {
+        throw InputError("the " + ring.name + " has a vertex at " + format_point(p.x, p.y) +
+                         ": coordinates beyond " + format_number(kMaximumCoordinate) + " are not supported");
+      }
       if (first) box = Box{p.x, p.y, p.x, p.y};
       first = false;
       box.xmin = std::min(box.xmin, p.x);

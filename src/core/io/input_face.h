@@ -25,7 +25,12 @@ struct InputFace {
 // Throws InputError (see shape_file.h and face_selection.h).
 InputFace load_input_face(const std::string& path, int face_number = 0, const std::string& how_to_choose = "");
 
-// Inputs: face; source, its name. Output: the face in every form. Throws InputError.
+// Inputs: text, BREP text holding one face (as FreeCAD's exportBrepToString writes); source, its
+// name. Output: the face in every form. Throws InputError (see shape_file.h).
+InputFace input_face_from_brep_text(const std::string& text, const std::string& source);
+
+// Inputs: face; source, its name. Output: the face in every form. Throws InputError (also when
+// OpenCASCADE cannot evaluate the face's geometry).
 InputFace input_face_from_occt(const TopoDS_Face& face, const std::string& source);
 
 }  // namespace autoblock

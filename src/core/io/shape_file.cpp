@@ -20,10 +20,11 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
-#include <random>
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/io/atomic_file.h"
+#include "core/io/isolated_call.h"
 
 namespace autoblock {
 namespace {
@@ -58,20 +59,92 @@ std::string type_name(TopAbs_ShapeEnum type) {
   }
 }
 
-TopoDS_Shape read_brep_stream(std::istream& in) {
+// OpenCASCADE's BREP reader does not check its stream: on a malformed number or count it reads on
+// from a failed stream, looping for ever or allocating without bound. A stream that throws on the
+// first failed extraction stops it there.
+TopoDS_Shape read_brep_stream(std::istream& in, std::string& why) {
   TopoDS_Shape shape;
   BRep_Builder builder;
+  in.exceptions(std::ios::failbit | std::ios::badbit);
   try {
     BRepTools::Read(shape, in, builder);
-  } catch (const Standard_Failure&) {
+  } catch (const std::ios_base::failure&) {
     shape.Nullify();
+    why = "it ends early or holds a malformed number or count";
+  } catch (const Standard_Failure& e) {
+    shape.Nullify();
+    why = std::string("OpenCASCADE: ") + e.GetMessageString();
   }
+  if (shape.IsNull() && why.empty()) why = "no shape in it";
+  return shape;
+}
+
+std::string brep_text_of(const TopoDS_Shape& shape) {
+  std::ostringstream out;
+  BRepTools::Write(shape, out);
+  return out.str();
+}
+
+// The shape read by read, in a child process (isolated_call.h) unless the budget is 0; check runs
+// there too. message: what the input is, for errors.
+TopoDS_Shape read_isolated(const std::function<TopoDS_Shape()>& read, const ShapeCheck& check,
+                           const std::string& message) {
+  const double budget = read_budget_seconds();
+  if (budget <= 0) {
+    // In this process: the stream still fails loudly, and every failure becomes an input error.
+    TopoDS_Shape shape;
+    run_isolated(
+        [&] {
+          shape = read();
+          if (check) check(shape);
+          return std::string();
+        },
+        message, 0);
+    return shape;
+  }
+  const std::string text = run_isolated(
+      [&] {
+        const TopoDS_Shape shape = read();
+        if (check) check(shape);
+        return brep_text_of(shape);
+      },
+      message, budget);
+  // The child's BREP text was written by OpenCASCADE from a shape it read and checked.
+  std::istringstream in(text);
+  std::string why;
+  TopoDS_Shape shape = read_brep_stream(in, why);
+  if (shape.IsNull()) throw InputError(message + ": the shape read could not be passed back (" + why + ")");
+  return shape;
+}
+
+TopoDS_Shape read_brep_or_throw(std::istream& in, const std::string& message) {
+  std::string why;
+  TopoDS_Shape shape = read_brep_stream(in, why);
+  if (shape.IsNull()) throw InputError(message + " (" + why + ")");
+  return shape;
+}
+
+TopoDS_Shape read_step_or_throw(const std::string& path) {
+  STEPControl_Reader reader;
+  IFSelect_ReturnStatus status = IFSelect_RetFail;
+  TopoDS_Shape shape;
+  try {
+    status = reader.ReadFile(path.c_str());
+    if (status == IFSelect_RetDone) {
+      reader.TransferRoots();
+      shape = reader.OneShape();
+    }
+  } catch (const Standard_Failure&) {
+    status = IFSelect_RetFail;
+  }
+  if (status != IFSelect_RetDone) throw InputError(path + ": not a readable STEP file");
+  if (shape.IsNull()) throw InputError(path + ": the STEP file holds no shape");
   return shape;
 }
 
 }  // namespace
 
-TopoDS_Shape read_shape_file(const std::string& path) {
+TopoDS_Shape read_shape_file(const std::string& path, const ShapeCheck& check) {
   silence_occt();
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path + ": no such file");
@@ -80,38 +153,28 @@ TopoDS_Shape read_shape_file(const std::string& path) {
   if (ext != ".brep" && ext != ".brp" && ext != ".step" && ext != ".stp") {
     throw InputError(path + ": unknown file type '" + ext + "' (expected .brep, .step or .stp)");
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the file for reading");
+  if (!std::ifstream(path, std::ios::binary)) throw InputError(path + ": cannot open the file for reading");
   if (fs::file_size(path, ec) == 0) throw InputError(path + ": the file is empty");
-  TopoDS_Shape shape;
   if (ext == ".brep" || ext == ".brp") {
-    shape = read_brep_stream(in);
-    if (shape.IsNull()) throw InputError(path + ": not a readable BREP file");
-  } else {
-    STEPControl_Reader reader;
-    IFSelect_ReturnStatus status = IFSelect_RetFail;
-    try {
-      status = reader.ReadFile(path.c_str());
-      if (status == IFSelect_RetDone) {
-        reader.TransferRoots();
-        shape = reader.OneShape();
-      }
-    } catch (const Standard_Failure&) {
-      status = IFSelect_RetFail;
-    }
-    if (status != IFSelect_RetDone) throw InputError(path + ": not a readable STEP file");
-    if (shape.IsNull()) throw InputError(path + ": the STEP file holds no shape");
+    return read_isolated(
+        [&] {
+          std::ifstream in(path, std::ios::binary);
+          return read_brep_or_throw(in, path + ": not a readable BREP file");
+        },
+        check, path);
   }
-  return shape;
+  return read_isolated([&] { return read_step_or_throw(path); }, check, path);
 }
 
-TopoDS_Shape read_brep_text(const std::string& text) {
+TopoDS_Shape read_brep_text(const std::string& text, const ShapeCheck& check) {
   silence_occt();
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError("the BREP text is empty");
-  std::istringstream in(text);
-  TopoDS_Shape shape = read_brep_stream(in);
-  if (shape.IsNull()) throw InputError("the text is not readable BREP");
-  return shape;
+  return read_isolated(
+      [&] {
+        std::istringstream in(text);
+        return read_brep_or_throw(in, "the text is not readable BREP");
+      },
+      check, "the BREP text");
 }
 
 TopoDS_Face single_face(const TopoDS_Shape& shape, const std::string& what) {
@@ -133,35 +196,18 @@ void write_shape_file(const std::string& path, const TopoDS_Shape& shape) {
   if (ext != ".brep" && ext != ".brp" && ext != ".step" && ext != ".stp") {
     throw InputError(path + ": unknown output file type '" + ext + "' (expected .brep, .step or .stp)");
   }
-  std::error_code ec;
-  const fs::path target(path);
-  if (target.has_parent_path() && !fs::is_directory(target.parent_path(), ec)) {
-    throw InputError(path + ": the folder " + target.parent_path().string() + " does not exist");
-  }
-  std::random_device random;
-  const std::string temporary = path + ".tmp" + std::to_string(random()) + ext;
-  bool written = false;
-  try {
-    if (ext == ".brep" || ext == ".brp") {
-      written = BRepTools::Write(shape, temporary.c_str());
-    } else {
+  write_file_atomically(path, [&](const std::string& temporary) {
+    try {
+      if (ext == ".brep" || ext == ".brp") return static_cast<bool>(BRepTools::Write(shape, temporary.c_str()));
       STEPControl_Writer writer;
-      written = writer.Transfer(shape, STEPControl_AsIs) == IFSelect_RetDone &&
-                writer.Write(temporary.c_str()) == IFSelect_RetDone;
+      return writer.Transfer(shape, STEPControl_AsIs) == IFSelect_RetDone &&
+             writer.Write(temporary.c_str()) == IFSelect_RetDone;
+    } catch (const Standard_Failure&) {
+      return false;
     }
-  } catch (const Standard_Failure&) {
-    written = false;
-  }
-  if (!written || (fs::rename(temporary, path, ec), ec)) {
-    fs::remove(temporary, ec);
-    throw InputError(path + ": cannot write the file");
-  }
+  });
 }
 
-std::string write_brep_text(const TopoDS_Shape& shape) {
-  std::ostringstream out;
-  BRepTools::Write(shape, out);
-  return out.str();
-}
+std::string write_brep_text(const TopoDS_Shape& shape) { return brep_text_of(shape); }
 
 }  // namespace autoblock

@@ -1,6 +1,19 @@
 // Reading faces from and writing shapes to .brep and .step/.stp files (and BREP text).
+//
+// Hostile input: OpenCASCADE's readers can loop for ever or crash on a malformed file (a number cut
+// short, a count that does not match). So a read runs
+//   1. in a child process (fork) with a time budget (AUTOBLOCK_READ_TIMEOUT seconds, default 30;
+//      0 reads in this process), a memory limit and OpenCASCADE's signal handling: a crash or an
+//      overrun there kills only the child (which also dies with its parent), and becomes an
+//      InputError here;
+//   2. from a stream that fails loudly: a malformed number or count, or reading past the end,
+//      throws instead of leaving OpenCASCADE spinning on a failed stream.
+// The child sends the shape back as BREP text that OpenCASCADE itself wrote; this process reads
+// that (step 2 only). An optional check (e.g. the face validation) runs in the child too, so a
+// crash inside it is contained as well; the caller repeats it on the shape it gets back.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include <TopoDS_Face.hxx>
@@ -9,23 +22,27 @@
 
 namespace autoblock {
 
-// Inputs:  path to a .brep, .step or .stp file.
-// Outputs: the shape it holds.
-// Throws InputError for a missing, unreadable, empty or garbage file, or an unknown extension.
-TopoDS_Shape read_shape_file(const std::string& path);
+// Inputs:  a shape just read; throws (InputError) when it is not acceptable.
+using ShapeCheck = std::function<void(const TopoDS_Shape&)>;
 
-// Inputs:  text, BREP text (as FreeCAD's exportBrepToString writes). Output: the shape.
-// Throws InputError when the text is empty or not BREP.
-TopoDS_Shape read_brep_text(const std::string& text);
+// Inputs:  path to a .brep, .step or .stp file; check, run on the shape in the reading process.
+// Outputs: the shape it holds.
+// Throws InputError for a missing, unreadable, empty, garbage or malformed file (also when the
+// reader crashes or overruns its time budget), or an unknown extension; check's errors pass through.
+TopoDS_Shape read_shape_file(const std::string& path, const ShapeCheck& check = {});
+
+// Inputs:  text, BREP text (as FreeCAD's exportBrepToString writes); check as above.
+// Output: the shape. Throws InputError when the text is empty, not BREP or malformed.
+TopoDS_Shape read_brep_text(const std::string& text, const ShapeCheck& check = {});
 
 // Inputs:  shape, what (a description of where it came from, for messages).
 // Outputs: its single face. Throws InputError naming what was found (a solid with 6 faces, a
 //          compound of 3 faces, no face at all, ...) unless the shape holds exactly one face.
 TopoDS_Face single_face(const TopoDS_Shape& shape, const std::string& what);
 
-// Inputs: path (.brep, .step or .stp), shape. Writes atomically: a temporary file renamed into
-// place, so a failure never leaves a half-written file. Throws InputError when the extension is
-// unknown or the file cannot be written.
+// Inputs: path (.brep, .step or .stp), shape. Writes atomically (atomic_file.h): a failure or a
+// kill never leaves a half-written file. Throws InputError when the extension is unknown or the
+// file cannot be written.
 void write_shape_file(const std::string& path, const TopoDS_Shape& shape);
 
 // Inputs: shape. Output: its BREP text.

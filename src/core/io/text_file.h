@@ -1,5 +1,5 @@
-// Writing text files atomically: a temporary file in the same folder renamed into place, so a
-// failure never leaves a half-written file.
+// Writing text files atomically (see atomic_file.h): a failure or a kill never leaves a
+// half-written file.
 #pragma once
 
 #include <string>

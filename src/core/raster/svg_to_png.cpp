@@ -8,12 +8,10 @@
 #include <QSvgRenderer>
 
 #include <cstdlib>
-#include <filesystem>
 #include <mutex>
-#include <random>
 #include <stdexcept>
 
-#include "core/common/error.h"
+#include "core/io/atomic_file.h"
 
 namespace autoblock {
 namespace {
@@ -39,12 +37,6 @@ void ensure_gui_application() {
 }  // namespace
 
 void write_png_from_svg(const std::string& svg, const std::string& path, int width) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::path target(path);
-  if (target.has_parent_path() && !fs::is_directory(target.parent_path(), ec)) {
-    throw InputError(path + ": the folder " + target.parent_path().string() + " does not exist");
-  }
   ensure_gui_application();
   QSvgRenderer renderer(QByteArray(svg.data(), static_cast<int>(svg.size())));
   if (!renderer.isValid()) throw std::runtime_error("the picture's SVG could not be rendered");
@@ -58,17 +50,9 @@ void write_png_from_svg(const std::string& svg, const std::string& path, int wid
     painter.setRenderHint(QPainter::TextAntialiasing);
     renderer.render(&painter);
   }
-  std::random_device random;
-  const std::string temporary = path + ".tmp" + std::to_string(random()) + ".png";
-  if (!image.save(QString::fromStdString(temporary), "PNG")) {
-    fs::remove(temporary, ec);
-    throw InputError(path + ": cannot write the file");
-  }
-  fs::rename(temporary, path, ec);
-  if (ec) {
-    fs::remove(temporary, ec);
-    throw InputError(path + ": cannot write the file");
-  }
+  write_file_atomically(path, [&](const std::string& temporary) {
+    return image.save(QString::fromStdString(temporary), "PNG");
+  });
 }
 
 }  // namespace autoblock

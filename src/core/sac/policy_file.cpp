@@ -2,9 +2,9 @@
 
 #include <cstring>
 #include <filesystem>
-#include <random>
 
 #include "core/common/error.h"
+#include "core/io/atomic_file.h"
 #include <torch/torch.h>
 
 namespace autoblock {
@@ -13,11 +13,6 @@ namespace fs = std::filesystem;
 
 void save_policy_file(const std::string& path, const LearningAgent& agent, const nlohmann::json& training,
                       bool checkpoint) {
-  std::error_code ec;
-  const fs::path target(path);
-  if (target.has_parent_path() && !fs::is_directory(target.parent_path(), ec)) {
-    throw InputError(path + ": the folder " + target.parent_path().string() + " does not exist");
-  }
   const nlohmann::json meta = {{"format", "autoblock-policy"},
                                {"version", kPolicyFormatVersion},
                                {"kind", checkpoint ? "checkpoint" : "policy"},
@@ -32,19 +27,14 @@ void save_policy_file(const std::string& path, const LearningAgent& agent, const
     std::memcpy(blob.data_ptr<uint8_t>(), bytes.data(), bytes.size());
     archive.write("replay_memory", blob);
   }
-  std::random_device random;
-  const std::string temporary = path + ".tmp" + std::to_string(random());
-  try {
-    archive.save_to(temporary);
-  } catch (const c10::Error&) {
-    fs::remove(temporary, ec);
-    throw InputError(path + ": cannot write the file");
-  }
-  fs::rename(temporary, path, ec);
-  if (ec) {
-    fs::remove(temporary, ec);
-    throw InputError(path + ": cannot write the file");
-  }
+  write_file_atomically(path, [&](const std::string& temporary) {
+    try {
+      archive.save_to(temporary);
+      return true;
+    } catch (const c10::Error&) {
+      return false;
+    }
+  });
 }
 
 LoadedPolicy load_policy_file(const std::string& path, bool checkpoint) {

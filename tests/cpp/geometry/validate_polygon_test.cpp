@@ -103,3 +103,11 @@ TEST_CASE("validate_rings rejects coordinates that are not finite", "[geometry][
   const double nan = std::numeric_limits<double>::quiet_NaN();
   REQUIRE_THROWS_AS(validate({{0, 0}, {1, 0}, {1, nan}, {0, 1}}), InputError);
 }
+
+TEST_CASE("validate_rings rejects coordinates so large that areas overflow", "[geometry][errors]") {
+  // Found by tests/fuzz/fuzz_polygon: a face at the scale 1e300 was accepted with a NaN area.
+  REQUIRE_THROWS_WITH(validate({{0, 0}, {1e300, 0}, {1e300, 1e300}, {0, 1e300}}), Contains("are not supported"));
+  REQUIRE_THROWS_WITH(validate({{1e150, 0}, {1e150 + 1e140, 0}, {1e150 + 1e140, 1e140}, {1e150, 1e140}}),
+                      Contains("are not supported"));
+  CHECK(polygon_area(validate({{0, 0}, {1e99, 0}, {1e99, 1e99}, {0, 1e99}})) == Approx(1e198));
+}
