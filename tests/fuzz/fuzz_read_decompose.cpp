@@ -22,6 +22,7 @@
 #include "core/env/decomposition.h"
 #include "core/env/occt_replay.h"
 #include "core/io/input_face.h"
+#include "core/io/face_selection.h"
 #include "core/io/shape_file.h"
 #include "core/mesh/conformal_merge.h"
 
@@ -38,7 +39,7 @@ autoblock::InputFace read_raw(const std::string& text) {
   } catch (const Standard_Failure&) {
     throw autoblock::InputError("unreadable");
   }
-  return autoblock::input_face_from_occt(autoblock::single_face(shape, "fuzz"), "fuzz");
+  return autoblock::input_face_from_occt(autoblock::select_face(shape, "fuzz", 0), "fuzz");
 }
 
 }  // namespace

@@ -45,20 +45,6 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-std::string type_name(TopAbs_ShapeEnum type) {
-  switch (type) {
-    case TopAbs_COMPOUND: return "compound";
-    case TopAbs_COMPSOLID: return "composite solid";
-    case TopAbs_SOLID: return "solid";
-    case TopAbs_SHELL: return "shell";
-    case TopAbs_FACE: return "face";
-    case TopAbs_WIRE: return "wire";
-    case TopAbs_EDGE: return "edge";
-    case TopAbs_VERTEX: return "vertex";
-    default: return "shape";
-  }
-}
-
 // OpenCASCADE's BREP reader does not check its stream: on a malformed number or count it reads on
 // from a failed stream, looping for ever or allocating without bound. A stream that throws on the
 // first failed extraction stops it there.
@@ -175,19 +161,6 @@ TopoDS_Shape read_brep_text(const std::string& text, const ShapeCheck& check) {
         return read_brep_or_throw(in, "the text is not readable BREP");
       },
       check, "the BREP text");
-}
-
-TopoDS_Face single_face(const TopoDS_Shape& shape, const std::string& what) {
-  if (shape.IsNull()) throw InputError(what + " holds no shape");
-  TopTools_IndexedMapOfShape faces;
-  TopExp::MapShapes(shape, TopAbs_FACE, faces);
-  if (faces.Extent() == 1) return TopoDS::Face(faces(1));
-  const std::string kind = type_name(shape.ShapeType());
-  if (faces.Extent() == 0) {
-    throw InputError(what + " holds a " + kind + " with no face; expected exactly one planar face");
-  }
-  throw InputError(what + " holds a " + kind + " with " + std::to_string(faces.Extent()) +
-                   " faces; expected exactly one planar face");
 }
 
 void write_shape_file(const std::string& path, const TopoDS_Shape& shape) {

@@ -35,10 +35,7 @@ TopoDS_Shape read_shape_file(const std::string& path, const ShapeCheck& check = 
 // Output: the shape. Throws InputError when the text is empty, not BREP or malformed.
 TopoDS_Shape read_brep_text(const std::string& text, const ShapeCheck& check = {});
 
-// Inputs:  shape, what (a description of where it came from, for messages).
-// Outputs: its single face. Throws InputError naming what was found (a solid with 6 faces, a
-//          compound of 3 faces, no face at all, ...) unless the shape holds exactly one face.
-TopoDS_Face single_face(const TopoDS_Shape& shape, const std::string& what);
+// Choosing a face of a shape: io/face_selection.h (select_face).
 
 // Inputs: path (.brep, .step or .stp), shape. Writes atomically (atomic_file.h): a failure or a
 // kill never leaves a half-written file. Throws InputError when the extension is unknown or the

@@ -6,6 +6,7 @@
 #include "core/common/error.h"
 #include "core/geometry/occt_face.h"
 #include "core/io/input_face.h"
+#include "core/io/face_selection.h"
 #include "core/io/shape_file.h"
 #include "support/bad_shapes.h"
 #include "support/test_shapes.h"
@@ -46,7 +47,7 @@ TEST_CASE("faces round-trip through BREP and STEP files and BREP text", "[io]") 
     CHECK(input.planar.polygon.holes.size() == 1);
     CHECK(input.grid.whole.area() == Approx(8.0));
   }
-  const InputFace from_text = input_face_from_occt(single_face(read_brep_text(write_brep_text(face)), "text"), "text");
+  const InputFace from_text = input_face_from_occt(select_face(read_brep_text(write_brep_text(face)), "text", 0), "text");
   CHECK(from_text.grid.whole.area() == Approx(8.0));
   REQUIRE_THROWS_WITH(read_brep_text("  \n"), Contains("empty"));
   REQUIRE_THROWS_WITH(read_brep_text("CASCADE nonsense"), Contains("not readable BREP"));
@@ -63,6 +64,6 @@ TEST_CASE("write_shape_file refuses unknown types and missing folders without le
 TEST_CASE("every class of bad shape gets its own clear error", "[io][errors]") {
   for (const test::BadShape& bad : test::bad_shapes()) {
     INFO(bad.name);
-    REQUIRE_THROWS_WITH(input_face_from_occt(single_face(bad.shape, "the file"), bad.name), Contains(bad.expected));
+    REQUIRE_THROWS_WITH(input_face_from_occt(select_face(bad.shape, "the file", 0), bad.name), Contains(bad.expected));
   }
 }
