@@ -1,0 +1,167 @@
+#include "core/region/region.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <functional>
+
+namespace autoblock {
+namespace {
+
+double cross(Point2 o, Point2 a, Point2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+
+bool lower_left(Point2 a, Point2 b) { return a.y < b.y || (a.y == b.y && a.x < b.x); }
+
+// Rotates the ring so that it starts at its lowest, then leftmost vertex.
+void rotate_to_start(Ring* ring) {
+  if (ring->empty()) return;
+  auto first = std::min_element(ring->begin(), ring->end(), lower_left);
+  std::rotate(ring->begin(), first, ring->end());
+}
+
+void hash_combine(size_t* seed, double value) {
+  if (value == 0.0) value = 0.0;  // -0.0 and 0.0 are the same coordinate
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &value, sizeof bits);
+  *seed ^= std::hash<std::uint64_t>()(bits) + 0x9e3779b97f4a7c15ull + (*seed << 6) + (*seed >> 2);
+}
+
+}  // namespace
+
+double snap_to_lattice(double value, double quantum) {
+  const double snapped = std::round(value / quantum) * quantum;
+  return snapped == 0.0 ? 0.0 : snapped;
+}
+
+// Merges consecutive equal points, the last with the first too.
+static void merge_equal_points(Ring* ring) {
+  Ring out;
+  out.reserve(ring->size());
+  for (const Point2& p : *ring) {
+    if (out.empty() || !(out.back() == p)) out.push_back(p);
+  }
+  while (out.size() > 1 && out.front() == out.back()) out.pop_back();
+  *ring = std::move(out);
+}
+
+Ring canonical_ring(const Ring& ring, double quantum) {
+  Ring out;
+  out.reserve(ring.size());
+  for (const Point2& p : ring) out.push_back({snap_to_lattice(p.x, quantum), snap_to_lattice(p.y, quantum)});
+  merge_equal_points(&out);
+  // Remove every vertex within one quantum of the line through its neighbours (a collinear vertex,
+  // or the tip of a spike of zero width), one at a time, until none is left.
+  bool changed = true;
+  while (changed && out.size() >= 3) {
+    changed = false;
+    for (size_t i = 0; i < out.size(); ++i) {
+      const Point2 p = out[(i + out.size() - 1) % out.size()], v = out[i], n = out[(i + 1) % out.size()];
+      const double len = std::hypot(n.x - p.x, n.y - p.y);
+      if (len == 0.0 || std::fabs(cross(p, v, n)) <= quantum * len) {
+        out.erase(out.begin() + static_cast<std::ptrdiff_t>(i));
+        merge_equal_points(&out);
+        changed = true;
+        break;
+      }
+    }
+  }
+  if (out.size() < 3 || signed_area(out) == 0.0) return {};
+  return out;
+}
+
+double interior_angle(const Ring& ring, size_t i) {
+  const size_t n = ring.size();
+  const Point2 p = ring[(i + n - 1) % n], v = ring[i], q = ring[(i + 1) % n];
+  // Angle from the direction to the next vertex, turning counter-clockwise, to the direction to the
+  // previous one: the region lies on the ring's left, so that is the interior angle.
+  const double a_next = std::atan2(q.y - v.y, q.x - v.x);
+  const double a_prev = std::atan2(p.y - v.y, p.x - v.x);
+  double angle = a_prev - a_next;
+  while (angle <= 0.0) angle += 2.0 * M_PI;
+  while (angle > 2.0 * M_PI) angle -= 2.0 * M_PI;
+  return angle;
+}
+
+Point2 ring_centroid(const Ring& ring) {
+  double a = 0.0, cx = 0.0, cy = 0.0;
+  const size_t n = ring.size();
+  // Relative to the first vertex, so that faces far from the origin keep their digits.
+  const Point2 o = ring.empty() ? Point2{} : ring[0];
+  for (size_t i = 0; i < n; ++i) {
+    const Point2 p{ring[i].x - o.x, ring[i].y - o.y};
+    const Point2 q{ring[(i + 1) % n].x - o.x, ring[(i + 1) % n].y - o.y};
+    const double c = p.x * q.y - q.x * p.y;
+    a += c;
+    cx += (p.x + q.x) * c;
+    cy += (p.y + q.y) * c;
+  }
+  if (a == 0.0) {
+    Point2 mean;
+    for (const Point2& p : ring) mean = {mean.x + p.x / n, mean.y + p.y / n};
+    return mean;
+  }
+  return {o.x + cx / (3.0 * a), o.y + cy / (3.0 * a)};
+}
+
+Region::Region(const Ring& outer, const std::vector<Ring>& holes, double quantum) : quantum_(quantum) {
+  outer_ = canonical_ring(outer, quantum);
+  if (outer_.empty()) return;
+  if (signed_area(outer_) < 0.0) std::reverse(outer_.begin(), outer_.end());
+  rotate_to_start(&outer_);
+  for (const Ring& hole : holes) {
+    Ring h = canonical_ring(hole, quantum);
+    if (h.empty()) continue;
+    if (signed_area(h) > 0.0) std::reverse(h.begin(), h.end());
+    rotate_to_start(&h);
+    holes_.push_back(std::move(h));
+  }
+  std::sort(holes_.begin(), holes_.end(), [](const Ring& a, const Ring& b) {
+    return lower_left(a[0], b[0]) || (a[0] == b[0] && a.size() < b.size());
+  });
+  // Area and centroid: outer minus holes.
+  const double outer_area = signed_area(outer_);
+  const Point2 c0 = ring_centroid(outer_);
+  double a = outer_area, mx = c0.x * outer_area, my = c0.y * outer_area;
+  for (const Ring& h : holes_) {
+    const double ha = signed_area(h);  // negative
+    const Point2 ch = ring_centroid(h);
+    a += ha;
+    mx += ch.x * ha;
+    my += ch.y * ha;
+  }
+  area_ = a;
+  centroid_ = a > 0.0 ? Point2{mx / a, my / a} : c0;
+  size_t seed = outer_.size();
+  for (int k = 0; k < loop_count(); ++k) {
+    for (const Point2& p : loop(k)) {
+      hash_combine(&seed, p.x);
+      hash_combine(&seed, p.y);
+    }
+    hash_combine(&seed, -1.0 - k);
+  }
+  hash_ = seed;
+}
+
+int Region::vertex_count() const {
+  int n = 0;
+  for (int k = 0; k < loop_count(); ++k) n += static_cast<int>(loop(k).size());
+  return n;
+}
+
+bool Region::is_convex() const {
+  if (!holes_.empty() || is_empty()) return false;
+  const size_t n = outer_.size();
+  for (size_t i = 0; i < n; ++i) {
+    if (cross(outer_[(i + n - 1) % n], outer_[i], outer_[(i + 1) % n]) < 0.0) return false;
+  }
+  return true;
+}
+
+bool Region::operator==(const Region& other) const {
+  return hash_ == other.hash_ && outer_.size() == other.outer_.size() && holes_.size() == other.holes_.size() &&
+         std::equal(outer_.begin(), outer_.end(), other.outer_.begin()) &&
+         std::equal(holes_.begin(), holes_.end(), other.holes_.begin(),
+                    [](const Ring& a, const Ring& b) { return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin()); });
+}
+
+}  // namespace autoblock

@@ -1,0 +1,54 @@
+// Cuts at any angle on a general region: the paper's full cut and the partial cut.
+//
+//   full     the whole line through `origin` along `direction`, clipped to the region: the region
+//            is cut along every segment of the line that runs through its interior;
+//   partial  the ray from `origin` along `direction`, ending at the first boundary it meets (a
+//            T-junction there): the region is cut along that one segment.
+// `origin` is a point on the region's boundary (a vertex, or a point on an edge); `direction` is any
+// non-zero vector, so the angle is a real number. The split is computed exactly (CGAL's exact
+// kernel, an arrangement of the boundary and the cut) and the pieces are rounded to the region's
+// lattice (see region.h). A cut that separates nothing (it misses the interior, runs along the
+// boundary, or only joins the outer boundary to a hole, leaving a slit) changes nothing: the result
+// is the region itself, N = 1.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/region/region.h"
+
+namespace autoblock {
+
+enum class CutKind { Full = 0, Partial = 1 };
+
+// "full" or "partial".
+std::string cut_kind_name(CutKind kind);
+
+struct RegionCut {
+  CutKind kind = CutKind::Full;
+  Point2 origin;
+  Point2 direction{1.0, 0.0};
+};
+
+// One straight segment a cut made through the interior.
+struct Chord {
+  Point2 a, b;
+};
+
+struct CutOutcome {
+  std::vector<Region> pieces;  // N >= 1 pieces, ordered by their lowest, then leftmost vertex
+  std::vector<Chord> chords;   // the segments cut (empty when N = 1)
+};
+
+// Inputs:  region (not empty); cut, its origin on or near the region's boundary.
+// Outputs: the pieces and the chords, as above.
+CutOutcome cut_region(const Region& region, const RegionCut& cut);
+
+// Inputs:  region; origin on its boundary; direction.
+// Outputs: true with *hit set when the ray from origin along direction first runs into the
+//          interior and then meets the boundary at *hit (the partial cut's end point, rounded to
+//          the lattice); false when the ray leaves at once or runs along the boundary.
+bool partial_cut_end(const Region& region, Point2 origin, Point2 direction, Point2* hit);
+
+}  // namespace autoblock

@@ -1,0 +1,131 @@
+#include "core/region/region_cut.h"
+
+#include <cmath>
+#include <random>
+
+#include <catch2/catch.hpp>
+
+using autoblock::CutKind;
+using autoblock::Point2;
+using autoblock::Region;
+using autoblock::RegionCut;
+using autoblock::Ring;
+
+namespace {
+constexpr double kQ = 1e-7;
+
+double perimeter(const Region& region) {
+  double length = 0.0;
+  for (int k = 0; k < region.loop_count(); ++k) {
+    const Ring& ring = region.loop(k);
+    for (size_t i = 0; i < ring.size(); ++i) {
+      const Point2 a = ring[i], b = ring[(i + 1) % ring.size()];
+      length += std::hypot(b.x - a.x, b.y - a.y);
+    }
+  }
+  return length;
+}
+
+double total_area(const std::vector<Region>& pieces) {
+  double a = 0.0;
+  for (const Region& p : pieces) a += p.area();
+  return a;
+}
+}  // namespace
+
+TEST_CASE("a full cut along the diagonal splits a square into two triangles", "[region][cut]") {
+  const Region square(Ring{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}, kQ);
+  const auto outcome = autoblock::cut_region(square, {CutKind::Full, {0, 0}, {1, 1}});
+  REQUIRE(outcome.pieces.size() == 2);
+  for (const Region& piece : outcome.pieces) {
+    CHECK(piece.outer().size() == 3);
+    CHECK(piece.area() == Approx(0.5));
+  }
+  REQUIRE(outcome.chords.size() == 1);
+}
+
+TEST_CASE("cuts that separate nothing change nothing", "[region][cut]") {
+  const Region square(Ring{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}, kQ);
+  // Along an edge.
+  CHECK(autoblock::cut_region(square, {CutKind::Full, {0, 0}, {1, 0}}).pieces.size() == 1);
+  // A partial cut pointing out of the square.
+  CHECK(autoblock::cut_region(square, {CutKind::Partial, {0, 0}, {-1, -0.5}}).pieces.size() == 1);
+  // A partial cut from the outer boundary to a hole leaves a slit: nothing separated.
+  const Region holed(Ring{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {Ring{{4, 4}, {6, 4}, {6, 6}, {4, 6}}}, kQ);
+  const auto slit = autoblock::cut_region(holed, {CutKind::Partial, {5, 0}, {0, 1}});
+  REQUIRE(slit.pieces.size() == 1);
+  CHECK(slit.pieces[0] == holed);
+  // The full line through the hole separates the part in two, and the hole is gone.
+  const auto through = autoblock::cut_region(holed, {CutKind::Full, {5, 0}, {0, 1}});
+  REQUIRE(through.pieces.size() == 2);
+  CHECK(through.pieces[0].holes().empty());
+  CHECK(total_area(through.pieces) == Approx(96.0));
+  CHECK(through.chords.size() == 2);
+}
+
+TEST_CASE("a partial cut ends at the first boundary it meets (a T-junction)", "[region][cut]") {
+  // An L; the ray from the re-entrant corner (1, 1) along -x meets the left edge at (0, 1).
+  const Region l(Ring{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, {}, kQ);
+  Point2 hit;
+  REQUIRE(autoblock::partial_cut_end(l, {1, 1}, {-1, 0}, &hit));
+  CHECK(hit == Point2{0, 1});
+  const auto outcome = autoblock::cut_region(l, {CutKind::Partial, {1, 1}, {-1, 0}});
+  REQUIRE(outcome.pieces.size() == 2);
+  CHECK(outcome.pieces[0].area() == Approx(2.0));  // the lower rectangle
+  CHECK(outcome.pieces[1].area() == Approx(1.0));
+  CHECK(outcome.pieces[0].outer().size() == 4);  // (1, 1) and the T are merged away as collinear
+  // The full line through (1, 1) along x cuts the L the same way here: the line leaves through (2, 1).
+  CHECK(autoblock::cut_region(l, {CutKind::Full, {1, 1}, {1, 0}}).pieces.size() == 2);
+}
+
+TEST_CASE("a full cut at an angle crosses several times: every interior segment is cut", "[region][cut]") {
+  // A U: the horizontal line y = 2 crosses both arms.
+  const Region u(Ring{{0, 0}, {5, 0}, {5, 3}, {4, 3}, {4, 1}, {1, 1}, {1, 3}, {0, 3}}, {}, kQ);
+  const auto outcome = autoblock::cut_region(u, {CutKind::Full, {0, 2}, {1, 0}});
+  CHECK(outcome.pieces.size() == 3);
+  CHECK(outcome.chords.size() == 2);
+  CHECK(total_area(outcome.pieces) == Approx(u.area()));
+  // A slanted line through the corner (1, 1) at 30 degrees.
+  const auto slanted = autoblock::cut_region(u, {CutKind::Full, {1, 1}, {std::cos(M_PI / 6), std::sin(M_PI / 6)}});
+  CHECK(slanted.pieces.size() >= 2);
+  CHECK(total_area(slanted.pieces) == Approx(u.area()).epsilon(1e-9));
+}
+
+TEST_CASE("random cuts of random polygons conserve area and give valid canonical pieces", "[region][cut]") {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int cut_count = 0;
+  for (int shape = 0; shape < 60; ++shape) {
+    // A star-shaped polygon around the origin with 5-14 vertices, and sometimes a hole.
+    const int n = 5 + static_cast<int>(unit(rng) * 10);
+    Ring outer;
+    for (int i = 0; i < n; ++i) {
+      const double t = 2 * M_PI * (i + 0.8 * unit(rng)) / n, r = 4 + 6 * unit(rng);
+      outer.push_back({r * std::cos(t), r * std::sin(t)});
+    }
+    std::vector<Ring> holes;
+    if (shape % 3 == 0) holes.push_back(Ring{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}});
+    std::vector<Region> parts{Region(outer, holes, kQ)};
+    const double area = parts[0].area();
+    for (int step = 0; step < 6 && !parts.empty(); ++step) {
+      const Region part = parts.back();
+      parts.pop_back();
+      const Ring& loop = part.loop(static_cast<int>(unit(rng) * part.loop_count()) % part.loop_count());
+      const Point2 origin = loop[static_cast<size_t>(unit(rng) * loop.size()) % loop.size()];
+      const double angle = unit(rng) * 2 * M_PI;
+      const RegionCut cut{unit(rng) < 0.5 ? CutKind::Full : CutKind::Partial, origin, {std::cos(angle), std::sin(angle)}};
+      const auto outcome = autoblock::cut_region(part, cut);
+      // Rounding the new points to the lattice moves each by at most q / sqrt(2): the area changes by
+      // at most q times the length cut, which is less than the part's perimeter.
+      CHECK(std::fabs(total_area(outcome.pieces) - part.area()) <= kQ * perimeter(part));
+      for (const Region& piece : outcome.pieces) {
+        CHECK(piece.area() > 0.0);
+        CHECK(autoblock::signed_area(piece.outer()) > 0.0);
+        parts.insert(parts.begin(), piece);
+      }
+      ++cut_count;
+    }
+    CHECK(std::fabs(total_area(parts) - area) <= 6 * kQ * perimeter(Region(outer, holes, kQ)));
+  }
+  CHECK(cut_count > 300);
+}
