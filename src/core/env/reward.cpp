@@ -14,25 +14,32 @@ RewardPreset reward_preset_by_name(const std::string& name) {
   throw InputError("unknown reward preset '" + name + "' (expected paper or mesh)");
 }
 
-double paper_reward(const std::vector<Part>& pieces, double face_size) {
-  const double n = static_cast<double>(pieces.size());
-  const double scale = 1.0 / (face_size * face_size);
+double equation_one(const std::vector<double>& areas, const std::vector<double>& aspect_ratios, int blocks) {
+  const double n = static_cast<double>(areas.size());
   double sum_r2 = 0.0, sum_a = 0.0;
-  int rectangles = 0;
-  for (const Part& piece : pieces) {
-    const double r = piece.bbox().aspect_ratio();
-    sum_r2 += r * r;
-    sum_a += piece.area() * scale;
-    if (piece.is_rectangle()) ++rectangles;
+  for (size_t i = 0; i < areas.size(); ++i) {
+    sum_r2 += aspect_ratios[i] * aspect_ratios[i];
+    sum_a += areas[i];
   }
   const double mean_a = sum_a / n;
   double spread = 0.0;
+  for (double a : areas) spread += (a - mean_a) * (a - mean_a);
+  const double penalty = areas.size() == 1 ? 1.0 : 0.0;
+  return 3.0 * (std::sqrt(n / sum_r2) - std::sqrt(spread / sum_a)) + 10.0 * blocks / n - 5.0 * penalty - 1.0;
+}
+
+double paper_reward(const std::vector<Part>& pieces, double face_size) {
+  const double scale = 1.0 / (face_size * face_size);
+  std::vector<double> areas, ratios;
+  areas.reserve(pieces.size());
+  ratios.reserve(pieces.size());
+  int rectangles = 0;
   for (const Part& piece : pieces) {
-    const double d = piece.area() * scale - mean_a;
-    spread += d * d;
+    areas.push_back(piece.area() * scale);
+    ratios.push_back(piece.bbox().aspect_ratio());
+    if (piece.is_rectangle()) ++rectangles;
   }
-  const double penalty = pieces.size() == 1 ? 1.0 : 0.0;
-  return 3.0 * (std::sqrt(n / sum_r2) - std::sqrt(spread / sum_a)) + 10.0 * rectangles / n - 5.0 * penalty - 1.0;
+  return equation_one(areas, ratios, rectangles);
 }
 
 double mesh_reward(const std::vector<Part>& pieces) {

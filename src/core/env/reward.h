@@ -25,6 +25,11 @@ std::string reward_preset_name(RewardPreset preset);
 // Inputs: name, "paper" or "mesh". Output: the preset. Throws InputError for other names.
 RewardPreset reward_preset_by_name(const std::string& name);
 
+// Inputs:  the N >= 1 pieces' areas (already scaled by the face's size), their aspect ratios R_i,
+//          and how many of them are finished blocks (N_q).
+// Outputs: Eq. (1). The grid engine and the general engine (region/region_reward.h) both use it.
+double equation_one(const std::vector<double>& areas, const std::vector<double>& aspect_ratios, int blocks);
+
 // Inputs:  pieces, what the cut left (the part itself when N = 1); face_size, the longer side of
 //          the input face's bounding box.
 // Outputs: Eq. (1).

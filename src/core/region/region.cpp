@@ -10,6 +10,14 @@ namespace {
 
 double cross(Point2 o, Point2 a, Point2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
 
+// The distance from point x to the segment a-b.
+double segment_distance(Point2 x, Point2 a, Point2 b) {
+  const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
+  double t = len2 > 0.0 ? ((x.x - a.x) * dx + (x.y - a.y) * dy) / len2 : 0.0;
+  t = std::max(0.0, std::min(1.0, t));
+  return std::hypot(x.x - (a.x + t * dx), x.y - (a.y + t * dy));
+}
+
 bool lower_left(Point2 a, Point2 b) { return a.y < b.y || (a.y == b.y && a.x < b.x); }
 
 // Rotates the ring so that it starts at its lowest, then leftmost vertex.
@@ -49,15 +57,18 @@ Ring canonical_ring(const Ring& ring, double quantum) {
   out.reserve(ring.size());
   for (const Point2& p : ring) out.push_back({snap_to_lattice(p.x, quantum), snap_to_lattice(p.y, quantum)});
   merge_equal_points(&out);
-  // Remove every vertex within one quantum of the line through its neighbours (a collinear vertex,
-  // or the tip of a spike of zero width), one at a time, until none is left.
+  // Remove every vertex v (neighbours p and n) within one quantum of the line through p and n (a
+  // collinear vertex, or the tip of a spike of zero width), and every tip of a wedge thinner than one
+  // quantum (p within one quantum of the edge v-n, or n of the edge v-p), one at a time, until none
+  // is left.
   bool changed = true;
   while (changed && out.size() >= 3) {
     changed = false;
     for (size_t i = 0; i < out.size(); ++i) {
       const Point2 p = out[(i + out.size() - 1) % out.size()], v = out[i], n = out[(i + 1) % out.size()];
       const double len = std::hypot(n.x - p.x, n.y - p.y);
-      if (len == 0.0 || std::fabs(cross(p, v, n)) <= quantum * len) {
+      if (len == 0.0 || std::fabs(cross(p, v, n)) <= quantum * len || segment_distance(p, v, n) <= quantum ||
+          segment_distance(n, v, p) <= quantum) {
         out.erase(out.begin() + static_cast<std::ptrdiff_t>(i));
         merge_equal_points(&out);
         changed = true;

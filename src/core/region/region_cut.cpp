@@ -83,11 +83,8 @@ KPoint far_point(const Region& region, Point2 origin, Point2 direction, double s
   return KPoint(origin.x + sign * direction.x / length * reach, origin.y + sign * direction.y / length * reach);
 }
 
-}  // namespace
-
-std::string cut_kind_name(CutKind kind) { return kind == CutKind::Full ? "full" : "partial"; }
-
-bool partial_cut_end(const Region& region, Point2 origin, Point2 direction, Point2* hit) {
+// The exact end of the partial cut (see partial_cut_end), or false.
+bool exact_partial_end(const Region& region, Point2 origin, Point2 direction, KPoint* hit) {
   if (!(std::hypot(direction.x, direction.y) > 0.0)) return false;
   const KPoint o = exact(origin);
   const Kernel::Ray_2 ray(o, far_point(region, origin, direction, 1.0));
@@ -124,7 +121,18 @@ bool partial_cut_end(const Region& region, Point2 origin, Point2 direction, Poin
     if (side == CGAL::ON_BOUNDARY) return false;
     if ((k == 0) != (side == CGAL::ON_BOUNDED_SIDE)) return false;
   }
-  *hit = rounded(best, region.quantum());
+  *hit = best;
+  return true;
+}
+
+}  // namespace
+
+std::string cut_kind_name(CutKind kind) { return kind == CutKind::Full ? "full" : "partial"; }
+
+bool partial_cut_end(const Region& region, Point2 origin, Point2 direction, Point2* hit) {
+  KPoint end;
+  if (!exact_partial_end(region, origin, direction, &end)) return false;
+  *hit = rounded(end, region.quantum());
   return true;
 }
 
@@ -141,10 +149,10 @@ CutOutcome cut_region(const Region& region, const RegionCut& cut) {
     curves.emplace_back(KSegment(o, far_point(region, cut.origin, cut.direction, 1.0)), 0);
     curves.emplace_back(KSegment(far_point(region, cut.origin, cut.direction, -1.0), o), 0);
   } else {
-    Point2 end;
-    if (!partial_cut_end(region, cut.origin, cut.direction, &end)) return unchanged;
-    // The chord ends at the exact boundary point, not at its rounding: recompute it exactly.
-    curves.emplace_back(KSegment(o, exact(end)), 0);
+    // The chord ends at the exact boundary point, not at its rounding (which may miss the edge).
+    KPoint end;
+    if (!exact_partial_end(region, cut.origin, cut.direction, &end)) return unchanged;
+    curves.emplace_back(KSegment(o, end), 0);
   }
   Arrangement arrangement;
   CGAL::insert(arrangement, curves.begin(), curves.end());

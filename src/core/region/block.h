@@ -1,0 +1,59 @@
+// Finished parts of the general engine: blocks, and templates for parts no cut can finish.
+//
+// A vertex whose interior angle lies within `flat_tolerance` of 180 degrees is a side vertex (a
+// block's side may bend there, as at a T-junction); every other vertex is a corner. A *block* is a
+// part without holes, with no reflex vertex, and with exactly four corners whose angles lie in
+// [min_corner, max_corner]. A rectangle is a block under any rules. A convex part that is not a
+// block (a triangle, a pentagon, a quadrilateral with a corner out of range) may be finished with
+// the *midpoint template*: its n vertices, the midpoints of its n edges and its centroid make n
+// quadrilaterals (a triangle: three quads around an interior point), whose centre node is irregular
+// unless n = 4. The template's cost shows in the rewards (reward on regions) and in the mesh.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "core/region/region.h"
+
+namespace autoblock {
+
+struct BlockRules {
+  double min_corner_degrees = 30.0;
+  double max_corner_degrees = 150.0;
+  double flat_tolerance_degrees = 20.0;
+};
+
+// Inputs:  region; rules.
+// Outputs: the indices (into region.outer(), counter-clockwise) of the block's four corners, or
+//          nothing when the region is not a block.
+std::optional<std::array<int, 4>> block_corners(const Region& region, const BlockRules& rules = {});
+
+inline bool is_block(const Region& region, const BlockRules& rules = {}) {
+  return block_corners(region, rules).has_value();
+}
+
+// Inputs:  region; rules. Output: true when the midpoint template can finish it (convex, no holes).
+bool template_applies(const Region& region);
+
+// Inputs:  region, convex (template_applies).
+// Outputs: the template's quadrilaterals, each counter-clockwise starting at the region's vertex.
+std::vector<std::array<Point2, 4>> template_quads(const Region& region);
+
+// The minimum-area rectangle enclosing a region (its outer loop's convex hull; rotating calipers).
+struct OrientedRectangle {
+  Point2 center;
+  Point2 axis{1.0, 0.0};  // unit vector along the first side
+  double width = 0.0;     // along axis
+  double height = 0.0;    // across it
+  double longer_side() const { return width > height ? width : height; }
+  double shorter_side() const { return width > height ? height : width; }
+  double aspect_ratio() const { return longer_side() / shorter_side(); }
+};
+
+// Inputs: region (not empty). Output: its minimum-area enclosing rectangle. Ties between equal
+//         areas go to the rectangle whose axis is closest to the X axis, so an axis-aligned
+//         rectangle is its own bounding box.
+OrientedRectangle min_area_rectangle(const Region& region);
+
+}  // namespace autoblock

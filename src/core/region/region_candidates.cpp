@@ -1,0 +1,92 @@
+#include "core/region/region_candidates.h"
+
+#include <cmath>
+
+namespace autoblock {
+namespace {
+
+Point2 unit(Point2 d) {
+  const double len = std::hypot(d.x, d.y);
+  return {d.x / len, d.y / len};
+}
+
+double cross(Point2 a, Point2 b) { return a.x * b.y - a.y * b.x; }
+double dot(Point2 a, Point2 b) { return a.x * b.x + a.y * b.y; }
+
+// True when the direction d at vertex v points strictly into the region, whose boundary arrives
+// from p and leaves towards n with the region on the left.
+bool points_inside(Point2 p, Point2 v, Point2 n, Point2 d) {
+  const Point2 in{p.x - v.x, p.y - v.y}, out{n.x - v.x, n.y - v.y};
+  // Interior: the directions swept counter-clockwise from `out` to `in`.
+  const double a_out = std::atan2(out.y, out.x), a_in = std::atan2(in.y, in.x), a_d = std::atan2(d.y, d.x);
+  auto ccw = [](double from, double to) {
+    double t = to - from;
+    while (t < 0.0) t += 2.0 * M_PI;
+    while (t >= 2.0 * M_PI) t -= 2.0 * M_PI;
+    return t;
+  };
+  const double span = ccw(a_out, a_in), at = ccw(a_out, a_d);
+  return at > 1e-12 && at < span - 1e-12;
+}
+
+}  // namespace
+
+std::vector<RegionAction> region_candidates(const Region& part) {
+  std::vector<RegionAction> actions;
+  const OrientedRectangle frame = min_area_rectangle(part);
+  const Point2 ax = frame.axis, ay{-frame.axis.y, frame.axis.x};
+  for (int k = 0; k < part.loop_count(); ++k) {
+    const Ring& ring = part.loop(k);
+    const size_t m = ring.size();
+    for (size_t i = 0; i < m; ++i) {
+      const Point2 p = ring[(i + m - 1) % m], v = ring[i], n = ring[(i + 1) % m];
+      const Point2 e_in = unit({v.x - p.x, v.y - p.y}), e_out = unit({n.x - v.x, n.y - v.y});
+      const Point2 to_p{-e_in.x, -e_in.y};
+      Point2 bisector = unit({e_out.x + to_p.x, e_out.y + to_p.y});
+      if (!(std::hypot(bisector.x, bisector.y) > 0.5)) bisector = {-e_out.y, e_out.x};  // a flat vertex
+      if (!points_inside(p, v, n, bisector)) bisector = {-bisector.x, -bisector.y};
+      const std::vector<Point2> directions{e_in,  {-e_out.x, -e_out.y}, bisector, {-e_in.y, e_in.x}, {-e_out.y, e_out.x},
+                                           ax,    {-ax.x, -ax.y},       ay,       {-ay.x, -ay.y},    {1, 0},
+                                           {-1, 0}, {0, 1},             {0, -1}};
+      std::vector<Point2> partial, full;
+      for (const Point2& d : directions) {
+        bool seen = false;
+        for (const Point2& q : partial) seen = seen || (std::fabs(cross(q, d)) < 1e-9 && dot(q, d) > 0.0);
+        if (!seen && points_inside(p, v, n, d)) partial.push_back(d);
+        bool seen_line = false;
+        for (const Point2& q : full) seen_line = seen_line || std::fabs(cross(q, d)) < 1e-9;
+        if (!seen_line) full.push_back(d);
+      }
+      for (const Point2& d : partial) actions.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, d}});
+      for (const Point2& d : full) actions.push_back({RegionAction::Kind::Cut, {CutKind::Full, v, d}});
+    }
+  }
+  if (template_applies(part) && !is_block(part)) actions.push_back({RegionAction::Kind::Template, {}});
+  return actions;
+}
+
+RegionAction progress_action(const Region& part, const BlockRules& rules) {
+  if (!part.holes().empty()) {
+    const Ring& hole = part.holes()[0];
+    return {RegionAction::Kind::Cut, {CutKind::Full, hole[0], {hole[1].x - hole[0].x, hole[1].y - hole[0].y}}};
+  }
+  const Ring& ring = part.outer();
+  const size_t m = ring.size();
+  for (size_t i = 0; i < m; ++i) {
+    if (interior_angle(ring, i) > M_PI) {
+      const Point2 p = ring[(i + m - 1) % m], v = ring[i];
+      return {RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - p.x, v.y - p.y}}};
+    }
+  }
+  std::vector<size_t> corners;
+  for (size_t i = 0; i < m; ++i) {
+    if (std::fabs(interior_angle(ring, i) - M_PI) > rules.flat_tolerance_degrees * M_PI / 180.0) corners.push_back(i);
+  }
+  if (corners.size() >= 5) {
+    const Point2 a = ring[corners[0]], b = ring[corners[corners.size() / 2]];
+    return {RegionAction::Kind::Cut, {CutKind::Partial, a, {b.x - a.x, b.y - a.y}}};
+  }
+  return {RegionAction::Kind::Template, {}};
+}
+
+}  // namespace autoblock

@@ -1,0 +1,79 @@
+#include "core/region/region_policy.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "core/region/region_candidates.h"
+#include "core/region/region_reward.h"
+
+namespace autoblock {
+
+std::vector<ScoredAction> score_candidates(const Region& part, double face_size, const RegionEpisodeOptions& options) {
+  std::vector<ScoredAction> scored;
+  for (const RegionAction& action : region_candidates(part)) {
+    ScoredAction s{action, {}, 0.0};
+    if (action.kind == RegionAction::Kind::Template) {
+      s.outcome = {{part}, {}};
+      s.reward = region_template_reward(options.reward, part, face_size);
+    } else {
+      s.outcome = cut_region(part, action.cut);
+      s.reward = region_cut_reward(options.reward, s.outcome.pieces, face_size, options.rules);
+    }
+    scored.push_back(std::move(s));
+  }
+  return scored;
+}
+
+RegionAction RegionGreedyPolicy::choose(const RegionEpisode& episode) {
+  const auto scored = score_candidates(episode.current_part(), episode.face_size(), episode.options());
+  const ScoredAction* best = nullptr;
+  for (const ScoredAction& s : scored) {
+    if (!best || s.reward > best->reward) best = &s;
+  }
+  return best ? best->action : progress_action(episode.current_part(), episode.options().rules);
+}
+
+RegionAction RegionRandomPolicy::choose(const RegionEpisode& episode) {
+  // Candidates in random order; the first that changes something is the choice.
+  std::vector<RegionAction> candidates = region_candidates(episode.current_part());
+  std::shuffle(candidates.begin(), candidates.end(), rng_);
+  for (const RegionAction& action : candidates) {
+    if (action.kind == RegionAction::Kind::Template || cut_region(episode.current_part(), action.cut).pieces.size() >= 2) {
+      return action;
+    }
+  }
+  return progress_action(episode.current_part(), episode.options().rules);
+}
+
+RegionDecomposition decompose_region(const Region& face, RegionPolicy& policy, RegionEpisodeOptions options) {
+  const auto start = std::chrono::steady_clock::now();
+  RegionEpisode episode(face, options);
+  int policy_steps = 0;
+  while (episode.running()) {
+    episode.step(policy.choose(episode));
+    ++policy_steps;
+  }
+  // Past the step cap: finish every part left with actions that surely make progress (each removes
+  // a hole, a reflex vertex or a corner, so a bounded number of steps is enough).
+  if (episode.status() == EpisodeStatus::Truncated) {
+    int extra = 0;
+    for (const RegionPiece& piece : episode.queue()) extra += 4 * piece.region.vertex_count() + 8;
+    episode.extend_steps(extra);
+    while (episode.running()) episode.step(progress_action(episode.current_part(), options.rules));
+  }
+  RegionDecomposition result;
+  result.policy = policy.name();
+  result.reward = options.reward;
+  result.finished = episode.finished();
+  result.cuts = episode.cuts();
+  result.total_return = episode.total_return();
+  result.status = episode.status();
+  for (const RegionPiece& piece : episode.queue()) result.unfinished.push_back(piece.region);
+  result.policy_steps = policy_steps;
+  for (const FinishedRegion& f : result.finished) (f.is_template ? result.templates : result.blocks) += 1;
+  result.time_capped = policy.time_capped();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace autoblock

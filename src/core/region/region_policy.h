@@ -1,0 +1,78 @@
+// Policies of the general engine, and the run of one over a face.
+//
+//   greedy  the candidate (region_candidates.h) with the highest immediate reward; ties go to the
+//           first listed;
+//   random  uniform over the candidates that change something (a cut with N >= 2, or the template);
+//   search  a lookahead over the candidates with memoisation on parts (region_search.h).
+// decompose_region runs a policy up to the step cap and then finishes every part left with
+// progress_action (region_candidates.h), which always terminates: every face ends in blocks
+// (or templates), whatever the policy.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/region/region_episode.h"
+
+namespace autoblock {
+
+class RegionPolicy {
+ public:
+  virtual ~RegionPolicy() = default;
+  virtual std::string name() const = 0;
+  // Inputs: episode, running. Output: an action on episode.current_part().
+  virtual RegionAction choose(const RegionEpisode& episode) = 0;
+  // True when the policy ran out of its time budget and finished with a fallback.
+  virtual bool time_capped() const { return false; }
+};
+
+class RegionGreedyPolicy : public RegionPolicy {
+ public:
+  std::string name() const override { return "greedy"; }
+  RegionAction choose(const RegionEpisode& episode) override;
+};
+
+class RegionRandomPolicy : public RegionPolicy {
+ public:
+  explicit RegionRandomPolicy(std::uint64_t seed) : rng_(seed) {}
+  std::string name() const override { return "random"; }
+  RegionAction choose(const RegionEpisode& episode) override;
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+// The best candidate by immediate reward, with its outcome (shared by greedy and search).
+struct ScoredAction {
+  RegionAction action;
+  CutOutcome outcome;
+  double reward = 0.0;
+};
+
+// Inputs:  part; face_size; reward preset and rules (as the episode's).
+// Outputs: every candidate of region_candidates(part) with its outcome and reward, in order.
+std::vector<ScoredAction> score_candidates(const Region& part, double face_size, const RegionEpisodeOptions& options);
+
+struct RegionDecomposition {
+  std::string policy;
+  RewardPreset reward = RewardPreset::Paper;
+  std::vector<FinishedRegion> finished;  // blocks and templates, in the order set aside
+  std::vector<RegionCutRecord> cuts;
+  std::vector<Region> unfinished;        // parts left when not complete
+  double total_return = 0.0;
+  EpisodeStatus status = EpisodeStatus::Running;
+  int policy_steps = 0;         // actions the policy chose; the rest came from progress_action
+  int blocks = 0, templates = 0;
+  double seconds = 0.0;
+  bool time_capped = false;
+  bool complete() const { return status == EpisodeStatus::Complete; }
+};
+
+// Inputs:  face (a region, not empty); policy; options.
+// Outputs: the decomposition, complete unless an action failed to make progress on some part.
+RegionDecomposition decompose_region(const Region& face, RegionPolicy& policy, RegionEpisodeOptions options = {});
+
+}  // namespace autoblock

@@ -1,0 +1,60 @@
+#include "core/region/region_reward.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace autoblock {
+namespace {
+
+double quad_area(const std::array<Point2, 4>& q) {
+  double a = 0.0;
+  for (size_t i = 0; i < 4; ++i) a += q[i].x * q[(i + 1) % 4].y - q[(i + 1) % 4].x * q[i].y;
+  return 0.5 * a;
+}
+
+}  // namespace
+
+double block_scaled_jacobian(const Region& region, const std::array<int, 4>& corners) {
+  double j = 1.0;
+  for (int c : corners) j = std::min(j, std::sin(interior_angle(region.outer(), static_cast<size_t>(c))));
+  return j;
+}
+
+double region_cut_reward(RewardPreset preset, const std::vector<Region>& pieces, double face_size,
+                         const BlockRules& rules) {
+  if (preset == RewardPreset::Mesh) {
+    if (pieces.size() == 1) return -3.0;
+    double cost = static_cast<double>(pieces.size() - 1);
+    for (const Region& piece : pieces) {
+      const auto corners = block_corners(piece, rules);
+      if (!corners) continue;
+      cost += kMeshThinWeight * std::log(min_area_rectangle(piece).aspect_ratio());
+      cost += kMeshShapeWeight * (1.0 - block_scaled_jacobian(piece, *corners));
+    }
+    return -cost;
+  }
+  const double scale = 1.0 / (face_size * face_size);
+  std::vector<double> areas, ratios;
+  int blocks = 0;
+  for (const Region& piece : pieces) {
+    areas.push_back(piece.area() * scale);
+    ratios.push_back(min_area_rectangle(piece).aspect_ratio());
+    if (is_block(piece, rules)) ++blocks;
+  }
+  return equation_one(areas, ratios, blocks);
+}
+
+double region_template_reward(RewardPreset preset, const Region& part, double face_size) {
+  const auto quads = template_quads(part);
+  if (preset == RewardPreset::Mesh) return -static_cast<double>(quads.size() - 1) - kTemplatePenalty;
+  const double scale = 1.0 / (face_size * face_size);
+  std::vector<double> areas, ratios;
+  for (const auto& q : quads) {
+    areas.push_back(quad_area(q) * scale);
+    const Region r(Ring(q.begin(), q.end()), {}, part.quantum());
+    ratios.push_back(r.is_empty() ? 1.0 : min_area_rectangle(r).aspect_ratio());
+  }
+  return equation_one(areas, ratios, static_cast<int>(quads.size())) - kTemplatePenalty;
+}
+
+}  // namespace autoblock

@@ -1,0 +1,122 @@
+#include "core/region/region_policy.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cmath>
+#include <random>
+
+#include <catch2/catch.hpp>
+
+#include "core/data/general_generator.h"
+#include "core/geometry/tolerance.h"
+#include "core/region/region_candidates.h"
+
+using namespace autoblock;
+
+namespace {
+
+Region face_region(const GeneralShape& shape) {
+  const Box box = ring_bbox(shape.outer);
+  return Region(shape.outer, shape.holes, tolerance_for_size(box.longer_side()));
+}
+
+bool inside(const Region& r, Point2 p) {
+  if (!point_in_ring(p, r.outer())) return false;
+  for (const Ring& h : r.holes()) {
+    if (point_in_ring(p, h)) return false;
+  }
+  return true;
+}
+
+// Every finished part is a block (four corners within the rules) or a convex template; their areas
+// add up to the face's; sampled points of the face lie in exactly one part (no overlap, no gap).
+std::string describe(const Region& r) {
+  std::string s;
+  for (int k = 0; k < r.loop_count(); ++k) {
+    s += k == 0 ? "outer:" : " hole:";
+    for (const Point2& p : r.loop(k)) {
+      char buffer[80];
+      std::snprintf(buffer, sizeof buffer, " (%.17g, %.17g)", p.x, p.y);
+      s += buffer;
+    }
+  }
+  return s;
+}
+
+void check_decomposition(const Region& face, const RegionDecomposition& d, std::mt19937_64& rng) {
+  INFO("policy " << d.policy << ", face " << describe(face) << (d.unfinished.empty() ? "" : "; left " + describe(d.unfinished[0])));
+  REQUIRE(d.complete());
+  double area = 0.0, perimeter = 0.0;
+  for (const FinishedRegion& f : d.finished) {
+    area += f.region.area();
+    if (f.is_template) {
+      CHECK(template_applies(f.region));
+    } else {
+      CHECK(is_block(f.region));
+    }
+  }
+  for (int k = 0; k < face.loop_count(); ++k) {
+    const Ring& ring = face.loop(k);
+    for (size_t i = 0; i < ring.size(); ++i) {
+      perimeter += std::hypot(ring[(i + 1) % ring.size()].x - ring[i].x, ring[(i + 1) % ring.size()].y - ring[i].y);
+    }
+  }
+  // Each cut moves its new points by at most q / sqrt(2) (region.h).
+  CHECK(std::fabs(area - face.area()) <= face.quantum() * perimeter * (1.0 + d.cuts.size()));
+  const Box box = face.bbox();
+  std::uniform_real_distribution<double> ux(box.xmin, box.xmax), uy(box.ymin, box.ymax);
+  for (int s = 0; s < 30; ++s) {
+    const Point2 p{ux(rng), uy(rng)};
+    if (!inside(face, p)) continue;
+    int count = 0;
+    for (const FinishedRegion& f : d.finished) count += inside(f.region, p) ? 1 : 0;
+    CHECK(count == 1);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("greedy on general faces: a square is one block, an L two, a triangle a template", "[region][policy]") {
+  const double q = 1e-7;
+  RegionGreedyPolicy greedy;
+  const auto square = decompose_region(Region(Ring{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}, q), greedy);
+  CHECK(square.complete());
+  CHECK(square.blocks == 1);
+  CHECK(square.cuts.empty());
+  const auto l = decompose_region(Region(Ring{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, {}, q), greedy);
+  CHECK(l.complete());
+  CHECK(l.blocks == 2);
+  CHECK(l.templates == 0);
+  const auto triangle = decompose_region(Region(Ring{{0, 0}, {4, 0}, {2, 3}}, {}, q), greedy);
+  CHECK(triangle.complete());
+  CHECK(triangle.blocks + triangle.templates >= 1);
+  // A parallelogram at 60 degrees is a block as it is.
+  const auto slanted = decompose_region(Region(Ring{{0, 0}, {4, 0}, {5, std::sqrt(3.0)}, {1, std::sqrt(3.0)}}, {}, q), greedy);
+  CHECK(slanted.blocks == 1);
+  CHECK(slanted.cuts.empty());
+}
+
+TEST_CASE("every general face ends in blocks, whatever the policy (property test)", "[region][policy][property]") {
+  std::mt19937_64 rng(2026);
+  const GeneralKind kinds[] = {GeneralKind::Polygon, GeneralKind::Turned, GeneralKind::Chamfered};
+  int faces = 0;
+  for (int i = 0; i < 300; ++i) {
+    GeneralOptions options;
+    options.kind = kinds[i % 3];
+    options.holes = i % 4 == 0;
+    options.max_vertices = i % 5 == 0 ? 20 : 10;
+    options.size = std::pow(10.0, static_cast<double>(i % 7) - 2.0);  // 0.01 to 10000
+    const Region face = face_region(generate_general_shape(rng, options));
+    REQUIRE_FALSE(face.is_empty());
+    RegionRandomPolicy random(static_cast<std::uint64_t>(i));
+    check_decomposition(face, decompose_region(face, random), rng);
+    if (i % 3 == 0) {
+      RegionGreedyPolicy greedy;
+      RegionEpisodeOptions mesh;
+      mesh.reward = RewardPreset::Mesh;
+      check_decomposition(face, decompose_region(face, greedy, mesh), rng);
+    }
+    ++faces;
+  }
+  CHECK(faces == 300);
+}
