@@ -73,14 +73,17 @@ Ring scaled(const Ring& ring, double s) {
   return out;
 }
 
-// Cuts some convex corners of a counter-clockwise rectilinear ring at 45 degrees.
-Ring chamfer(std::mt19937_64& rng, const Ring& ring) {
+// Cuts some convex corners of a counter-clockwise rectilinear ring at 45 degrees, with legs of at most
+// a third of the shorter edge and at most max_leg (holes keep a margin of one unit from the union's
+// boundary, so a leg below one unit never reaches them).
+Ring chamfer(std::mt19937_64& rng, const Ring& ring, double max_leg) {
   Ring out;
   const size_t n = ring.size();
   for (size_t i = 0; i < n; ++i) {
     const Point2 p = ring[(i + n - 1) % n], v = ring[i], q = ring[(i + 1) % n];
     const double turn = (v.x - p.x) * (q.y - v.y) - (v.y - p.y) * (q.x - v.x);
-    const double room = std::min(std::hypot(v.x - p.x, v.y - p.y), std::hypot(q.x - v.x, q.y - v.y)) / 3.0;
+    const double room =
+        std::min(max_leg, std::min(std::hypot(v.x - p.x, v.y - p.y), std::hypot(q.x - v.x, q.y - v.y)) / 3.0);
     if (turn > 0.0 && uniform(rng, 0.0, 1.0) < 0.5) {
       const double c = room * uniform(rng, 0.3, 1.0);
       const double lp = std::hypot(v.x - p.x, v.y - p.y), lq = std::hypot(q.x - v.x, q.y - v.y);
@@ -129,7 +132,7 @@ GeneralShape generate_general_shape(std::mt19937_64& rng, const GeneralOptions& 
       const double unit = options.size / 10.0;
       shape.outer = scaled(u.polygon.outer, unit);
       for (const Ring& h : u.polygon.holes) shape.holes.push_back(scaled(h, unit));
-      if (options.kind == GeneralKind::Chamfered) shape.outer = chamfer(rng, shape.outer);
+      if (options.kind == GeneralKind::Chamfered) shape.outer = chamfer(rng, shape.outer, 0.9 * unit);
       if (options.kind == GeneralKind::Turned) {
         const double t = uniform(rng, 0.0, 2.0 * M_PI), c = std::cos(t), s = std::sin(t);
         auto turn = [&](Ring* ring) {

@@ -31,10 +31,41 @@ bool points_inside(Point2 p, Point2 v, Point2 n, Point2 d) {
 
 }  // namespace
 
+bool operator<(const Complexity& a, const Complexity& b) {
+  if (a.holes != b.holes) return a.holes < b.holes;
+  if (a.reflex != b.reflex) return a.reflex < b.reflex;
+  return a.corners < b.corners;
+}
+
+Complexity part_complexity(const Region& part, const BlockRules& rules) {
+  Complexity c;
+  c.holes = static_cast<int>(part.holes().size());
+  for (int k = 0; k < part.loop_count(); ++k) {
+    const Ring& ring = part.loop(k);
+    for (size_t i = 0; i < ring.size(); ++i) {
+      const double angle = interior_angle(ring, i);
+      if (std::fabs(angle - M_PI) <= rules.flat_tolerance_degrees * M_PI / 180.0) continue;
+      if (angle > M_PI) ++c.reflex;
+      ++c.corners;
+    }
+  }
+  return c;
+}
+
+bool makes_progress(const Region& part, const std::vector<Region>& pieces, const BlockRules& rules) {
+  if (pieces.size() < 2) return false;
+  const Complexity before = part_complexity(part, rules);
+  for (const Region& piece : pieces) {
+    if (!(part_complexity(piece, rules) < before) && !is_block(piece, rules)) return false;
+  }
+  return true;
+}
+
 std::vector<RegionAction> region_candidates(const Region& part) {
   std::vector<RegionAction> actions;
   const OrientedRectangle frame = min_area_rectangle(part);
   const Point2 ax = frame.axis, ay{-frame.axis.y, frame.axis.x};
+  const bool convex = part.is_convex();
   for (int k = 0; k < part.loop_count(); ++k) {
     const Ring& ring = part.loop(k);
     const size_t m = ring.size();
@@ -45,20 +76,31 @@ std::vector<RegionAction> region_candidates(const Region& part) {
       Point2 bisector = unit({e_out.x + to_p.x, e_out.y + to_p.y});
       if (!(std::hypot(bisector.x, bisector.y) > 0.5)) bisector = {-e_out.y, e_out.x};  // a flat vertex
       if (!points_inside(p, v, n, bisector)) bisector = {-bisector.x, -bisector.y};
-      const std::vector<Point2> directions{e_in,  {-e_out.x, -e_out.y}, bisector, {-e_in.y, e_in.x}, {-e_out.y, e_out.x},
-                                           ax,    {-ax.x, -ax.y},       ay,       {-ay.x, -ay.y},    {1, 0},
-                                           {-1, 0}, {0, 1},             {0, -1}};
+      std::vector<Point2> directions{e_in, {-e_out.x, -e_out.y}, bisector, {-e_in.y, e_in.x}, {-e_out.y, e_out.x},
+                                     ax,   {-ax.x, -ax.y},       ay,       {-ay.x, -ay.y}};
+      // On a convex part, the diagonals to every vertex but the neighbours (a hexagon into two
+      // quadrilaterals, a pentagon into a quadrilateral and a triangle).
+      if (convex) {
+        for (size_t j = 2; j + 1 < m; ++j) {
+          const Point2 w = ring[(i + j) % m];
+          directions.push_back({w.x - v.x, w.y - v.y});
+        }
+      }
       std::vector<Point2> partial, full;
       for (const Point2& d : directions) {
         bool seen = false;
-        for (const Point2& q : partial) seen = seen || (std::fabs(cross(q, d)) < 1e-9 && dot(q, d) > 0.0);
+        for (const Point2& q : partial) seen = seen || (std::fabs(cross(unit(q), unit(d))) < 1e-9 && dot(q, d) > 0.0);
         if (!seen && points_inside(p, v, n, d)) partial.push_back(d);
         bool seen_line = false;
-        for (const Point2& q : full) seen_line = seen_line || std::fabs(cross(q, d)) < 1e-9;
-        if (!seen_line) full.push_back(d);
+        for (const Point2& q : full) seen_line = seen_line || std::fabs(cross(unit(q), unit(d))) < 1e-9;
+        if (!seen_line && !convex) full.push_back(d);  // on a convex part a full cut is a partial one
       }
       for (const Point2& d : partial) actions.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, d}});
       for (const Point2& d : full) actions.push_back({RegionAction::Kind::Cut, {CutKind::Full, v, d}});
+      // From the midpoint of the edge v-n, the ray along its inward normal (a partial cut from a point
+      // on an edge: a trapezoid into two quadrilaterals).
+      const Point2 mid{0.5 * (v.x + n.x), 0.5 * (v.y + n.y)};
+      actions.push_back({RegionAction::Kind::Cut, {CutKind::Partial, mid, {-e_out.y, e_out.x}}});
     }
   }
   if (template_applies(part) && !is_block(part)) actions.push_back({RegionAction::Kind::Template, {}});
@@ -67,8 +109,15 @@ std::vector<RegionAction> region_candidates(const Region& part) {
 
 RegionAction progress_action(const Region& part, const BlockRules& rules) {
   if (!part.holes().empty()) {
+    // The line through a hole's vertex along the bisector of its angle runs through the hole and the
+    // part on both sides, along no edge.
     const Ring& hole = part.holes()[0];
-    return {RegionAction::Kind::Cut, {CutKind::Full, hole[0], {hole[1].x - hole[0].x, hole[1].y - hole[0].y}}};
+    const size_t m = hole.size();
+    const Point2 p = hole[m - 1], v = hole[0], n = hole[1];
+    const Point2 a = unit({p.x - v.x, p.y - v.y}), b = unit({n.x - v.x, n.y - v.y});
+    Point2 d{a.x + b.x, a.y + b.y};
+    if (!(std::hypot(d.x, d.y) > 1e-9)) d = {-a.y, a.x};
+    return {RegionAction::Kind::Cut, {CutKind::Full, v, d}};
   }
   const Ring& ring = part.outer();
   const size_t m = ring.size();

@@ -3,12 +3,21 @@
 // At every vertex v of the part (every loop), with p and n its neighbours along the loop:
 //   directions  the extensions of its two edges (v - p, v - n), the bisector of its interior angle
 //               (pointing inside), the inward normals of its two edges, the two axes of the part's
-//               minimum-area rectangle and the face's X and Y axes (both ways);
+//               minimum-area rectangle (both ways), and on a convex part the diagonals to every
+//               other vertex but its neighbours;
 //   partial     a ray along each direction that enters the interior from v;
-//   full        the line along each distinct direction (up to sign) through v.
+//   full        the line along each distinct direction (up to sign) through v (not on a convex
+//               part, where the full cut is the partial one);
+// and from the midpoint of every edge, the partial cut along the edge's inward normal.
 // Duplicate directions (parallel within 1e-9 rad) are listed once. On a convex part that is not a
 // block, finishing it with the midpoint template is a candidate too. Every candidate a policy picks
 // from here is a real number angle; a learned policy may choose any other.
+//
+// Progress: the complexity of a part is (holes, reflex vertices, corners), compared
+// lexicographically (corners as in block.h: vertices that are not side vertices). A cut makes
+// progress when every piece it leaves is less complex than the part, or is a block. The
+// non-learned policies choose only cuts that make progress (and the template): every sequence of
+// such actions ends, so no policy can cut a triangle into a triangle and a quadrilateral forever.
 #pragma once
 
 #include <vector>
@@ -20,9 +29,21 @@ namespace autoblock {
 // Inputs: part, not empty. Output: the candidates above, in a fixed order (vertex by vertex).
 std::vector<RegionAction> region_candidates(const Region& part);
 
+struct Complexity {
+  int holes = 0, reflex = 0, corners = 0;
+};
+bool operator<(const Complexity& a, const Complexity& b);
+
+// Inputs: part; rules. Output: its complexity.
+Complexity part_complexity(const Region& part, const BlockRules& rules = {});
+
+// Inputs: part; pieces, what a cut of it left; rules. Output: true when the cut makes progress.
+bool makes_progress(const Region& part, const std::vector<Region>& pieces, const BlockRules& rules = {});
+
 // Inputs:  part, not finished (not a block under rules).
 // Outputs: an action that surely makes progress towards blocks, for policies that must finish: a
-//          full cut along a hole's edge while the part has holes (it opens the hole); else a partial
+//          full cut through a hole's vertex along the bisector of its angle while the part has holes
+//          (it opens the hole); else a partial
 //          cut along an edge's extension from a reflex vertex (it removes the reflex vertex); else,
 //          on a convex part with five or more corners, a partial cut between two opposite corners;
 //          else the template.

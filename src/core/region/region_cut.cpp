@@ -69,6 +69,32 @@ Ring ccb_ring(Arrangement::Ccb_halfedge_const_circulator first, double quantum) 
   return ring;
 }
 
+double segment_distance(Point2 x, Point2 a, Point2 b) {
+  const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
+  double t = len2 > 0.0 ? ((x.x - a.x) * dx + (x.y - a.y) * dy) / len2 : 0.0;
+  t = std::max(0.0, std::min(1.0, t));
+  return std::hypot(x.x - (a.x + t * dx), x.y - (a.y + t * dy));
+}
+
+// True when a vertex of one loop lies within one quantum of another loop: the loops touch (a cut
+// nearly along a hole's edge leaves a gap thinner than the lattice, which rounding closes).
+bool loops_touch(const Region& region) {
+  const double q = region.quantum();
+  for (int a = 0; a < region.loop_count(); ++a) {
+    for (int b = 0; b < region.loop_count(); ++b) {
+      if (a == b) continue;
+      const Ring& ra = region.loop(a);
+      const Ring& rb = region.loop(b);
+      for (const Point2& v : ra) {
+        for (size_t i = 0; i < rb.size(); ++i) {
+          if (segment_distance(v, rb[i], rb[(i + 1) % rb.size()]) <= q) return true;
+        }
+      }
+    }
+  }
+  return false;
+}
+
 bool lower_left(const Region& a, const Region& b) {
   const Point2 p = a.outer()[0], q = b.outer()[0];
   return p.y < q.y || (p.y == q.y && p.x < q.x);
@@ -176,9 +202,24 @@ CutOutcome cut_region(const Region& region, const RegionCut& cut) {
       holes.push_back(ccb_ring(*inner, q));
     }
     Region piece(ccb_ring(face->outer_ccb(), q), holes, q);
-    if (!piece.is_empty()) outcome.pieces.push_back(std::move(piece));
+    if (piece.is_empty()) continue;
+    if (!piece.holes().empty() && loops_touch(piece)) return unchanged;
+    outcome.pieces.push_back(std::move(piece));
   }
   if (outcome.pieces.size() < 2) return unchanged;
+  // The pieces must tile the part: rounding to the lattice changes the area by at most q per unit of
+  // boundary (a safety net: with loops that touch refused above, this holds by construction).
+  double area = 0.0, length = 0.0;
+  for (const Region& piece : outcome.pieces) {
+    area += piece.area();
+    for (int k = 0; k < piece.loop_count(); ++k) {
+      const Ring& ring = piece.loop(k);
+      for (size_t i = 0; i < ring.size(); ++i) {
+        length += std::hypot(ring[(i + 1) % ring.size()].x - ring[i].x, ring[(i + 1) % ring.size()].y - ring[i].y);
+      }
+    }
+  }
+  if (std::fabs(area - region.area()) > q * length) return unchanged;
   std::sort(outcome.pieces.begin(), outcome.pieces.end(), lower_left);
   // The chords: cut edges with the interior on at least one side.
   for (auto edge = arrangement.edges_begin(); edge != arrangement.edges_end(); ++edge) {

@@ -9,7 +9,9 @@
 // kernel, an arrangement of the boundary and the cut) and the pieces are rounded to the region's
 // lattice (see region.h). A cut that separates nothing (it misses the interior, runs along the
 // boundary, or only joins the outer boundary to a hole, leaving a slit) changes nothing: the result
-// is the region itself, N = 1.
+// is the region itself, N = 1. So does a cut that would leave a piece whose hole comes within one
+// quantum of another of its loops (a cut nearly, but not exactly, along a hole's edge): rounding
+// would make the loops touch, and such a piece is not a valid part.
 #pragma once
 
 #include <string>

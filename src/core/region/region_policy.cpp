@@ -17,7 +17,8 @@ std::vector<ScoredAction> score_candidates(const Region& part, double face_size,
       s.reward = region_template_reward(options.reward, part, face_size);
     } else {
       s.outcome = cut_region(part, action.cut);
-      s.reward = region_cut_reward(options.reward, s.outcome.pieces, face_size, options.rules);
+      if (!makes_progress(part, s.outcome.pieces, options.rules)) continue;
+      s.reward = region_cut_reward(options.reward, s.outcome, face_size, options.rules);
     }
     scored.push_back(std::move(s));
   }
@@ -38,7 +39,8 @@ RegionAction RegionRandomPolicy::choose(const RegionEpisode& episode) {
   std::vector<RegionAction> candidates = region_candidates(episode.current_part());
   std::shuffle(candidates.begin(), candidates.end(), rng_);
   for (const RegionAction& action : candidates) {
-    if (action.kind == RegionAction::Kind::Template || cut_region(episode.current_part(), action.cut).pieces.size() >= 2) {
+    if (action.kind == RegionAction::Kind::Template ||
+        makes_progress(episode.current_part(), cut_region(episode.current_part(), action.cut).pieces, episode.options().rules)) {
       return action;
     }
   }

@@ -1,8 +1,8 @@
 // Policies of the general engine, and the run of one over a face.
 //
-//   greedy  the candidate (region_candidates.h) with the highest immediate reward; ties go to the
-//           first listed;
-//   random  uniform over the candidates that change something (a cut with N >= 2, or the template);
+//   greedy  the candidate (region_candidates.h) that makes progress with the highest immediate
+//           reward; ties go to the first listed;
+//   random  uniform over the candidates that make progress (and the template);
 //   search  a lookahead over the candidates with memoisation on parts (region_search.h).
 // decompose_region runs a policy up to the step cap and then finishes every part left with
 // progress_action (region_candidates.h), which always terminates: every face ends in blocks
@@ -53,7 +53,8 @@ struct ScoredAction {
 };
 
 // Inputs:  part; face_size; reward preset and rules (as the episode's).
-// Outputs: every candidate of region_candidates(part) with its outcome and reward, in order.
+// Outputs: every candidate of region_candidates(part) that makes progress, with its outcome and
+//          reward, in order.
 std::vector<ScoredAction> score_candidates(const Region& part, double face_size, const RegionEpisodeOptions& options);
 
 struct RegionDecomposition {

@@ -14,24 +14,30 @@ double quad_area(const std::array<Point2, 4>& q) {
 
 }  // namespace
 
-double block_scaled_jacobian(const Region& region, const std::array<int, 4>& corners) {
-  double j = 1.0;
-  for (int c : corners) j = std::min(j, std::sin(interior_angle(region.outer(), static_cast<size_t>(c))));
-  return j;
-}
-
-double region_cut_reward(RewardPreset preset, const std::vector<Region>& pieces, double face_size,
-                         const BlockRules& rules) {
+double region_cut_reward(RewardPreset preset, const CutOutcome& outcome, double face_size, const BlockRules& rules) {
+  const std::vector<Region>& pieces = outcome.pieces;
   if (preset == RewardPreset::Mesh) {
     if (pieces.size() == 1) return -3.0;
     double cost = static_cast<double>(pieces.size() - 1);
     for (const Region& piece : pieces) {
-      const auto corners = block_corners(piece, rules);
-      if (!corners) continue;
-      cost += kMeshThinWeight * std::log(min_area_rectangle(piece).aspect_ratio());
-      cost += kMeshShapeWeight * (1.0 - block_scaled_jacobian(piece, *corners));
+      if (is_block(piece, rules)) cost += kMeshThinWeight * std::log(min_area_rectangle(piece).aspect_ratio());
     }
-    return -cost;
+    double j_new = 1.0;
+    for (const Region& piece : pieces) {
+      for (int k = 0; k < piece.loop_count(); ++k) {
+        const Ring& ring = piece.loop(k);
+        for (size_t i = 0; i < ring.size(); ++i) {
+          const Point2 v = ring[i];
+          const bool on_chord = std::any_of(outcome.chords.begin(), outcome.chords.end(),
+                                            [&](const Chord& c) { return c.a == v || c.b == v; });
+          if (!on_chord) continue;
+          const double angle = interior_angle(ring, i);
+          if (std::fabs(angle - M_PI) <= rules.flat_tolerance_degrees * M_PI / 180.0 || angle > M_PI) continue;
+          j_new = std::min(j_new, std::sin(angle));
+        }
+      }
+    }
+    return -cost - kMeshShapeWeight * (1.0 - j_new);
   }
   const double scale = 1.0 / (face_size * face_size);
   std::vector<double> areas, ratios;

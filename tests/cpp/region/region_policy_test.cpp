@@ -10,6 +10,7 @@
 #include "core/data/general_generator.h"
 #include "core/geometry/tolerance.h"
 #include "core/region/region_candidates.h"
+#include "core/region/region_search.h"
 
 using namespace autoblock;
 
@@ -110,11 +111,17 @@ TEST_CASE("every general face ends in blocks, whatever the policy (property test
     REQUIRE_FALSE(face.is_empty());
     RegionRandomPolicy random(static_cast<std::uint64_t>(i));
     check_decomposition(face, decompose_region(face, random), rng);
+    RegionEpisodeOptions mesh;
+    mesh.reward = RewardPreset::Mesh;
     if (i % 3 == 0) {
       RegionGreedyPolicy greedy;
-      RegionEpisodeOptions mesh;
-      mesh.reward = RewardPreset::Mesh;
       check_decomposition(face, decompose_region(face, greedy, mesh), rng);
+    }
+    if (i % 25 == 0) {
+      RegionSearchOptions quick;
+      quick.time_limit = 0.2;
+      RegionSearchPolicy search(quick);
+      check_decomposition(face, decompose_region(face, search, mesh), rng);
     }
     ++faces;
   }

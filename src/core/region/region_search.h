@@ -1,0 +1,49 @@
+// The search policy of the general engine: a lookahead over the candidate actions with memoisation
+// on parts and a time budget.
+//
+// The value of a part P is 0 for a block, else the best over its `width` most rewarding candidates
+// (region_candidates.h: cuts that make progress, and the template) of
+//   reward(action) + sum over the pieces it leaves of value(piece).
+// Progress makes the recursion finite; parts are canonical values (region.h), so a part reached by
+// two orders of cuts is solved once. When the time budget runs out, parts not yet solved are valued
+// by the greedy chain (width 1), and the policy reports time_capped().
+#pragma once
+
+#include <chrono>
+#include <string>
+#include <unordered_map>
+
+#include "core/region/region_policy.h"
+
+namespace autoblock {
+
+struct RegionSearchOptions {
+  int width = 4;              // candidates expanded per part (by immediate reward)
+  double time_limit = 2.0;    // seconds per face; 0: no limit
+};
+
+class RegionSearchPolicy : public RegionPolicy {
+ public:
+  explicit RegionSearchPolicy(RegionSearchOptions options = {}) : options_(options) {}
+  std::string name() const override { return "search"; }
+  RegionAction choose(const RegionEpisode& episode) override;
+  bool time_capped() const override { return capped_; }
+  // Parts solved so far (for reports and tests).
+  size_t solved_parts() const { return memo_.size(); }
+
+ private:
+  struct Entry {
+    double value = 0.0;
+    RegionAction action;
+  };
+  double solve(const Region& part, const RegionEpisodeOptions& options, double face_size);
+
+  RegionSearchOptions options_;
+  std::unordered_map<Region, Entry, RegionHash> memo_;
+  size_t face_hash_ = 0;
+  bool started_ = false;
+  bool capped_ = false;
+  std::chrono::steady_clock::time_point deadline_;
+};
+
+}  // namespace autoblock
