@@ -130,7 +130,7 @@ void check_no_contact(const std::vector<Ring>& rings, const std::vector<std::str
 
 }  // namespace
 
-RectilinearPolygon validate_rings(const std::vector<RawRing>& raw, double* tolerance_out) {
+double face_tolerance(const std::vector<RawRing>& raw) {
   if (raw.empty()) throw InputError("the face has no boundary wire");
   Box box{};
   bool first = true;
@@ -166,6 +166,11 @@ RectilinearPolygon validate_rings(const std::vector<RawRing>& raw, double* toler
     throw InputError("the face has zero or tiny area: its bounding box is " + format_number(box.width(), tol * 1e-3) +
                      " x " + format_number(box.height(), tol * 1e-3) + " (tolerance " + format_number(tol, tol * 1e-3) + ")");
   }
+  return tol;
+}
+
+RectilinearPolygon validate_rings(const std::vector<RawRing>& raw, double* tolerance_out) {
+  const double tol = face_tolerance(raw);
 
   // Every edge must run along X or Y, and be longer than the tolerance.
   std::vector<double> xs, ys;

@@ -16,6 +16,13 @@ struct RawRing {
   std::vector<Point2> points;
 };
 
+// Inputs:  rings, the face's wires as read.
+// Outputs: the face's tolerance (tolerance.h), from the bounding box of all its vertices.
+// Throws InputError when: there is no wire; a wire has fewer than three vertices; a coordinate is not
+// finite or beyond kMaximumCoordinate; the face is too small or its bounding box has zero or tiny
+// width or height. Both validators (this one and region/validate_region.h) start here.
+double face_tolerance(const std::vector<RawRing>& rings);
+
 // Inputs:  rings, the face's wires (any order, any orientation; the outer one is found here).
 // Outputs: the polygon, with coordinates closer than the tolerance (see tolerance.h) snapped to one
 //          value, vertices between collinear edges removed, outer ring counter-clockwise and holes
