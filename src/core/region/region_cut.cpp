@@ -95,9 +95,16 @@ bool loops_touch(const Region& region) {
   return false;
 }
 
+// Pieces in order of their outer loops' vertices, lowest then leftmost first (pieces that share
+// their first vertex, as the two sides of a cut from a corner may, by the next ones).
 bool lower_left(const Region& a, const Region& b) {
-  const Point2 p = a.outer()[0], q = b.outer()[0];
-  return p.y < q.y || (p.y == q.y && p.x < q.x);
+  const Ring& p = a.outer();
+  const Ring& q = b.outer();
+  for (size_t i = 0; i < p.size() && i < q.size(); ++i) {
+    if (p[i].y != q[i].y) return p[i].y < q[i].y;
+    if (p[i].x != q[i].x) return p[i].x < q[i].x;
+  }
+  return p.size() < q.size();
 }
 
 // A direction scaled so that origin + direction reaches beyond the region's bounding box.
@@ -110,23 +117,27 @@ KPoint far_point(const Region& region, Point2 origin, Point2 direction, double s
 }
 
 // The exact end of the partial cut (see partial_cut_end), or false.
-bool exact_partial_end(const Region& region, Point2 origin, Point2 direction, KPoint* hit) {
+bool exact_partial_end(const Region& region, Point2 origin, Point2 direction, KPoint* hit, size_t* hit_edge = nullptr) {
   if (!(std::hypot(direction.x, direction.y) > 0.0)) return false;
   const KPoint o = exact(origin);
   const Kernel::Ray_2 ray(o, far_point(region, origin, direction, 1.0));
   bool found = false;
   KPoint best;
   Kernel::FT best_d2 = 0;
+  size_t best_edge = 0, edge_index = 0;
   auto consider = [&](const KPoint& p) {
     if (p == o) return;
     const Kernel::FT d2 = CGAL::squared_distance(o, p);
     if (!found || d2 < best_d2) {
       best = p;
       best_d2 = d2;
+      best_edge = edge_index;
       found = true;
     }
   };
-  for (const KSegment& edge : boundary_segments(region)) {
+  const std::vector<KSegment> edges = boundary_segments(region);
+  for (edge_index = 0; edge_index < edges.size(); ++edge_index) {
+    const KSegment& edge = edges[edge_index];
     if (!CGAL::do_intersect(ray, edge)) continue;
     const auto crossing = CGAL::intersection(ray, edge);
     if (!crossing) continue;
@@ -148,6 +159,55 @@ bool exact_partial_end(const Region& region, Point2 origin, Point2 direction, KP
     if ((k == 0) != (side == CGAL::ON_BOUNDED_SIDE)) return false;
   }
   *hit = best;
+  if (hit_edge) *hit_edge = best_edge;
+  return true;
+}
+
+// The partial cut of a region without holes: the chord from the origin to the exact end splits its
+// one loop into two chains (no arrangement needed). Returns false when the origin is not on the loop.
+bool split_simple(const Region& region, const RegionCut& cut, std::vector<Region>* pieces, Chord* chord) {
+  KPoint end;
+  size_t eh = 0;
+  if (!exact_partial_end(region, cut.origin, cut.direction, &end, &eh)) {
+    pieces->clear();
+    return true;
+  }
+  const Ring& ring = region.outer();
+  const size_t n = ring.size();
+  const double q = region.quantum();
+  // The edge the origin lies on (a vertex: the edge it starts).
+  size_t eo = n;
+  double nearest = q;
+  for (size_t i = 0; i < n; ++i) {
+    if (ring[i] == cut.origin) {
+      eo = i;
+      break;
+    }
+    const double d = segment_distance(cut.origin, ring[i], ring[(i + 1) % n]);
+    if (d <= nearest) {
+      nearest = d;
+      eo = i;
+    }
+  }
+  if (eo == n || eo == eh) return false;
+  const Point2 hit = rounded(end, q);
+  Ring a{cut.origin}, b{hit};
+  for (size_t k = (eo + 1) % n;; k = (k + 1) % n) {
+    a.push_back(ring[k]);
+    if (k == eh) break;
+  }
+  a.push_back(hit);
+  for (size_t k = (eh + 1) % n;; k = (k + 1) % n) {
+    b.push_back(ring[k]);
+    if (k == eo) break;
+  }
+  b.push_back(cut.origin);
+  pieces->clear();
+  for (const Ring* r : {&a, &b}) {
+    Region piece(*r, {}, q);
+    if (!piece.is_empty()) pieces->push_back(std::move(piece));
+  }
+  *chord = {cut.origin, hit};
   return true;
 }
 
@@ -162,7 +222,27 @@ bool partial_cut_end(const Region& region, Point2 origin, Point2 direction, Poin
   return true;
 }
 
-CutOutcome cut_region(const Region& region, const RegionCut& cut) {
+namespace {
+
+// The pieces tile the part: rounding to the lattice changes the area by at most q per unit of
+// boundary (a safety net: with loops that touch refused, this holds by construction).
+bool tiles(const Region& region, const std::vector<Region>& pieces) {
+  double area = 0.0, length = 0.0;
+  for (const Region& piece : pieces) {
+    area += piece.area();
+    for (int k = 0; k < piece.loop_count(); ++k) {
+      const Ring& ring = piece.loop(k);
+      for (size_t i = 0; i < ring.size(); ++i) {
+        length += std::hypot(ring[(i + 1) % ring.size()].x - ring[i].x, ring[(i + 1) % ring.size()].y - ring[i].y);
+      }
+    }
+  }
+  return std::fabs(area - region.area()) <= region.quantum() * length;
+}
+
+}  // namespace
+
+CutOutcome cut_region_by_arrangement(const Region& region, const RegionCut& cut) {
   if (region.is_empty()) throw std::invalid_argument("cut_region: empty region");
   CutOutcome unchanged{{region}, {}};
   if (!(std::hypot(cut.direction.x, cut.direction.y) > 0.0)) return unchanged;
@@ -206,20 +286,7 @@ CutOutcome cut_region(const Region& region, const RegionCut& cut) {
     if (!piece.holes().empty() && loops_touch(piece)) return unchanged;
     outcome.pieces.push_back(std::move(piece));
   }
-  if (outcome.pieces.size() < 2) return unchanged;
-  // The pieces must tile the part: rounding to the lattice changes the area by at most q per unit of
-  // boundary (a safety net: with loops that touch refused above, this holds by construction).
-  double area = 0.0, length = 0.0;
-  for (const Region& piece : outcome.pieces) {
-    area += piece.area();
-    for (int k = 0; k < piece.loop_count(); ++k) {
-      const Ring& ring = piece.loop(k);
-      for (size_t i = 0; i < ring.size(); ++i) {
-        length += std::hypot(ring[(i + 1) % ring.size()].x - ring[i].x, ring[(i + 1) % ring.size()].y - ring[i].y);
-      }
-    }
-  }
-  if (std::fabs(area - region.area()) > q * length) return unchanged;
+  if (outcome.pieces.size() < 2 || !tiles(region, outcome.pieces)) return unchanged;
   std::sort(outcome.pieces.begin(), outcome.pieces.end(), lower_left);
   // The chords: cut edges with the interior on at least one side.
   for (auto edge = arrangement.edges_begin(); edge != arrangement.edges_end(); ++edge) {
@@ -231,6 +298,21 @@ CutOutcome cut_region(const Region& region, const RegionCut& cut) {
     outcome.chords.push_back({rounded(edge->source()->point(), q), rounded(edge->target()->point(), q)});
   }
   return outcome;
+}
+
+CutOutcome cut_region(const Region& region, const RegionCut& cut) {
+  if (region.is_empty()) throw std::invalid_argument("cut_region: empty region");
+  if (cut.kind == CutKind::Partial && region.holes().empty() && std::hypot(cut.direction.x, cut.direction.y) > 0.0) {
+    CutOutcome outcome;
+    Chord chord;
+    if (split_simple(region, cut, &outcome.pieces, &chord)) {
+      if (outcome.pieces.size() < 2 || !tiles(region, outcome.pieces)) return {{region}, {}};
+      std::sort(outcome.pieces.begin(), outcome.pieces.end(), lower_left);
+      outcome.chords.push_back(chord);
+      return outcome;
+    }
+  }
+  return cut_region_by_arrangement(region, cut);
 }
 
 }  // namespace autoblock

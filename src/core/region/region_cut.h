@@ -39,13 +39,18 @@ struct Chord {
 };
 
 struct CutOutcome {
-  std::vector<Region> pieces;  // N >= 1 pieces, ordered by their lowest, then leftmost vertex
+  std::vector<Region> pieces;  // N >= 1 pieces, ordered by their outer loops' vertices (lowest, then leftmost)
   std::vector<Chord> chords;   // the segments cut (empty when N = 1)
 };
 
 // Inputs:  region (not empty); cut, its origin on or near the region's boundary.
-// Outputs: the pieces and the chords, as above.
+// Outputs: the pieces and the chords, as above. A partial cut of a region without holes splits its
+//          loop in two at the chord's exact ends (fast); every other cut goes through the
+//          arrangement (cut_region_by_arrangement).
 CutOutcome cut_region(const Region& region, const RegionCut& cut);
+
+// The same by the arrangement for every cut (the general path; tests compare the two).
+CutOutcome cut_region_by_arrangement(const Region& region, const RegionCut& cut);
 
 // Inputs:  region; origin on its boundary; direction.
 // Outputs: true with *hit set when the ray from origin along direction first runs into the
