@@ -108,34 +108,49 @@ std::vector<RegionAction> region_candidates(const Region& part) {
 }
 
 RegionAction progress_action(const Region& part, const BlockRules& rules) {
-  if (!part.holes().empty()) {
+  // The actions that make progress in principle, most certain first; the first one that does (its
+  // pieces computed) is the answer. Rounding can defeat one (a cut refused for leaving touching
+  // loops), never all of them.
+  std::vector<RegionAction> tries;
+  for (const Ring& hole : part.holes()) {
     // The line through a hole's vertex along the bisector of its angle runs through the hole and the
     // part on both sides, along no edge.
-    const Ring& hole = part.holes()[0];
     const size_t m = hole.size();
-    const Point2 p = hole[m - 1], v = hole[0], n = hole[1];
-    const Point2 a = unit({p.x - v.x, p.y - v.y}), b = unit({n.x - v.x, n.y - v.y});
-    Point2 d{a.x + b.x, a.y + b.y};
-    if (!(std::hypot(d.x, d.y) > 1e-9)) d = {-a.y, a.x};
-    return {RegionAction::Kind::Cut, {CutKind::Full, v, d}};
+    for (size_t i = 0; i < m; ++i) {
+      const Point2 p = hole[(i + m - 1) % m], v = hole[i], n = hole[(i + 1) % m];
+      const Point2 a = unit({p.x - v.x, p.y - v.y}), b = unit({n.x - v.x, n.y - v.y});
+      Point2 d{a.x + b.x, a.y + b.y};
+      if (!(std::hypot(d.x, d.y) > 1e-9)) d = {-a.y, a.x};
+      tries.push_back({RegionAction::Kind::Cut, {CutKind::Full, v, d}});
+    }
   }
   const Ring& ring = part.outer();
   const size_t m = ring.size();
-  for (size_t i = 0; i < m; ++i) {
-    if (interior_angle(ring, i) > M_PI) {
-      const Point2 p = ring[(i + m - 1) % m], v = ring[i];
-      return {RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - p.x, v.y - p.y}}};
+  if (part.holes().empty()) {
+    for (size_t i = 0; i < m; ++i) {
+      if (interior_angle(ring, i) <= M_PI) continue;
+      const Point2 p = ring[(i + m - 1) % m], v = ring[i], n = ring[(i + 1) % m];
+      tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - p.x, v.y - p.y}}});
+      tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - n.x, v.y - n.y}}});
+    }
+    if (tries.empty()) {
+      std::vector<size_t> corners;
+      for (size_t i = 0; i < m; ++i) {
+        if (std::fabs(interior_angle(ring, i) - M_PI) > rules.flat_tolerance_degrees * M_PI / 180.0) corners.push_back(i);
+      }
+      if (corners.size() >= 5) {
+        for (size_t k = 0; k < corners.size(); ++k) {
+          const Point2 a = ring[corners[k]], b = ring[corners[(k + corners.size() / 2) % corners.size()]];
+          tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, a, {b.x - a.x, b.y - a.y}}});
+        }
+      }
     }
   }
-  std::vector<size_t> corners;
-  for (size_t i = 0; i < m; ++i) {
-    if (std::fabs(interior_angle(ring, i) - M_PI) > rules.flat_tolerance_degrees * M_PI / 180.0) corners.push_back(i);
+  for (const RegionAction& action : tries) {
+    if (makes_progress(part, cut_region(part, action.cut).pieces, rules)) return action;
   }
-  if (corners.size() >= 5) {
-    const Point2 a = ring[corners[0]], b = ring[corners[corners.size() / 2]];
-    return {RegionAction::Kind::Cut, {CutKind::Partial, a, {b.x - a.x, b.y - a.y}}};
-  }
-  return {RegionAction::Kind::Template, {}};
+  if (template_applies(part)) return {RegionAction::Kind::Template, {}};
+  return tries.empty() ? RegionAction{RegionAction::Kind::Template, {}} : tries.front();
 }
 
 }  // namespace autoblock

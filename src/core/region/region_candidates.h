@@ -41,12 +41,12 @@ Complexity part_complexity(const Region& part, const BlockRules& rules = {});
 bool makes_progress(const Region& part, const std::vector<Region>& pieces, const BlockRules& rules = {});
 
 // Inputs:  part, not finished (not a block under rules).
-// Outputs: an action that surely makes progress towards blocks, for policies that must finish: a
-//          full cut through a hole's vertex along the bisector of its angle while the part has holes
-//          (it opens the hole); else a partial
-//          cut along an edge's extension from a reflex vertex (it removes the reflex vertex); else,
-//          on a convex part with five or more corners, a partial cut between two opposite corners;
-//          else the template.
+// Outputs: an action that makes progress towards blocks, for policies that must finish: while the
+//          part has holes, a full cut through a hole's vertex along the bisector of its angle (it
+//          opens the hole); else a partial cut along an edge's extension from a reflex vertex (it
+//          removes the reflex vertex); else, on a convex part with five or more corners, a partial
+//          cut between two opposite corners; else the template. Each is tried in turn (vertex by
+//          vertex) until one makes progress.
 RegionAction progress_action(const Region& part, const BlockRules& rules = {});
 
 }  // namespace autoblock

@@ -11,7 +11,10 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
   if (is_block(part, options.rules)) return 0.0;
   const auto found = memo_.find(part);
   if (found != memo_.end()) return found->second.value;
-  std::vector<ScoredAction> scored = score_candidates(part, face_size, options);
+  const bool late = options_.time_limit > 0.0 && std::chrono::steady_clock::now() > deadline_;
+  if (late) capped_ = true;
+  // Past the budget, parts are finished by progress_action alone (one cut each, no scoring).
+  std::vector<ScoredAction> scored = late ? std::vector<ScoredAction>{} : score_candidates(part, face_size, options);
   Entry best{0.0, progress_action(part, options.rules)};
   if (scored.empty()) {
     // Nothing listed makes progress: the fallback action, valued like any other.
@@ -28,9 +31,7 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
     return best.value;
   }
   std::stable_sort(scored.begin(), scored.end(), [](const ScoredAction& a, const ScoredAction& b) { return a.reward > b.reward; });
-  const bool late = options_.time_limit > 0.0 && std::chrono::steady_clock::now() > deadline_;
-  if (late) capped_ = true;
-  const size_t width = late ? 1 : static_cast<size_t>(std::max(1, options_.width));
+  const size_t width = static_cast<size_t>(std::max(1, options_.width));
   bool have = false;
   for (size_t i = 0; i < scored.size() && i < width; ++i) {
     double value = scored[i].reward;

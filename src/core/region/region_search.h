@@ -5,8 +5,9 @@
 // (region_candidates.h: cuts that make progress, and the template) of
 //   reward(action) + sum over the pieces it leaves of value(piece).
 // Progress makes the recursion finite; parts are canonical values (region.h), so a part reached by
-// two orders of cuts is solved once. When the time budget runs out, parts not yet solved are valued
-// by the greedy chain (width 1), and the policy reports time_capped().
+// two orders of cuts is solved once. When the time budget runs out, parts not yet solved are finished
+// by progress_action (region_candidates.h: one cut each, nothing scored), and the policy reports
+// time_capped(). The search is then never below that fallback, but may be below greedy.
 #pragma once
 
 #include <chrono>
