@@ -32,16 +32,42 @@ std::optional<std::array<int, 4>> block_corners(const Region& region, const Bloc
 
 bool template_applies(const Region& region) { return region.is_convex(); }
 
-std::vector<std::array<Point2, 4>> template_quads(const Region& region) {
+std::vector<std::array<Point2, 4>> template_quads(const Region& region, const BlockRules& rules) {
   const Ring& ring = region.outer();
   const size_t n = ring.size();
-  const Point2 c = region.centroid();
-  auto mid = [&](size_t i) {
-    const Point2 a = ring[i % n], b = ring[(i + 1) % n];
-    return Point2{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
+  // The template's corners: the part's corners (side vertices lie on the template's sides); all
+  // vertices when fewer than three are corners.
+  std::vector<size_t> corners;
+  for (size_t i = 0; i < n; ++i) {
+    if (std::fabs(interior_angle(ring, i) - M_PI) > rules.flat_tolerance_degrees * kDegree) corners.push_back(i);
+  }
+  if (corners.size() < 3) {
+    corners.clear();
+    for (size_t i = 0; i < n; ++i) corners.push_back(i);
+  }
+  // The midpoint, by length along the boundary, of the side from corner k to corner k + 1.
+  auto side_midpoint = [&](size_t k) {
+    const size_t from = corners[k], to = corners[(k + 1) % corners.size()];
+    double length = 0.0;
+    for (size_t i = from; i != to; i = (i + 1) % n) length += std::hypot(ring[(i + 1) % n].x - ring[i].x, ring[(i + 1) % n].y - ring[i].y);
+    double left = 0.5 * length;
+    for (size_t i = from;; i = (i + 1) % n) {
+      const Point2 a = ring[i], b = ring[(i + 1) % n];
+      const double e = std::hypot(b.x - a.x, b.y - a.y);
+      if (left <= e || (i + 1) % n == to) {
+        const double t = e > 0.0 ? std::min(1.0, left / e) : 0.0;
+        return Point2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+      }
+      left -= e;
+    }
   };
+  const Point2 c = region.centroid();
+  std::vector<Point2> mids;
+  for (size_t k = 0; k < corners.size(); ++k) mids.push_back(side_midpoint(k));
   std::vector<std::array<Point2, 4>> quads;
-  for (size_t i = 0; i < n; ++i) quads.push_back({ring[i], mid(i), c, mid(i + n - 1)});
+  for (size_t k = 0; k < corners.size(); ++k) {
+    quads.push_back({ring[corners[k]], mids[k], c, mids[(k + corners.size() - 1) % corners.size()]});
+  }
   return quads;
 }
 

@@ -5,7 +5,7 @@
 // part without holes, with no reflex vertex, and with exactly four corners whose angles lie in
 // [min_corner, max_corner]. A rectangle is a block under any rules. A convex part that is not a
 // block (a triangle, a pentagon, a quadrilateral with a corner out of range) may be finished with
-// the *midpoint template*: its n vertices, the midpoints of its n edges and its centroid make n
+// the *midpoint template*: its n corners, the midpoints of its n sides and its centroid make n
 // quadrilaterals (a triangle: three quads around an interior point), whose centre node is irregular
 // unless n = 4. The template's cost shows in the rewards (reward on regions) and in the mesh.
 #pragma once
@@ -36,9 +36,12 @@ inline bool is_block(const Region& region, const BlockRules& rules = {}) {
 // Inputs:  region; rules. Output: true when the midpoint template can finish it (convex, no holes).
 bool template_applies(const Region& region);
 
-// Inputs:  region, convex (template_applies).
-// Outputs: the template's quadrilaterals, each counter-clockwise starting at the region's vertex.
-std::vector<std::array<Point2, 4>> template_quads(const Region& region);
+// Inputs:  region, convex (template_applies); rules (which vertices are side vertices).
+// Outputs: the template's quadrilaterals, one per corner of the region, each counter-clockwise
+//          starting at the corner: the corner, the midpoint (by length along the boundary) of the
+//          side it starts, the centroid, the midpoint of the side it ends. Side vertices lie on the
+//          quads' boundary sides, which the four points here give as chords.
+std::vector<std::array<Point2, 4>> template_quads(const Region& region, const BlockRules& rules = {});
 
 // The minimum-area rectangle enclosing a region (its outer loop's convex hull; rotating calipers).
 struct OrientedRectangle {
