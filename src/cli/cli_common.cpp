@@ -9,7 +9,7 @@ namespace autoblock::cli {
 
 void PolicyArguments::add_to(CLI::App& command) {
   command.add_option("--policy", policy,
-                     "auto (exact search, learned where it runs out of time) | random | random-split | greedy | optimal | a shipped policy (sac-paper, sac-mesh) | a policy file "
+                     "auto (exact search, learned where it runs out of time) | random | random-split | greedy | optimal | a shipped policy (sac-paper, sac-mesh, sac-faithful) | a policy file "
                      "(default: the shipped default, " + default_policy_name() + ")");
   command.add_option("--seed", seed, "seed of the random policies")->capture_default_str();
   command.add_option("--max-steps", max_steps, "step cap per face (0: 10 x corners + 10)")

@@ -34,6 +34,7 @@ void add_train_command(CLI::App& app) {
     int episodes = 1500, threads = 2, eval_every = 25, batch_size = 0, views = 0;
     double lr_final = 0.0, average = -1.0;
     std::uint64_t seed = 0;
+    std::vector<std::string> settings;
   };
   auto args = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("train", "Train a decomposition policy with Soft Actor-Critic.");
@@ -74,6 +75,10 @@ void add_train_command(CLI::App& app) {
                       "lookahead agent, deployed: average each piece's value over this many of the square's symmetries "
                       "(1-8; default from the configuration)")
       ->check(CLI::Range(1, 8));
+  command->add_option("--set", args->settings,
+                      "KEY=VALUE: set a field of the agent's configuration (repeatable; for ablations), e.g. "
+                      "--set initial_direction_temperature=1 --set actor_output_relu=false")
+      ->type_name("KEY=VALUE");
   command->add_option("--eval-every", args->eval_every, "episodes between test evaluations and checkpoints")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
@@ -104,6 +109,7 @@ void add_train_command(CLI::App& app) {
     job.lr_final = args->lr_final;
     job.weight_average = args->average;
     job.deploy_views = args->views;
+    job.settings = args->settings;
     job.log = args->log;
     job.curves = args->curves;
 

@@ -44,8 +44,8 @@ class TestNativeModule(unittest.TestCase):
 
         module = native.load()
         self.assertEqual(AutoBlock.policy_names(), list(module.policy_names()))
-        self.assertEqual(AutoBlock.policy_names(), ["auto", "sac-mesh", "sac-paper", "optimal", "greedy",
-                                                    "random-split", "random"])
+        self.assertEqual(AutoBlock.policy_names(), ["auto", "sac-faithful", "sac-mesh", "sac-paper", "optimal",
+                                                    "greedy", "random-split", "random"])
         self.assertEqual(module.default_policy(), "auto")
         self.assertEqual(AutoBlock.default_policy(), "auto")  # no preference set in the test's user folder
         self.assertEqual(AutoBlock.reward_presets(), ["paper", "mesh"])

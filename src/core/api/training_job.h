@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "core/data/shape_generator.h"
 #include "core/io/dataset.h"
@@ -45,6 +46,8 @@ struct TrainingJob {
   double lr_final = 0.0;         // lookahead agent: learning rate's fraction left at the end
   double weight_average = -1.0;  // lookahead agent: moving-average decay of the deployed weights
   int deploy_views = 0;          // lookahead agent: symmetric views averaged when deployed
+  std::vector<std::string> settings;  // "key=value" on the agent's configuration, applied last
+                                      // (sac_config.h with_settings; a fresh run only)
   std::string log;               // CSV log; empty: the output's stem + ".csv"
   std::string curves;            // curves picture, .svg or .png; empty: the output's stem + "-curves.svg"
   std::string description;       // what the policy file records as the training data (empty: derived)

@@ -99,7 +99,7 @@ SacConfig job_config(const TrainingJob& job) {
   if (job.lr_final > 0.0) config.lr_final_fraction = job.lr_final;
   if (job.weight_average >= 0.0) config.weight_average_decay = job.weight_average;
   if (job.deploy_views > 0) config.deploy_views = job.deploy_views;
-  return config;
+  return with_settings(config, job.settings);
 }
 
 TrainingOutcome train(const TrainingJob& job, const TrainingCallbacks& callbacks) {
@@ -115,6 +115,9 @@ TrainingOutcome train(const TrainingJob& job, const TrainingCallbacks& callbacks
   check_picture_path(outcome.curves, "the curves picture");
   require_parent_folder(outcome.checkpoint, "the checkpoint");
   require_parent_folder(outcome.log, "the log");
+  if (job.resume && !job.settings.empty()) {
+    throw InputError("configuration settings apply to a fresh run: a resumed run keeps the checkpoint's");
+  }
   if (job.resume && !fs::exists(outcome.checkpoint)) {
     throw InputError("nothing to resume: the checkpoint " + outcome.checkpoint + " does not exist");
   }

@@ -4,6 +4,13 @@
 // Networks (as the paper): a value network (graph network over the part's triangulation) giving a
 // value at every model vertex; an actor and twin critics (9 -> 256 -> 128 -> 64 -> 2) on the local
 // observation at a vertex; target copies of the value network and the critics (Polyak averaged).
+// The actor's output layer is linear, its softmax the direction probabilities. The paper's text
+// puts a ReLU after every actor layer, the output included (config.actor_output_relu); with it
+// the losing direction's logit is pushed below zero, where it has no gradient, and once the
+// critics change their mind the other logit follows: both are zero for every observation, the
+// actor is uniform for good and, deployed, always cuts horizontally (ties). Measured (issue 15,
+// BENCHMARKS.md): the direction entropy was exactly ln 2 on every batch from episode 62 on and
+// the deterministic test return stayed at 22.8, below a random choice among splitting cuts.
 //
 // Acting. The vertex is drawn from softmax(V(P, .) / tau) over the part's model vertices (training)
 // or is the argmax (deployed); the direction is drawn from the actor's pi(. | o_v) (training) or its

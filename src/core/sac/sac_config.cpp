@@ -20,6 +20,34 @@ SacConfig default_sac_config(const std::string& agent) {
   return config;
 }
 
+namespace {
+
+// Throws InputError naming the first field out of its range.
+void check_ranges(const SacConfig& c) {
+  auto require = [](bool ok, const char* key, const char* range) {
+    if (!ok) throw InputError(std::string(key) + " must be " + range);
+  };
+  require(c.gamma > 0.0 && c.gamma <= 1.0, "gamma", "in (0, 1]");
+  require(c.batch_size >= 1, "batch_size", ">= 1");
+  require(c.buffer_capacity >= 1, "buffer_capacity", ">= 1");
+  require(c.warmup_steps >= 0, "warmup_steps", ">= 0");
+  require(c.update_every >= 1, "update_every", ">= 1");
+  require(c.lr_value > 0.0, "lr_value", "> 0");
+  require(c.lr_critic > 0.0, "lr_critic", "> 0");
+  require(c.lr_actor > 0.0, "lr_actor", "> 0");
+  require(c.lr_temperature > 0.0, "lr_temperature", "> 0");
+  require(c.polyak > 0.0 && c.polyak <= 1.0, "polyak", "in (0, 1]");
+  require(c.target_update_every >= 1, "target_update_every", ">= 1");
+  require(c.direction_target_entropy >= 0.0, "direction_target_entropy", ">= 0");
+  require(c.vertex_target_entropy_fraction >= 0.0, "vertex_target_entropy_fraction", ">= 0");
+  require(c.initial_direction_temperature > 0.0, "initial_direction_temperature", "> 0");
+  require(c.initial_vertex_temperature > 0.0, "initial_vertex_temperature", "> 0");
+  require(c.graph.size_fraction > 0.0, "graph.size_fraction", "> 0");
+  require(c.graph.shape_bound > 0.0, "graph.shape_bound", "> 0");
+}
+
+}  // namespace
+
 nlohmann::json sac_config_json(const SacConfig& c) {
   return {{"agent", c.agent},
           {"value_network", c.value_network},
@@ -86,10 +114,41 @@ SacConfig sac_config_from_json(const nlohmann::json& j) {
     c.vertex_target_entropy_fraction = j.at("vertex_target_entropy_fraction").get<double>();
     c.initial_direction_temperature = j.at("initial_direction_temperature").get<double>();
     c.initial_vertex_temperature = j.at("initial_vertex_temperature").get<double>();
+    check_ranges(c);
     return c;
   } catch (const nlohmann::json::exception& e) {
     throw InputError(std::string("malformed agent configuration: ") + e.what());
   }
+}
+
+
+SacConfig with_settings(const SacConfig& config, const std::vector<std::string>& settings) {
+  nlohmann::json j = sac_config_json(config);
+  for (const std::string& setting : settings) {
+    const size_t eq = setting.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == setting.size()) {
+      throw InputError("setting '" + setting + "': expected key=value");
+    }
+    const std::string key = setting.substr(0, eq), text = setting.substr(eq + 1);
+    nlohmann::json* slot = &j;
+    std::string rest = key;
+    for (size_t dot; (dot = rest.find('.')) != std::string::npos; rest = rest.substr(dot + 1)) {
+      slot = slot->contains(rest.substr(0, dot)) ? &(*slot)[rest.substr(0, dot)] : nullptr;
+      if (!slot || !slot->is_object()) break;
+    }
+    if (key == "agent" || !slot || !slot->is_object() || !slot->contains(rest) || (*slot)[rest].is_object()) {
+      throw InputError("setting '" + setting + "': no configuration field '" + key + "'");
+    }
+    nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
+    if (value.is_discarded()) value = text;  // a bare word: a string
+    (*slot)[rest] = value;
+    try {
+      sac_config_from_json(j);
+    } catch (const InputError& e) {
+      throw InputError("setting '" + setting + "': " + e.what());
+    }
+  }
+  return sac_config_from_json(j);
 }
 
 }  // namespace autoblock

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -17,7 +18,9 @@ enum class Bootstrap { Graph, Critics };
 struct SacConfig {
   std::string agent = "lookahead";      // "paper" (the paper's SAC) or "lookahead" (learning_agent.h)
   std::string value_network = "small";  // ValueNetworkConfig::by_name: "paper" or "small"
-  bool actor_output_relu = true;        // the paper: ReLU after every actor layer (logits >= 0)
+  bool actor_output_relu = false;       // true: a ReLU after the actor's output layer too, as the
+                                        // paper's text reads (logits >= 0); its logits die in
+                                        // training and the actor stays uniform (sac_agent.h)
   RewardPreset reward = RewardPreset::Paper;
   GraphOptions graph;
   Bootstrap bootstrap = Bootstrap::Graph;
@@ -53,7 +56,16 @@ struct SacConfig {
 SacConfig default_sac_config(const std::string& agent);
 
 nlohmann::json sac_config_json(const SacConfig& config);
-// Throws InputError for malformed or unknown values.
+// Throws InputError for malformed or unknown values, or values out of range (a learning rate,
+// temperature, batch size ... that is not positive, a discount or Polyak fraction outside (0, 1]).
 SacConfig sac_config_from_json(const nlohmann::json& json);
+
+// Inputs:  config; settings, each "key=value" with key a field of sac_config_json (nested ones as
+//          "graph.size_fraction") other than "agent", and value JSON (a number, true/false) or a
+//          bare word taken as a string (e.g. "bootstrap=critics").
+// Outputs: config with the settings applied, in order (for ablations: `autoblock train --set`).
+//          Throws InputError naming the setting when it is malformed, names no such field, or its
+//          value has the wrong type or range.
+SacConfig with_settings(const SacConfig& config, const std::vector<std::string>& settings);
 
 }  // namespace autoblock

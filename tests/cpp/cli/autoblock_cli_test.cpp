@@ -144,6 +144,9 @@ TEST_CASE("autoblock train: bad options and data get exit 2 and a one-line error
                                        "train " + data + "--deploy-views 9", "train " + data + "--weight-average 1",
                                        "train " + data + "--lr-final 0", "train " + data + "--resume '" + folder + "/none.pt'",
                                        "train " + data + "--curves '" + folder + "/c.txt'",
+                                       "train " + data + "--set no_such_field=1", "train " + data + "--set gamma=2",
+                                       "train " + data + "--set gamma",
+                                       "train " + data + "--resume '" + folder + "/p.pt' --set gamma=0.5",
                                        "train --train '" + folder + "/s' --test '" + folder + "/s' --out '" + folder +
                                            "/no/such/p.pt' --episodes 1"};
   for (const std::string& arguments : cases) {

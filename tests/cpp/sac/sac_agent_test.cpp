@@ -73,3 +73,43 @@ TEST_CASE("the temperatures move towards their target entropies", "[sac]") {
   for (int k = 0; k < 50; ++k) agent.update({&a});
   CHECK(agent.direction_temperature() < alpha0);
 }
+
+namespace {
+
+// The actor's probability of a vertical cut at the L's re-entrant corner after `updates` SAC
+// updates on one terminal transition per direction there (rewards: horizontal, vertical).
+double p_vertical_after(SacAgent& agent, const std::shared_ptr<const PartState>& l, float horizontal, float vertical,
+                        int updates) {
+  Transition h{l, 3, 0, horizontal, {}}, v{l, 3, 1, vertical, {}};
+  for (int k = 0; k < updates; ++k) agent.update({&h, &v});
+  return agent.direction_probabilities(l->observations[3])[1];
+}
+
+}  // namespace
+
+TEST_CASE("an actor whose logits pass through a ReLU dies; a linear one follows the critics", "[sac]") {
+  // The paper's text puts a ReLU after every actor layer, the output included. The losing
+  // direction's logit is pushed below zero, where the ReLU has no gradient; when the critics later
+  // prefer that direction, the winning logit is pushed down to zero too and the actor is uniform
+  // for good (measured in training: the direction entropy was exactly ln 2 on every batch from
+  // episode 62 on). Without the output ReLU the actor follows the critics, also when they change.
+  const auto l = make_part_state(test::grid_face_of(test::l_shape()).whole, GraphOptions{});
+  for (const bool relu : {true, false}) {
+    INFO("actor_output_relu = " << relu);
+    torch::manual_seed(11);
+    SacConfig config = default_sac_config("paper");
+    config.actor_output_relu = relu;
+    SacAgent agent(config);
+    const double vertical_better = p_vertical_after(agent, l, -5.0f, 10.0f, 300);
+    const double horizontal_better = p_vertical_after(agent, l, 10.0f, -5.0f, 600);
+    if (relu) {
+      // Both logits dead: uniform, whatever the critics say, and stuck there.
+      CHECK(horizontal_better == Approx(0.5).margin(1e-6));
+      CHECK(p_vertical_after(agent, l, -5.0f, 10.0f, 300) == Approx(0.5).margin(1e-6));
+    } else {
+      CHECK(vertical_better > 0.95);
+      CHECK(horizontal_better < 0.05);
+    }
+  }
+  CHECK_FALSE(default_sac_config("paper").actor_output_relu);  // the default is the linear output
+}

@@ -3,6 +3,9 @@
 #include "core/common/error.h"
 #include "core/sac/sac_config.h"
 
+#include <string>
+#include <vector>
+
 using namespace autoblock;
 using Catch::Matchers::Contains;
 
@@ -54,4 +57,33 @@ TEST_CASE("the graph method round-trips, is refined for older files and is check
   bad["graph"]["method"] = "fine";
   CHECK_THROWS_AS(sac_config_from_json(bad), InputError);
   CHECK_THROWS_WITH(sac_config_from_json(bad), Contains("graph method"));
+}
+
+TEST_CASE("settings change named fields of the configuration and are checked", "[sac][config]") {
+  const SacConfig base = default_sac_config("paper");
+  const SacConfig changed = with_settings(base, {"initial_direction_temperature=2.5", "actor_output_relu=false",
+                                                 "bootstrap=critics", "graph.size_fraction=0.5", "gamma=1"});
+  CHECK(changed.initial_direction_temperature == 2.5);
+  CHECK_FALSE(changed.actor_output_relu);
+  CHECK(changed.bootstrap == Bootstrap::Critics);
+  CHECK(changed.graph.size_fraction == 0.5);
+  CHECK(changed.gamma == 1.0);
+  // Everything else is left as it was.
+  nlohmann::json expected = sac_config_json(base);
+  expected["initial_direction_temperature"] = 2.5;
+  expected["actor_output_relu"] = false;
+  expected["bootstrap"] = "critics";
+  expected["graph"]["size_fraction"] = 0.5;
+  expected["gamma"] = 1.0;
+  CHECK(sac_config_json(changed) == expected);
+  // Later settings win.
+  CHECK(with_settings(base, {"batch_size=8", "batch_size=16"}).batch_size == 16);
+
+  for (const std::string bad : {"gamma", "=1", "gamma=", "no_such_field=1", "graph.no_such=1", "gamma.x=1", "graph=1",
+                                "agent=lookahead", "gamma=1.5", "gamma=0", "batch_size=0", "lr_actor=-1",
+                                "actor_output_relu=3", "bootstrap=sideways", "initial_vertex_temperature=0"}) {
+    INFO(bad);
+    CHECK_THROWS_AS(with_settings(base, {bad}), InputError);
+    CHECK_THROWS_WITH(with_settings(base, {bad}), Contains(bad));
+  }
 }
