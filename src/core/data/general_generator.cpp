@@ -5,25 +5,17 @@
 
 #include "core/common/error.h"
 #include "core/data/shape_generator.h"
+#include "core/region/region.h"
 
 namespace autoblock {
 namespace {
 
 double uniform(std::mt19937_64& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
 
-double corner_angle(const Ring& ring, size_t i) {
-  const size_t n = ring.size();
-  const Point2 p = ring[(i + n - 1) % n], v = ring[i], q = ring[(i + 1) % n];
-  double a = std::atan2(p.y - v.y, p.x - v.x) - std::atan2(q.y - v.y, q.x - v.x);
-  while (a <= 0.0) a += 2.0 * M_PI;
-  while (a > 2.0 * M_PI) a -= 2.0 * M_PI;
-  return a;
-}
-
 bool corners_at_least(const Ring& ring, double degrees) {
   const double min = degrees * M_PI / 180.0;
   for (size_t i = 0; i < ring.size(); ++i) {
-    const double a = corner_angle(ring, i);
+    const double a = interior_angle(ring, i);
     if (a < min || a > 2.0 * M_PI - min) return false;
   }
   return true;

@@ -16,23 +16,6 @@ std::string edge_text(const Point2& a, const Point2& b, double tol) {
   return "from " + format_point(a.x, a.y, tol) + " to " + format_point(b.x, b.y, tol);
 }
 
-// Chain-cluster sorted values: neighbours closer than tol share one representative (their mean).
-std::map<double, double> snap_map(std::vector<double> values, double tol) {
-  std::sort(values.begin(), values.end());
-  std::map<double, double> snapped;
-  size_t start = 0;
-  for (size_t k = 1; k <= values.size(); ++k) {
-    if (k == values.size() || values[k] - values[k - 1] > tol) {
-      double sum = 0.0;
-      for (size_t m = start; m < k; ++m) sum += values[m];
-      const double mean = sum / static_cast<double>(k - start);
-      for (size_t m = start; m < k; ++m) snapped[values[m]] = mean;
-      start = k;
-    }
-  }
-  return snapped;
-}
-
 // Removes vertices between collinear edges; throws when the boundary doubles back on itself.
 Ring merge_collinear(Ring ring, const std::string& name, double tol) {
   bool changed = true;
@@ -129,6 +112,22 @@ void check_no_contact(const std::vector<Ring>& rings, const std::vector<std::str
 }
 
 }  // namespace
+
+std::map<double, double> snap_map(std::vector<double> values, double tol) {
+  std::sort(values.begin(), values.end());
+  std::map<double, double> snapped;
+  size_t start = 0;
+  for (size_t k = 1; k <= values.size(); ++k) {
+    if (k == values.size() || values[k] - values[k - 1] > tol) {
+      double sum = 0.0;
+      for (size_t m = start; m < k; ++m) sum += values[m];
+      const double mean = sum / static_cast<double>(k - start);
+      for (size_t m = start; m < k; ++m) snapped[values[m]] = mean;
+      start = k;
+    }
+  }
+  return snapped;
+}
 
 double face_tolerance(const std::vector<RawRing>& raw) {
   if (raw.empty()) throw InputError("the face has no boundary wire");

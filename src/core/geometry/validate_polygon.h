@@ -2,6 +2,7 @@
 // wrong and where.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,10 @@ struct RawRing {
   std::string name;
   std::vector<Point2> points;
 };
+
+// Inputs:  values; tol. Output: each value mapped to the mean of its cluster (sorted values closer
+//          than tol to a neighbour share one cluster).
+std::map<double, double> snap_map(std::vector<double> values, double tol);
 
 // Inputs:  rings, the face's wires as read.
 // Outputs: the face's tolerance (tolerance.h), from the bounding box of all its vertices.

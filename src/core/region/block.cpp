@@ -13,14 +13,18 @@ constexpr double kDegree = M_PI / 180.0;
 
 }  // namespace
 
+bool is_side_vertex(const Ring& ring, size_t i, const BlockRules& rules) {
+  return std::fabs(interior_angle(ring, i) - M_PI) <= rules.flat_tolerance_degrees * kDegree;
+}
+
 std::optional<std::array<int, 4>> block_corners(const Region& region, const BlockRules& rules) {
   if (region.is_empty() || !region.holes().empty()) return std::nullopt;
   const Ring& ring = region.outer();
   std::array<int, 4> corners{};
   int count = 0;
   for (size_t i = 0; i < ring.size(); ++i) {
+    if (is_side_vertex(ring, i, rules)) continue;
     const double angle = interior_angle(ring, i);
-    if (std::fabs(angle - M_PI) <= rules.flat_tolerance_degrees * kDegree) continue;  // side vertex
     if (angle > M_PI) return std::nullopt;                                              // reflex
     if (angle < rules.min_corner_degrees * kDegree || angle > rules.max_corner_degrees * kDegree) return std::nullopt;
     if (count == 4) return std::nullopt;
@@ -39,7 +43,7 @@ std::vector<std::array<Point2, 4>> template_quads(const Region& region, const Bl
   // vertices when fewer than three are corners.
   std::vector<size_t> corners;
   for (size_t i = 0; i < n; ++i) {
-    if (std::fabs(interior_angle(ring, i) - M_PI) > rules.flat_tolerance_degrees * kDegree) corners.push_back(i);
+    if (!is_side_vertex(ring, i, rules)) corners.push_back(i);
   }
   if (corners.size() < 3) {
     corners.clear();

@@ -24,6 +24,10 @@ struct BlockRules {
   double flat_tolerance_degrees = 20.0;
 };
 
+// Inputs: ring, a loop of a region; its vertex number i; rules.
+// Output: true when the vertex is a side vertex (its angle within the flat tolerance of 180 degrees).
+bool is_side_vertex(const Ring& ring, size_t i, const BlockRules& rules = {});
+
 // Inputs:  region; rules.
 // Outputs: the indices (into region.outer(), counter-clockwise) of the block's four corners, or
 //          nothing when the region is not a block.

@@ -62,24 +62,6 @@ std::optional<FaceFrame> rectilinear_frame(const Region& face) {
   return frame;
 }
 
-namespace {
-
-// Each value replaced by the first of its cluster: sorted values closer than `gap` to the previous
-// one join its cluster.
-std::map<double, double> cluster_values(std::vector<double> values, double gap) {
-  std::sort(values.begin(), values.end());
-  std::map<double, double> snapped;
-  double first = 0.0, previous = 0.0;
-  for (size_t i = 0; i < values.size(); ++i) {
-    if (i == 0 || values[i] - previous > gap) first = values[i];
-    snapped[values[i]] = first;
-    previous = values[i];
-  }
-  return snapped;
-}
-
-}  // namespace
-
 RectilinearPolygon polygon_in_frame(const Region& face, const FaceFrame& frame) {
   // Turned coordinates that should be equal differ by up to twice the quantum: snap them together
   // first (coordinates of one line of the frame), then validate as any rectilinear face.
@@ -95,7 +77,7 @@ RectilinearPolygon polygon_in_frame(const Region& face, const FaceFrame& frame) 
     loops.push_back(std::move(loop));
   }
   const double gap = 2.5 * face.quantum();
-  const std::map<double, double> sx = cluster_values(xs, gap), sy = cluster_values(ys, gap);
+  const std::map<double, double> sx = snap_map(xs, gap), sy = snap_map(ys, gap);
   std::vector<RawRing> rings;
   for (size_t k = 0; k < loops.size(); ++k) {
     RawRing raw{k == 0 ? "outer wire" : "wire " + std::to_string(k + 1), {}};

@@ -10,14 +10,6 @@ namespace {
 
 double cross(Point2 o, Point2 a, Point2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
 
-// The distance from point x to the segment a-b.
-double segment_distance(Point2 x, Point2 a, Point2 b) {
-  const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
-  double t = len2 > 0.0 ? ((x.x - a.x) * dx + (x.y - a.y) * dy) / len2 : 0.0;
-  t = std::max(0.0, std::min(1.0, t));
-  return std::hypot(x.x - (a.x + t * dx), x.y - (a.y + t * dy));
-}
-
 bool lower_left(Point2 a, Point2 b) { return a.y < b.y || (a.y == b.y && a.x < b.x); }
 
 // Rotates the ring so that it starts at its lowest, then leftmost vertex.
@@ -35,6 +27,24 @@ void hash_combine(size_t* seed, double value) {
 }
 
 }  // namespace
+
+double segment_distance(Point2 x, Point2 a, Point2 b) {
+  const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
+  double t = len2 > 0.0 ? ((x.x - a.x) * dx + (x.y - a.y) * dy) / len2 : 0.0;
+  t = std::max(0.0, std::min(1.0, t));
+  return std::hypot(x.x - (a.x + t * dx), x.y - (a.y + t * dy));
+}
+
+double region_perimeter(const Region& region) {
+  double length = 0.0;
+  for (int k = 0; k < region.loop_count(); ++k) {
+    const Ring& ring = region.loop(k);
+    for (size_t i = 0; i < ring.size(); ++i) {
+      length += std::hypot(ring[(i + 1) % ring.size()].x - ring[i].x, ring[(i + 1) % ring.size()].y - ring[i].y);
+    }
+  }
+  return length;
+}
 
 double snap_to_lattice(double value, double quantum) {
   const double snapped = std::round(value / quantum) * quantum;

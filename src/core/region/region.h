@@ -78,6 +78,12 @@ Ring canonical_ring(const Ring& ring, double quantum);
 //         vertex in radians, (0, 2 pi), for the region on the ring's left.
 double interior_angle(const Ring& ring, size_t i);
 
+// Inputs: point x, segment a-b. Output: the distance from x to the segment.
+double segment_distance(Point2 x, Point2 a, Point2 b);
+
+// Inputs: region. Output: the total length of its loops.
+double region_perimeter(const Region& region);
+
 // Inputs: ring. Output: its area centroid (the mean of its vertices when its area is zero).
 Point2 ring_centroid(const Ring& ring);
 

@@ -43,9 +43,8 @@ Complexity part_complexity(const Region& part, const BlockRules& rules) {
   for (int k = 0; k < part.loop_count(); ++k) {
     const Ring& ring = part.loop(k);
     for (size_t i = 0; i < ring.size(); ++i) {
-      const double angle = interior_angle(ring, i);
-      if (std::fabs(angle - M_PI) <= rules.flat_tolerance_degrees * M_PI / 180.0) continue;
-      if (angle > M_PI) ++c.reflex;
+      if (is_side_vertex(ring, i, rules)) continue;
+      if (interior_angle(ring, i) > M_PI) ++c.reflex;
       ++c.corners;
     }
   }
@@ -136,7 +135,7 @@ RegionAction progress_action(const Region& part, const BlockRules& rules) {
     if (tries.empty()) {
       std::vector<size_t> corners;
       for (size_t i = 0; i < m; ++i) {
-        if (std::fabs(interior_angle(ring, i) - M_PI) > rules.flat_tolerance_degrees * M_PI / 180.0) corners.push_back(i);
+        if (!is_side_vertex(ring, i, rules)) corners.push_back(i);
       }
       if (corners.size() >= 5) {
         for (size_t k = 0; k < corners.size(); ++k) {

@@ -69,13 +69,6 @@ Ring ccb_ring(Arrangement::Ccb_halfedge_const_circulator first, double quantum) 
   return ring;
 }
 
-double segment_distance(Point2 x, Point2 a, Point2 b) {
-  const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
-  double t = len2 > 0.0 ? ((x.x - a.x) * dx + (x.y - a.y) * dy) / len2 : 0.0;
-  t = std::max(0.0, std::min(1.0, t));
-  return std::hypot(x.x - (a.x + t * dx), x.y - (a.y + t * dy));
-}
-
 // True when a vertex of one loop lies within one quantum of another loop: the loops touch (a cut
 // nearly along a hole's edge leaves a gap thinner than the lattice, which rounding closes).
 bool loops_touch(const Region& region) {
@@ -230,12 +223,7 @@ bool tiles(const Region& region, const std::vector<Region>& pieces) {
   double area = 0.0, length = 0.0;
   for (const Region& piece : pieces) {
     area += piece.area();
-    for (int k = 0; k < piece.loop_count(); ++k) {
-      const Ring& ring = piece.loop(k);
-      for (size_t i = 0; i < ring.size(); ++i) {
-        length += std::hypot(ring[(i + 1) % ring.size()].x - ring[i].x, ring[(i + 1) % ring.size()].y - ring[i].y);
-      }
-    }
+    length += region_perimeter(piece);
   }
   return std::fabs(area - region.area()) <= region.quantum() * length;
 }

@@ -32,7 +32,7 @@ double region_cut_reward(RewardPreset preset, const CutOutcome& outcome, double 
                                             [&](const Chord& c) { return c.a == v || c.b == v; });
           if (!on_chord) continue;
           const double angle = interior_angle(ring, i);
-          if (std::fabs(angle - M_PI) <= rules.flat_tolerance_degrees * M_PI / 180.0 || angle > M_PI) continue;
+          if (is_side_vertex(ring, i, rules) || angle > M_PI) continue;
           j_new = std::min(j_new, std::sin(angle));
         }
       }

@@ -14,18 +14,6 @@ using autoblock::Ring;
 namespace {
 constexpr double kQ = 1e-7;
 
-double perimeter(const Region& region) {
-  double length = 0.0;
-  for (int k = 0; k < region.loop_count(); ++k) {
-    const Ring& ring = region.loop(k);
-    for (size_t i = 0; i < ring.size(); ++i) {
-      const Point2 a = ring[i], b = ring[(i + 1) % ring.size()];
-      length += std::hypot(b.x - a.x, b.y - a.y);
-    }
-  }
-  return length;
-}
-
 double total_area(const std::vector<Region>& pieces) {
   double a = 0.0;
   for (const Region& p : pieces) a += p.area();
@@ -117,7 +105,7 @@ TEST_CASE("random cuts of random polygons conserve area and give valid canonical
       const auto outcome = autoblock::cut_region(part, cut);
       // Rounding the new points to the lattice moves each by at most q / sqrt(2): the area changes by
       // at most q times the length cut, which is less than the part's perimeter.
-      CHECK(std::fabs(total_area(outcome.pieces) - part.area()) <= kQ * perimeter(part));
+      CHECK(std::fabs(total_area(outcome.pieces) - part.area()) <= kQ * autoblock::region_perimeter(part));
       for (const Region& piece : outcome.pieces) {
         CHECK(piece.area() > 0.0);
         CHECK(autoblock::signed_area(piece.outer()) > 0.0);
@@ -125,7 +113,7 @@ TEST_CASE("random cuts of random polygons conserve area and give valid canonical
       }
       ++cut_count;
     }
-    CHECK(std::fabs(total_area(parts) - area) <= 6 * kQ * perimeter(Region(outer, holes, kQ)));
+    CHECK(std::fabs(total_area(parts) - area) <= 6 * kQ * autoblock::region_perimeter(Region(outer, holes, kQ)));
   }
   CHECK(cut_count > 300);
 }
@@ -155,7 +143,7 @@ TEST_CASE("the fast partial cut of a part without holes agrees with the arrangem
       if (c % 3 == 0) {
         // A point on an edge rounded to the lattice lies off the exact edge, where the arrangement
         // sees a chord that starts inside (a slit) and the fast path the edge: check the area only.
-        CHECK(std::fabs(total_area(fast.pieces) - part.area()) <= kQ * perimeter(part));
+        CHECK(std::fabs(total_area(fast.pieces) - part.area()) <= kQ * autoblock::region_perimeter(part));
         continue;
       }
       const auto slow = autoblock::cut_region_by_arrangement(part, cut);

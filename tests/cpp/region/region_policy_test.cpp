@@ -47,19 +47,14 @@ std::string describe(const Region& r) {
 void check_decomposition(const Region& face, const RegionDecomposition& d, std::mt19937_64& rng) {
   INFO("policy " << d.policy << ", face " << describe(face) << (d.unfinished.empty() ? "" : "; left " + describe(d.unfinished[0])));
   REQUIRE(d.complete());
-  double area = 0.0, perimeter = 0.0;
+  double area = 0.0;
+  const double perimeter = region_perimeter(face);
   for (const FinishedRegion& f : d.finished) {
     area += f.region.area();
     if (f.is_template) {
       CHECK(template_applies(f.region));
     } else {
       CHECK(is_block(f.region));
-    }
-  }
-  for (int k = 0; k < face.loop_count(); ++k) {
-    const Ring& ring = face.loop(k);
-    for (size_t i = 0; i < ring.size(); ++i) {
-      perimeter += std::hypot(ring[(i + 1) % ring.size()].x - ring[i].x, ring[(i + 1) % ring.size()].y - ring[i].y);
     }
   }
   // Each cut moves its new points by at most q / sqrt(2) (region.h).
