@@ -1,13 +1,17 @@
 // autoblock decompose FILE [--face N] [--policy NAME] [--out blocks.brep] [--json report.json]
 //                          [--picture blocks.svg] [--seed S] [--max-steps N] [--time-limit T]
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "core/api/face_actions.h"
 #include "core/common/error.h"
+#include "core/common/format.h"
 #include "core/env/occt_replay.h"
+#include "core/geometry/occt_face.h"
 #include "core/mesh/conformal_merge.h"
 #include "core/io/decomposition_json.h"
 #include "core/io/shape_file.h"
@@ -29,16 +33,51 @@ void require_extension(const std::string& path, const std::vector<std::string>& 
   throw InputError(option + " " + path + ": expected a " + list + " file");
 }
 
+struct Arguments {
+  std::string file, out, json, picture;
+  PolicyArguments policy;
+  FaceArguments face;
+};
+
+std::string general_summary(const RegionDecomposition& d) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "%s%s, %s, return %.3f, %s%s, %.1f ms", counted(d.blocks, "block").c_str(),
+                d.templates ? (" + " + counted(d.templates, "template")).c_str() : "",
+                counted(static_cast<long long>(d.cuts.size()), "step").c_str(), d.total_return, status_name(d.status).c_str(),
+                d.time_capped ? " (time limit hit: progress cuts finished)" : "", d.seconds * 1000.0);
+  return buf;
+}
+
+// A face with edges at other angles: the general engine, through core/api.
+void decompose_general(const Arguments& args, const InputFace& face) {
+  DecomposeSettings settings;
+  settings.policy = args.policy.policy;
+  settings.reward = args.policy.reward;
+  settings.policy_settings.seed = args.policy.seed;
+  settings.policy_settings.time_limit = args.policy.time_limit;
+  settings.max_steps = args.policy.max_steps;
+  settings.occt_blocks = !args.out.empty();
+  const FaceDecomposition made = decompose_input_face(face, settings);
+  const RegionDecomposition& d = made.region;
+  // Everything is made before anything is written.
+  const std::string report = args.json.empty() ? "" : region_decomposition_json(args.file, face, d).dump(2) + "\n";
+  const std::string title = std::filesystem::path(args.file).filename().string() + " - policy " + d.policy + " | " +
+                            general_summary(d);
+  const std::string picture = args.picture.empty() ? "" : region_decomposition_svg(face.region, d, title);
+  if (!args.out.empty()) write_shape_file(args.out, made.shape);
+  if (!args.json.empty()) write_text_file(args.json, report);
+  if (!args.picture.empty()) write_picture(args.picture, picture);
+  std::cout << face.source << ": " << d.policy << " (general engine): " << general_summary(d) << "\n";
+  if (!args.out.empty()) std::cout << "  blocks:  " << args.out << "\n";
+  if (!args.json.empty()) std::cout << "  report:  " << args.json << "\n";
+  if (!args.picture.empty()) std::cout << "  picture: " << args.picture << "\n";
+}
+
 }  // namespace
 
 void add_decompose_command(CLI::App& app) {
-  struct Arguments {
-    std::string file, out, json, picture;
-    PolicyArguments policy;
-    FaceArguments face;
-  };
   auto args = std::make_shared<Arguments>();
-  CLI::App* command = app.add_subcommand("decompose", "Cut one planar face into rectangular blocks.");
+  CLI::App* command = app.add_subcommand("decompose", "Cut one planar face into blocks (rectangles on faces with edges along two perpendicular directions, quadrilaterals otherwise).");
   command->add_option("FILE", args->file, "a .brep, .step or .stp file: one planar face, or a part with --face N")->required();
   args->face.add_to(*command);
   args->policy.add_to(*command);
@@ -49,6 +88,10 @@ void add_decompose_command(CLI::App& app) {
     require_extension(args->out, {".brep", ".brp", ".step", ".stp"}, "--out");
     if (!args->picture.empty()) check_picture_path(args->picture, "--picture");
     const InputFace face = args->face.load(args->file);
+    if (face.is_general()) {
+      decompose_general(*args, face);
+      return;
+    }
     std::unique_ptr<Policy> policy = args->policy.make(face);
     const EpisodeOptions options = args->policy.episode_options();
     const Decomposition result = decompose_face(face.grid, *policy, options);
@@ -56,10 +99,13 @@ void add_decompose_command(CLI::App& app) {
       // The blocks as OpenCASCADE cuts them from the input face (checked against the grid engine at
       // every cut), then merged into one conformal model: neighbours share edges and vertices.
       const ConformalBlocks model = conformal_merge(replay_cuts_occt(face.occt, face.grid, result.cuts, options));
-      write_shape_file(args->out, model.compound);
+      write_shape_file(args->out, shape_to_model(model.compound, face.frame));
     }
     if (!args->json.empty()) {
-      write_text_file(args->json, decomposition_json(args->file, face.planar, result).dump(2) + "\n");
+      nlohmann::json report = decomposition_json(args->file, face.planar, result);
+      report["engine"] = "grid";
+      report["frame"] = frame_json(face.frame);
+      write_text_file(args->json, report.dump(2) + "\n");
     }
     if (!args->picture.empty()) {
       const std::string title = std::filesystem::path(args->file).filename().string() + " - policy " + result.policy +

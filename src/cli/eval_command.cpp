@@ -52,7 +52,10 @@ void add_eval_command(CLI::App& app) {
     // Read and check every input before any work, so bad input stops the run at once.
     const std::vector<std::string> files = collect_shape_files(args->paths);
     std::vector<InputFace> faces;
-    for (const std::string& file : files) faces.push_back(args->face.load(file));
+    for (const std::string& file : files) {
+      faces.push_back(args->face.load(file));
+      require_rectilinear(faces.back(), "autoblock eval", "decompose it with `autoblock decompose`");
+    }
     const std::string policy_name = args->policy.source()->name();  // loads the policy, or says why not
 
     std::vector<Decomposition> results(faces.size());

@@ -122,6 +122,7 @@ void add_mesh_command(CLI::App& app) {
     for (const std::string& text : args->intervals) options.fixed.push_back(parse_edge_intervals(text));
 
     const InputFace face = args->face.load(args->file);
+    require_rectilinear(face, "meshing");
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<Policy> policy = args->policy.make(face);
     const Decomposition decomposition = decompose_face(face.grid, *policy, options.episode);
@@ -135,7 +136,7 @@ void add_mesh_command(CLI::App& app) {
       if (!args->json.empty()) write_text_file(args->json, report);
       throw std::runtime_error("the mesh failed the conformity check: " + result.conformity.problem);
     }
-    const std::string mesh_text = args->out.empty() ? "" : mesh_file_text(args->out, result.mesh);
+    const std::string mesh_text = args->out.empty() ? "" : mesh_file_text(args->out, result.mesh, face.frame);
     const std::string title = std::filesystem::path(args->file).filename().string() + " - policy " +
                               decomposition.policy + " | " + picture_summary(decomposition, result);
     const std::string picture = args->picture.empty() ? ""

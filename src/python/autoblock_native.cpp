@@ -35,7 +35,13 @@ namespace {
 
 // The face held by BREP text (exactly one face), checked; read and checked first in a child
 // process (shape_file.h), so malformed text cannot hang or crash FreeCAD.
-InputFace face_of(const std::string& brep, const std::string& source) { return input_face_from_brep_text(brep, source); }
+// Faces with edges at other angles (the general engine) reach the workbench in a later step: until
+// then the binding refuses them with a clear message (the CLI takes them).
+InputFace face_of(const std::string& brep, const std::string& source) {
+  InputFace face = input_face_from_brep_text(brep, source);
+  require_rectilinear(face, "the FreeCAD workbench", "`autoblock decompose` takes it; the workbench will soon");
+  return face;
+}
 
 CutDirection direction_of(const std::string& name) {
   if (name == "horizontal") return CutDirection::Horizontal;

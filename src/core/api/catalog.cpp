@@ -23,6 +23,8 @@ std::vector<std::string> policy_names() {
   return names;
 }
 
+std::vector<std::string> general_policy_names() { return {"auto", "search", "greedy", "random"}; }
+
 const std::vector<std::string>& reward_preset_names() {
   static const std::vector<std::string> names{"paper", "mesh"};
   return names;

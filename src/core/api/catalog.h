@@ -31,6 +31,11 @@ Capabilities capabilities();
 // baselines. The default (default_policy_name(), api/policy_source.h) is one of them.
 std::vector<std::string> policy_names();
 
+// The policies of the general engine (faces with edges at any angle, core/region): "auto" and
+// "search" (the lookahead search, region_search.h; also what "optimal" means there), "greedy", "random"
+// (and "random-split", the same there). Learned policies work on rectilinear faces only (issue 12).
+std::vector<std::string> general_policy_names();
+
 // The reward presets: "paper" (Eq. 1) and "mesh". The default is "": each policy's own preset.
 const std::vector<std::string>& reward_preset_names();
 std::string default_reward_preset();

@@ -3,7 +3,13 @@
 #include <stdexcept>
 
 #include "core/common/error.h"
+#include <BRepBuilderAPI_Transform.hxx>
+#include <TopoDS.hxx>
+
 #include "core/env/occt_replay.h"
+#include "core/env/region_replay.h"
+#include "core/geometry/occt_face.h"
+#include "core/region/region_search.h"
 #include "core/mesh/conformal_merge.h"
 
 namespace autoblock {
@@ -18,23 +24,63 @@ InputFace check_shape_face(const TopoDS_Shape& shape, const std::string& source,
                               face_source_name(source, face_number));
 }
 
+namespace {
+
+// The general engine's policy by name (general_policy_names()).
+std::unique_ptr<RegionPolicy> general_policy(const std::string& name, const PolicySettings& settings) {
+  if (name.empty() || name == "auto" || name == "search" || name == "optimal") {
+    RegionSearchOptions options;
+    options.time_limit = settings.time_limit > 0 ? settings.time_limit : 0.0;
+    return std::make_unique<RegionSearchPolicy>(options);
+  }
+  if (name == "greedy") return std::make_unique<RegionGreedyPolicy>();
+  if (name == "random" || name == "random-split") return std::make_unique<RegionRandomPolicy>(settings.seed);
+  std::string list;
+  for (const std::string& n : general_policy_names()) list += (list.empty() ? "" : ", ") + n;
+  throw InputError("the policy '" + name + "' works on faces whose edges run along two perpendicular directions; "
+                   "this face has edges at other angles: use one of " + list);
+}
+
+// The faces in the model's coordinates.
+std::vector<TopoDS_Face> to_model(std::vector<TopoDS_Face> faces, const Placement& frame) {
+  if (frame.identity()) return faces;
+  for (TopoDS_Face& f : faces) f = TopoDS::Face(shape_to_model(f, frame));
+  return faces;
+}
+
+}  // namespace
+
 FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSettings& settings) {
   check_reward_preset(settings.reward);
-  const auto source = policy_source(settings.policy, settings.policy_settings);
-  std::unique_ptr<Policy> policy = source->make(face.grid.size, settings.policy_settings.seed);
-  EpisodeOptions options;
-  options.max_steps = settings.max_steps;
-  options.reward = settings.reward.empty() ? source->reward() : reward_preset_by_name(settings.reward);
   FaceDecomposition result;
   result.face = face;
-  result.decomposition = decompose_face(face.grid, *policy, options);
-  result.block_faces = replay_cuts_occt(face.occt, face.grid, result.decomposition.cuts, options);
-  result.shape = conformal_merge(result.block_faces).compound;
+  std::vector<TopoDS_Face> blocks;
+  if (face.is_general()) {
+    std::unique_ptr<RegionPolicy> policy = general_policy(settings.policy, settings.policy_settings);
+    RegionEpisodeOptions options;
+    options.max_steps = settings.max_steps;
+    options.reward = settings.reward.empty() ? RewardPreset::Paper : reward_preset_by_name(settings.reward);
+    result.region = decompose_region(face.region, *policy, options);
+    if (settings.occt_blocks) blocks = replay_region_cuts_occt(face.occt, face.region, result.region, options);
+  } else {
+    const auto source = policy_source(settings.policy, settings.policy_settings);
+    std::unique_ptr<Policy> policy = source->make(face.grid.size, settings.policy_settings.seed);
+    EpisodeOptions options;
+    options.max_steps = settings.max_steps;
+    options.reward = settings.reward.empty() ? source->reward() : reward_preset_by_name(settings.reward);
+    result.decomposition = decompose_face(face.grid, *policy, options);
+    if (settings.occt_blocks) blocks = replay_cuts_occt(face.occt, face.grid, result.decomposition.cuts, options);
+  }
+  if (settings.occt_blocks) {
+    result.block_faces = to_model(blocks, face.frame);
+    result.shape = conformal_merge(result.block_faces, face.is_general() ? face.region.quantum() : 0.0).compound;
+  }
   return result;
 }
 
 EpisodeSnapshot face_step(const InputFace& face, const std::vector<CutSpec>& cuts, int step, int max_steps,
                           RewardPreset reward) {
+  require_rectilinear(face, "stepping through a decomposition");
   EpisodeOptions options;
   options.max_steps = max_steps;
   options.reward = reward;
@@ -43,6 +89,7 @@ EpisodeSnapshot face_step(const InputFace& face, const std::vector<CutSpec>& cut
 
 std::vector<double> face_vertex_scores(const InputFace& face, const std::vector<CutSpec>& cuts, int step,
                                        const std::string& policy, int max_steps, RewardPreset reward) {
+  require_rectilinear(face, "scoring vertices with a value network");
   const auto source = policy_source(policy, PolicySettings{});
   const std::shared_ptr<LearnedPolicy> scorer = source->scoring_policy();
   if (!scorer) {
@@ -62,6 +109,7 @@ std::vector<double> face_vertex_scores(const InputFace& face, const std::vector<
 
 FaceMesh face_mesh(const InputFace& face, const std::vector<CutSpec>& cuts, int max_steps, RewardPreset reward,
                    MeshOptions options) {
+  require_rectilinear(face, "meshing");
   options.episode.max_steps = max_steps;
   options.episode.reward = reward;
   FaceMesh out;

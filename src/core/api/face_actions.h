@@ -15,6 +15,7 @@
 #include "core/io/face_selection.h"
 #include "core/io/input_face.h"
 #include "core/mesh/mesh_pipeline.h"
+#include "core/region/region_policy.h"
 
 namespace autoblock {
 
@@ -23,15 +24,19 @@ struct DecomposeSettings {
   std::string reward = default_reward_preset();  // empty: the policy's own preset
   PolicySettings policy_settings;
   int max_steps = 0;                           // 0: automatic (see EpisodeOptions)
+  bool occt_blocks = true;                     // cut the blocks from the face with OpenCASCADE and merge them
 };
 
 struct FaceDecomposition {
   InputFace face;
-  Decomposition decomposition;
+  Decomposition decomposition;           // a rectilinear face's, by the grid engine (in the face's frame)
+  RegionDecomposition region;            // a general face's (face.is_general()), by the general engine
   std::vector<TopoDS_Face> block_faces;  // cut from the input face by OpenCASCADE, in the order set
-                                         // aside; then the unfinished parts if truncated
+                                         // aside; then the unfinished parts if truncated. In the
+                                         // model's coordinates. Empty unless settings.occt_blocks.
   TopoDS_Shape shape;                    // the partitioned face: the blocks merged conformally
                                          // (neighbours share edges and vertices, see conformal_merge.h)
+  bool general() const { return face.is_general(); }
 };
 
 // Inputs:  face, any OpenCASCADE face; source, its name for messages.
@@ -51,8 +56,11 @@ InputFace check_shape_face(const TopoDS_Shape& shape, const std::string& source,
                            const std::string& how_to_choose = "");
 
 // Inputs:  face, a checked face; settings.
-// Outputs: the decomposition and its blocks as faces. Throws InputError for a bad policy or reward
-//          preset; std::logic_error / std::runtime_error when OpenCASCADE fails or disagrees.
+// Outputs: the decomposition and its blocks as faces: a rectilinear face by the grid engine with any
+//          policy of policy_names() or a policy file, a general face by the general engine with a
+//          policy of general_policy_names(). Throws InputError for a bad policy or reward preset (or a
+//          learned policy on a general face); std::logic_error / std::runtime_error when OpenCASCADE
+//          fails or disagrees.
 FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSettings& settings);
 
 // Inputs:  face, a checked face; cuts, its decomposition's cut sequence by position; step;

@@ -31,7 +31,9 @@ TrainingSet load_training_set(const std::string& folder, const GeneratedSet& gen
     throw InputError(what + " data: " + e.what());
   }
   for (const std::string& file : files) {
-    set.faces.push_back(load_input_face(file).grid);
+    const InputFace face = load_input_face(file);
+    require_rectilinear(face, "training", "learning on such faces is issue 12");
+    set.faces.push_back(face.grid);
     set.names.push_back(std::filesystem::path(file).filename().string());
   }
   return set;

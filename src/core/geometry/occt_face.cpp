@@ -5,6 +5,7 @@
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
@@ -16,9 +17,11 @@
 #include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
 #include <gp_Pln.hxx>
+#include <gp_Vec.hxx>
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -112,7 +115,7 @@ bool planar_face_normal(const TopoDS_Face& face, gp_Dir* normal) {
   return true;
 }
 
-PlanarFace planar_face_from_occt(const TopoDS_Face& face) {
+FaceRings read_face_rings(const TopoDS_Face& face) {
   if (face.IsNull()) throw InputError("the face is empty (a null shape)");
   const gp_Pln plane = face_plane(face);
   gp_Dir normal = plane.Axis().Direction();
@@ -121,17 +124,14 @@ PlanarFace planar_face_from_occt(const TopoDS_Face& face) {
     constexpr double kDirectionTolerance = 1e-9;
     throw InputError("the face lies in a plane with normal (" + format_number(normal.X(), kDirectionTolerance) + ", " +
                      format_number(normal.Y(), kDirectionTolerance) + ", " +
-                     format_number(normal.Z(), kDirectionTolerance) +
-                     "); only faces parallel to the XY plane are supported for now");
+                     format_number(normal.Z(), kDirectionTolerance) + "), not parallel to the XY plane of its frame");
   }
-  PlanarFace result;
+  FaceRings result;
   result.normal_up = normal.Z() > 0;
   result.z = plane.Location().Z();
 
   const double tol = face_tolerance(face);
   const TopoDS_Wire outer = BRepTools::OuterWire(face);
-  std::vector<RawRing> rings;
-  std::vector<double> zs;
   int inner_count = 0;
   for (TopExp_Explorer wires(face, TopAbs_WIRE); wires.More(); wires.Next()) {
     const TopoDS_Wire wire = TopoDS::Wire(wires.Current());
@@ -157,20 +157,96 @@ PlanarFace planar_face_from_occt(const TopoDS_Face& face) {
                          with_article(curve_type_name(curve.GetType())) + "; only straight edges are supported");
       }
       ring.points.push_back(Point2{start.X(), start.Y()});
-      zs.push_back(start.Z());
+      result.vertex_z.push_back(start.Z());
     }
     if (walked != edge_count || !BRep_Tool::IsClosed(wire)) {
       throw InputError("the " + ring.name + " is not a closed chain of edges");
     }
-    rings.push_back(std::move(ring));
-  }
-  result.polygon = validate_rings(rings, &result.tolerance);
-  for (double z : zs) {
-    if (std::fabs(z - result.z) > std::max(result.tolerance, 1e-7)) {
-      throw InputError("a vertex of the face lies off its plane z = " + format_number(result.z, result.tolerance));
-    }
+    result.rings.push_back(std::move(ring));
   }
   return result;
+}
+
+void check_vertices_on_plane(const FaceRings& rings, double tolerance) {
+  for (double z : rings.vertex_z) {
+    if (std::fabs(z - rings.z) > std::max(tolerance, 1e-7)) {
+      throw InputError("a vertex of the face lies off its plane z = " + format_number(rings.z, tolerance));
+    }
+  }
+}
+
+bool rings_rectilinear(const std::vector<RawRing>& rings) {
+  const double tol = face_tolerance(rings);
+  for (const RawRing& ring : rings) {
+    const size_t n = ring.points.size();
+    for (size_t i = 0; i < n; ++i) {
+      const Point2 a = ring.points[i], b = ring.points[(i + 1) % n];
+      if (!(std::fabs(b.x - a.x) <= tol || std::fabs(b.y - a.y) <= tol)) return false;
+    }
+  }
+  return true;
+}
+
+PlanarFace planar_face_from_occt(const TopoDS_Face& face) {
+  const FaceRings read = read_face_rings(face);
+  PlanarFace result;
+  result.normal_up = read.normal_up;
+  result.z = read.z;
+  result.polygon = validate_rings(read.rings, &result.tolerance);
+  check_vertices_on_plane(read, result.tolerance);
+  return result;
+}
+
+Placement face_frame(const TopoDS_Face& face) {
+  gp_Dir normal;
+  if (!planar_face_normal(face, &normal)) return Placement{};
+  struct Line {
+    gp_Pnt a, b;
+  };
+  std::vector<Line> lines;
+  for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+    if (BRep_Tool::Degenerated(edge) || BRepAdaptor_Curve(edge).GetType() != GeomAbs_Line) continue;
+    TopoDS_Vertex v1, v2;
+    TopExp::Vertices(edge, v1, v2, true);
+    if (v1.IsNull() || v2.IsNull()) continue;
+    const gp_Pnt a = BRep_Tool::Pnt(v1), b = BRep_Tool::Pnt(v2);
+    if (a.Distance(b) > 0) lines.push_back(Line{a, b});
+  }
+  if (lines.empty()) return Placement{};
+  const double tol = face_tolerance(face);
+  const bool parallel_to_xy = std::fabs(normal.Z()) >= 1.0 - 1e-9;
+  if (parallel_to_xy) {
+    for (const Line& l : lines) {
+      if (std::fabs(l.b.X() - l.a.X()) <= tol || std::fabs(l.b.Y() - l.a.Y()) <= tol) return Placement{};
+    }
+  }
+  const Line& longest = *std::max_element(lines.begin(), lines.end(), [](const Line& p, const Line& q) {
+    return p.a.SquareDistance(p.b) < q.a.SquareDistance(q.b);
+  });
+  gp_Vec u(longest.a, longest.b);
+  u -= gp_Vec(normal) * u.Dot(gp_Vec(normal));
+  if (u.Magnitude() <= 0) return Placement{};
+  const gp_Dir x(u);
+  const gp_Dir y = normal.Crossed(x);
+  if (parallel_to_xy) {
+    // A face in the XY plane keeps the model's coordinates unless it is rectilinear in the turned frame.
+    for (const Line& l : lines) {
+      const gp_Vec d(l.a, l.b);
+      if (!(std::fabs(d.Dot(gp_Vec(x))) <= tol || std::fabs(d.Dot(gp_Vec(y))) <= tol)) return Placement{};
+    }
+  }
+  Placement frame;
+  frame.rotation = {x.X(), y.X(), normal.X(), x.Y(), y.Y(), normal.Y(), x.Z(), y.Z(), normal.Z()};
+  frame.translation = {longest.a.X(), longest.a.Y(), longest.a.Z()};
+  return frame;
+}
+
+TopoDS_Shape shape_to_model(const TopoDS_Shape& shape, const Placement& frame) {
+  if (frame.identity()) return shape;
+  BRepBuilderAPI_Transform move(shape, frame.to_model(), true);
+  if (!move.IsDone()) throw std::runtime_error("OpenCASCADE could not carry a shape back into the model");
+  return move.Shape();
 }
 
 TopoDS_Face occt_face_from_polygon(const RectilinearPolygon& polygon, double z, bool normal_up) {

@@ -2,20 +2,54 @@
 #pragma once
 
 #include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
 #include <gp_Dir.hxx>
 
 #include <string>
+#include <vector>
 
+#include "core/geometry/placement.h"
 #include "core/geometry/planar_face.h"
+#include "core/geometry/validate_polygon.h"
 
 namespace autoblock {
 
+// The boundary of a planar face parallel to the XY plane, as read: not yet validated.
+struct FaceRings {
+  std::vector<RawRing> rings;    // outer wire first, then the holes, each vertex once, in wire order
+  double z = 0.0;                // the face's plane
+  bool normal_up = true;         // the face's normal is +Z (false: -Z)
+  std::vector<double> vertex_z;  // z of every vertex read
+};
+
 // Inputs:  face, any TopoDS_Face.
-// Outputs: the face as a validated PlanarFace (see validate_polygon.h for the polygon checks).
-// Throws InputError when the face is not planar, does not lie parallel to the XY plane, has a
-// curved edge or an open wire (naming the wire, the edge and its end points), or fails any check
-// of validate_rings.
+// Outputs: its wires as loops of (x, y) points. Throws InputError when the face is not planar, does
+//          not lie parallel to the XY plane, has a curved edge or an open wire (naming the wire, the
+//          edge and its end points).
+FaceRings read_face_rings(const TopoDS_Face& face);
+
+// Inputs: rings, read; tolerance, the face's. Throws InputError when a vertex lies off the plane.
+void check_vertices_on_plane(const FaceRings& rings, double tolerance);
+
+// Inputs:  rings (at least one, as face_tolerance accepts).
+// Outputs: true when every edge runs along X or Y within the face's tolerance (tolerance.h): the
+//          face is for the grid engine; false: for the general engine (core/region).
+bool rings_rectilinear(const std::vector<RawRing>& rings);
+
+// Inputs:  face, any TopoDS_Face.
+// Outputs: the face as a validated PlanarFace (read_face_rings, then validate_rings: see
+//          validate_polygon.h). Throws InputError as those do.
 PlanarFace planar_face_from_occt(const TopoDS_Face& face);
+
+// Inputs:  face, any TopoDS_Face.
+// Outputs: the placement of the face's own frame (placement.h), where the face lies in a plane
+//          z = const: the identity when the face lies parallel to the XY plane and has an edge along X
+//          or Y, or is not rectilinear in any frame (a general face keeps the model's coordinates);
+//          otherwise origin at the start of its longest straight edge, X along that edge, Z along the
+//          face's normal. So a face in any plane, or turned within the XY plane, is rectilinear in its
+//          frame when it is rectilinear at all. The identity for a face that is not planar or has no
+//          straight edge (its checks then say what is wrong).
+Placement face_frame(const TopoDS_Face& face);
 
 // Inputs: face. Output: the name of its surface's type: "plane", "cylinder", "B-spline surface", ...
 std::string surface_name(const TopoDS_Face& face);
@@ -24,6 +58,10 @@ std::string surface_name(const TopoDS_Face& face);
 // Outputs: true and *normal, the face's normal (its orientation applied), when the face is planar (its
 //          surface is a plane or within 1e-7 of one); false otherwise.
 bool planar_face_normal(const TopoDS_Face& face, gp_Dir* normal);
+
+// Inputs: shape, in a face's frame; frame. Output: the shape in the model's coordinates (a copy of
+//         its geometry moved by the frame; the shape itself for the identity).
+TopoDS_Shape shape_to_model(const TopoDS_Shape& shape, const Placement& frame);
 
 // Inputs:  polygon (outer counter-clockwise, holes clockwise), z, normal_up.
 // Outputs: the face in the plane z = const with that polygon as boundary, normal +Z (or -Z).

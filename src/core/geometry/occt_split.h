@@ -6,6 +6,7 @@
 // hundreds of episodes, and decomposition results are replayed through it (replay_cuts.h).
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include <TopoDS_Face.hxx>
@@ -20,5 +21,14 @@ namespace autoblock {
 //          when the line misses the face's interior.
 // Throws std::runtime_error when OpenCASCADE fails.
 std::vector<TopoDS_Face> split_face_along_line(const TopoDS_Face& face, CutDirection direction, double coordinate);
+
+// Inputs:  face (planar, parallel to XY); segments, each from a to b in the face's plane, ending on
+//          the face's boundary (or on each other) within fuzzy; fuzzy >= 0, OpenCASCADE's fuzzy value
+//          (gaps up to it count as touching).
+// Outputs: the faces the segments split the face into, collinear edges merged.
+// Throws std::runtime_error when OpenCASCADE fails.
+std::vector<TopoDS_Face> split_face_along_segments(const TopoDS_Face& face,
+                                                   const std::vector<std::pair<Point2, Point2>>& segments,
+                                                   double fuzzy);
 
 }  // namespace autoblock

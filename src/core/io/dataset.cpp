@@ -41,30 +41,50 @@ std::vector<std::string> collect_shape_files(const std::vector<std::string>& pat
   return files;
 }
 
-void write_dataset(const std::string& folder, const std::vector<GeneratedShape>& shapes,
-                   const nlohmann::json& generator) {
+namespace {
+
+// Writes folder/shape_NNNN.brep for each polygon and folder/index.json with entry(k) per shape.
+template <class Entry>
+void write_faces(const std::string& folder, const std::vector<RectilinearPolygon>& polygons, const nlohmann::json& generator,
+                 Entry entry) {
   std::error_code ec;
   fs::create_directories(folder, ec);
   if (!fs::is_directory(folder, ec)) throw InputError(folder + ": cannot create the folder");
   nlohmann::json index = {{"format", "autoblock-dataset"}, {"version", 1}, {"generator", generator}};
   index["shapes"] = nlohmann::json::array();
-  for (size_t k = 0; k < shapes.size(); ++k) {
+  for (size_t k = 0; k < polygons.size(); ++k) {
     char name[32];
     std::snprintf(name, sizeof name, "shape_%04zu.brep", k);
-    const GeneratedShape& shape = shapes[k];
-    const TopoDS_Face face = occt_face_from_polygon(shape.polygon, 0.0, true);
+    const RectilinearPolygon& polygon = polygons[k];
+    const TopoDS_Face face = occt_face_from_polygon(polygon, 0.0, true);
     if (!occt_shape_valid(face)) throw std::runtime_error(std::string("generated face ") + name + " is not valid");
     write_shape_file((fs::path(folder) / name).string(), face);
-    size_t corners = shape.polygon.outer.size();
-    for (const Ring& hole : shape.polygon.holes) corners += hole.size();
-    index["shapes"].push_back({{"file", name},
-                               {"rectangles", shape.rectangles},
-                               {"corners", corners},
-                               {"holes", shape.polygon.holes.size()},
-                               {"area", polygon_area(shape.polygon)},
-                               {"min_blocks", min_rectangles(make_grid_face(shape.polygon).whole)}});
+    size_t corners = polygon.outer.size();
+    for (const Ring& hole : polygon.holes) corners += hole.size();
+    nlohmann::json item = {{"file", name}, {"corners", corners}, {"holes", polygon.holes.size()}, {"area", polygon_area(polygon)}};
+    entry(k, item);
+    index["shapes"].push_back(item);
   }
   write_text_file((fs::path(folder) / "index.json").string(), index.dump(2) + "\n");
+}
+
+}  // namespace
+
+void write_dataset(const std::string& folder, const std::vector<GeneratedShape>& shapes,
+                   const nlohmann::json& generator) {
+  std::vector<RectilinearPolygon> polygons;
+  for (const GeneratedShape& shape : shapes) polygons.push_back(shape.polygon);
+  write_faces(folder, polygons, generator, [&](size_t k, nlohmann::json& item) {
+    item["rectangles"] = shapes[k].rectangles;
+    item["min_blocks"] = min_rectangles(make_grid_face(shapes[k].polygon).whole);
+  });
+}
+
+void write_general_dataset(const std::string& folder, const std::vector<GeneralShape>& shapes,
+                           const nlohmann::json& generator) {
+  std::vector<RectilinearPolygon> polygons;
+  for (const GeneralShape& shape : shapes) polygons.push_back(RectilinearPolygon{shape.outer, shape.holes});
+  write_faces(folder, polygons, generator, [](size_t, nlohmann::json&) {});
 }
 
 }  // namespace autoblock

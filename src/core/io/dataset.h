@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/data/general_generator.h"
 #include "core/data/shape_generator.h"
 #include "core/geometry/grid_face.h"
 
@@ -30,5 +31,10 @@ std::vector<std::string> collect_shape_files(const std::vector<std::string>& pat
 //          "shapes": [{"file", "rectangles", "corners", "holes", "area", "min_blocks"}]}.
 void write_dataset(const std::string& folder, const std::vector<GeneratedShape>& shapes,
                    const nlohmann::json& generator);
+
+// Inputs:  folder; shapes, general faces (general_generator.h); generator.
+// Outputs: as write_dataset, the index's shapes as {"file", "corners", "holes", "area"}.
+void write_general_dataset(const std::string& folder, const std::vector<GeneralShape>& shapes,
+                           const nlohmann::json& generator);
 
 }  // namespace autoblock

@@ -1,5 +1,7 @@
 #include "core/io/decomposition_json.h"
 
+#include <cmath>
+
 #include "core/geometry/part_boundary.h"
 
 namespace autoblock {
@@ -66,6 +68,69 @@ nlohmann::json decomposition_json(const std::string& input, const PlanarFace& fa
                     {"corners", corners},
                     {"holes", face.polygon.holes.size()},
                     {"bbox", {box.xmin, box.ymin, box.xmax, box.ymax}}};
+  return report;
+}
+
+nlohmann::json frame_json(const Placement& frame) {
+  return {{"rotation", frame.rotation}, {"translation", frame.translation}, {"identity", frame.identity()}};
+}
+
+nlohmann::json region_decomposition_json(const std::string& input, const InputFace& face, const RegionDecomposition& d) {
+  auto loop_json = [](const Ring& ring) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const Point2& p : ring) out.push_back(point_json(p.x, p.y));
+    return out;
+  };
+  auto region_loops = [&](const Region& r) {
+    nlohmann::json loops = nlohmann::json::array();
+    for (int k = 0; k < r.loop_count(); ++k) loops.push_back(loop_json(r.loop(k)));
+    return loops;
+  };
+  nlohmann::json report;
+  report["input"] = input;
+  report["engine"] = "general";
+  report["policy"] = d.policy;
+  report["reward"] = reward_preset_name(d.reward);
+  report["blocks"] = nlohmann::json::array();
+  for (const FinishedRegion& f : d.finished) {
+    nlohmann::json block{{"outline", loop_json(f.region.outer())}, {"template", f.is_template}};
+    block["corners"] = f.is_template ? nlohmann::json::array() : nlohmann::json(f.corners);
+    report["blocks"].push_back(block);
+  }
+  report["cuts"] = nlohmann::json::array();
+  for (const RegionCutRecord& c : d.cuts) {
+    nlohmann::json cut{{"part", c.part_id}, {"kind", action_kind_name(c.action)}, {"n_parts", c.n_parts}, {"reward", c.reward}};
+    if (c.action.kind == RegionAction::Kind::Cut) {
+      const RegionCut& rc = c.action.cut;
+      cut["origin"] = point_json(rc.origin.x, rc.origin.y);
+      cut["direction"] = point_json(rc.direction.x, rc.direction.y);
+      cut["angle_degrees"] = std::atan2(rc.direction.y, rc.direction.x) * 180.0 / M_PI;
+      cut["chords"] = nlohmann::json::array();
+      for (const Chord& chord : c.chords) cut["chords"].push_back({point_json(chord.a.x, chord.a.y), point_json(chord.b.x, chord.b.y)});
+    }
+    report["cuts"].push_back(cut);
+  }
+  report["return"] = d.total_return;
+  report["n_blocks"] = d.blocks;
+  report["n_templates"] = d.templates;
+  report["complete"] = d.complete();
+  report["truncated"] = d.status == EpisodeStatus::Truncated;
+  report["status"] = status_name(d.status);
+  report["time_capped"] = d.time_capped;
+  report["steps"] = d.cuts.size();
+  report["policy_steps"] = d.policy_steps;
+  report["seconds"] = d.seconds;
+  report["unfinished"] = nlohmann::json::array();
+  for (const Region& part : d.unfinished) report["unfinished"].push_back(region_loops(part));
+  const Region& r = face.region;
+  const Box box = r.bbox();
+  report["face"] = {{"z", face.planar.z},
+                    {"area", r.area()},
+                    {"corners", r.vertex_count()},
+                    {"holes", r.holes().size()},
+                    {"bbox", {box.xmin, box.ymin, box.xmax, box.ymax}},
+                    {"loops", region_loops(r)}};
+  report["frame"] = frame_json(face.frame);
   return report;
 }
 

@@ -7,6 +7,8 @@
 
 #include "core/env/decomposition.h"
 #include "core/geometry/planar_face.h"
+#include "core/io/input_face.h"
+#include "core/region/region_policy.h"
 
 namespace autoblock {
 
@@ -17,5 +19,20 @@ namespace autoblock {
 //          "unfinished" (corner loops of parts left when truncated) and "face" (z, area, corners,
 //          holes, bounding box).
 nlohmann::json decomposition_json(const std::string& input, const PlanarFace& face, const Decomposition& decomposition);
+
+// Inputs:  input, the file name; face, the checked face; decomposition, the general engine's.
+// Outputs: {"input", "engine": "general", "policy", "reward", "blocks": [{"outline": [[x,y], ...]
+//          counter-clockwise, "corners": [i,j,k,l] (indices into outline; empty for a template),
+//          "template": bool}, ...], "cuts": [{"part", "kind" (full, partial, template), "origin":
+//          [x,y], "direction": [dx,dy], "angle_degrees", "n_parts", "reward", "chords": [[[x,y],[x,y]],
+//          ...]}], "return", "n_blocks", "n_templates", "complete", "truncated", "status", "time_capped",
+//          "steps", "policy_steps", "seconds", "unfinished" (loops of parts left), "face"}.
+//          Coordinates are the face's frame's (see "frame").
+nlohmann::json region_decomposition_json(const std::string& input, const InputFace& face,
+                                         const RegionDecomposition& decomposition);
+
+// Inputs: frame. Output: {"rotation": [9 numbers, row-major], "translation": [x,y,z], "identity": bool}:
+//         a point (x, y, z) of the report is the model's point rotation (x, y, z) + translation.
+nlohmann::json frame_json(const Placement& frame);
 
 }  // namespace autoblock

@@ -1,5 +1,7 @@
 #include "core/io/face_selection.h"
 
+#include "core/io/input_face.h"
+
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
 #include <TopExp.hxx>
@@ -56,9 +58,10 @@ std::vector<FaceSummary> list_faces(const TopoDS_Shape& shape) {
       summary.normal[2] = normal.Z();
     }
     try {
-      make_grid_face(planar_face_from_occt(face).polygon);
+      input_face_from_occt(face, "");  // the same checks as every command's
     } catch (const InputError& e) {
-      summary.problem = e.what();
+      const std::string message = e.what();
+      summary.problem = message.rfind(": ", 0) == 0 ? message.substr(2) : message;
     }
     list.push_back(summary);
   }

@@ -1,5 +1,6 @@
 #include "core/io/input_face.h"
 
+#include <BRepBuilderAPI_Transform.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom2d_Curve.hxx>
@@ -25,6 +26,7 @@
 #include "core/geometry/occt_face.h"
 #include "core/io/face_selection.h"
 #include "core/io/shape_file.h"
+#include "core/region/validate_region.h"
 
 namespace autoblock {
 namespace {
@@ -109,12 +111,25 @@ double smallest_feature(const Grid& grid) {
   return smallest;
 }
 
+// The shortest edge of a general face: its smallest feature.
+double smallest_feature(const Region& region) {
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < region.loop_count(); ++k) {
+    const Ring& ring = region.loop(k);
+    for (size_t i = 0; i < ring.size(); ++i) {
+      const Point2 a = ring[i], b = ring[(i + 1) % ring.size()];
+      smallest = std::min(smallest, std::hypot(b.x - a.x, b.y - a.y));
+    }
+  }
+  return smallest;
+}
+
 // What OpenCASCADE needs beyond the polygon checks before it cuts the face (tolerance, the largest
-// of its tolerances, from check_finite_geometry): a face its own checker accepts (edges on their vertices, curves on the surface, ...), with tolerances small against
-// the face's smallest feature (else its fuzzy intersections merge what the grid engine keeps
+// of its tolerances, from check_finite_geometry; feature, the face's smallest feature): a face its
+// own checker accepts (edges on their vertices, curves on the surface, ...), with tolerances small
+// against the face's smallest feature (else its fuzzy intersections merge what the engines keep
 // apart, or run for ever). Throws InputError.
-void check_occt_face(const TopoDS_Face& face, double tolerance, const GridFace& grid) {
-  const double feature = smallest_feature(*grid.grid);
+void check_occt_face(const TopoDS_Face& face, double tolerance, double feature) {
   if (!(tolerance < 0.5 * feature)) {
     throw InputError("the face's OpenCASCADE tolerance " + format_number(tolerance) +
                      " is not small against its smallest feature " + format_number(feature) +
@@ -124,6 +139,14 @@ void check_occt_face(const TopoDS_Face& face, double tolerance, const GridFace& 
     throw InputError("OpenCASCADE's checker finds the face invalid (an edge off its vertices or its surface, "
                      "a broken wire or curve)");
   }
+}
+
+// The face carried into its frame (a copy of its geometry); the face itself for the identity.
+TopoDS_Face face_in_frame(const TopoDS_Face& face, const Placement& frame) {
+  if (frame.identity()) return face;
+  BRepBuilderAPI_Transform move(face, frame.to_frame(), true);
+  if (!move.IsDone()) throw InputError("OpenCASCADE cannot carry the face into its own frame");
+  return TopoDS::Face(move.Shape());
 }
 
 }  // namespace
@@ -153,12 +176,27 @@ InputFace input_face_from_brep_text(const std::string& text, const std::string& 
 InputFace input_face_from_occt(const TopoDS_Face& face, const std::string& source) {
   InputFace input;
   input.source = source;
+  input.model = face;
   input.occt = face;
   try {
     const double tolerance = face.IsNull() ? 0.0 : check_finite_geometry(face);
-    input.planar = planar_face_from_occt(face);
-    input.grid = make_grid_face(input.planar.polygon);
-    check_occt_face(face, tolerance, input.grid);
+    if (!face.IsNull()) {
+      input.frame = face_frame(face);
+      input.occt = face_in_frame(face, input.frame);
+    }
+    const FaceRings read = read_face_rings(input.occt);
+    input.planar.z = read.z;
+    input.planar.normal_up = read.normal_up;
+    if (rings_rectilinear(read.rings)) {
+      input.planar.polygon = validate_rings(read.rings, &input.planar.tolerance);
+      check_vertices_on_plane(read, input.planar.tolerance);
+      input.grid = make_grid_face(input.planar.polygon);
+      check_occt_face(input.occt, tolerance, smallest_feature(*input.grid.grid));
+    } else {
+      input.region = validate_general_rings(read.rings, &input.planar.tolerance);
+      check_vertices_on_plane(read, input.planar.tolerance);
+      check_occt_face(input.occt, tolerance, smallest_feature(input.region));
+    }
   } catch (const InputError& e) {
     throw InputError(source + ": " + e.what());
   } catch (const Standard_Failure& e) {
@@ -167,6 +205,14 @@ InputFace input_face_from_occt(const TopoDS_Face& face, const std::string& sourc
                      e.GetMessageString() + ")");
   }
   return input;
+}
+
+void require_rectilinear(const InputFace& face, const std::string& what, const std::string& instead) {
+  if (face.is_general()) {
+    throw InputError(face.source + ": " + what +
+                     " works on faces whose edges run along two perpendicular directions; this face has edges at "
+                     "other angles (" + (instead.empty() ? "decompose it with the general engine: policies auto, search, greedy, random" : instead) + ")");
+  }
 }
 
 }  // namespace autoblock

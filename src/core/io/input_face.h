@@ -1,5 +1,7 @@
-// An input face in every form the pipeline needs: as OpenCASCADE holds it, validated, and on its
-// grid.
+// An input face in every form the pipeline needs: as the model holds it, in its own frame (see
+// occt_face.h, face_frame), validated, and either on its grid (a face whose edges run along two
+// perpendicular directions: the grid engine) or as a general region (edges at any angle: the
+// general engine, core/region).
 #pragma once
 
 #include <string>
@@ -7,16 +9,27 @@
 #include <TopoDS_Face.hxx>
 
 #include "core/geometry/grid_face.h"
+#include "core/geometry/placement.h"
 #include "core/geometry/planar_face.h"
+#include "core/region/region.h"
 
 namespace autoblock {
 
 struct InputFace {
   std::string source;  // file name or a description, for messages and reports
-  TopoDS_Face occt;
-  PlanarFace planar;
-  GridFace grid;
+  TopoDS_Face model;   // the face as given
+  Placement frame;     // the face's own frame in the model (identity: the model's coordinates)
+  TopoDS_Face occt;    // the face in its frame: in a plane z = const (planar.z)
+  PlanarFace planar;   // validated in its frame (a general face: z, normal_up and tolerance only)
+  GridFace grid;       // a rectilinear face on its grid; empty for a general face
+  Region region;       // a general face as a region on its lattice; empty for a rectilinear face
+  bool is_general() const { return !region.is_empty(); }
 };
+
+// Inputs: face; what, the action for the message ("meshing", ...); instead, what the user can do
+//         (empty: decompose it with the general engine's policies).
+// Throws InputError when the face is general: the action needs the grid engine.
+void require_rectilinear(const InputFace& face, const std::string& what, const std::string& instead = "");
 
 // Inputs:  path (.brep, .step, .stp); face_number, which face of the file (1-based, as FreeCAD numbers
 //          them; 0: the file's only face); how_to_choose, said when the choice is missing or out of

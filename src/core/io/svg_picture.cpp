@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/io/xml_escape.h"
+#include "core/region/block.h"
 
 namespace autoblock {
 
@@ -30,50 +31,96 @@ std::string block_colour(int index) {
   return buf;
 }
 
-std::string decomposition_svg(const RectilinearPolygon& polygon, const std::vector<Box>& blocks,
-                              const std::vector<CutRecord>& cuts, const std::string& title) {
-  const Box box = ring_bbox(polygon.outer);
-  const double margin = 24, title_height = 46, target = 720, min_width = 640;
-  const double k = target / box.longer_side();
-  const double width = std::max(min_width, box.width() * k + 2 * margin);
-  const double height = box.height() * k + 2 * margin + title_height;
-  const double left = 0.5 * (width - box.width() * k);
-  auto sx = [&](double x) { return left + (x - box.xmin) * k; };
-  auto sy = [&](double y) { return title_height + margin + (box.ymax - y) * k; };
+namespace {
+
+// A picture of a face: the model's box scaled into the page (y up), a title of two lines.
+struct Canvas {
+  Box box;
+  double margin = 24, title_height = 46, k = 1, left = 0, width = 0, height = 0;
   std::ostringstream svg;
-  svg.precision(6);
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
-      << "\" viewBox=\"0 0 " << width << ' ' << height << "\">\n";
-  svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  // The title's first line, then the rest after " | ".
-  const size_t bar = title.find(" | ");
-  const std::string lines[2] = {title.substr(0, bar), bar == std::string::npos ? "" : title.substr(bar + 3)};
-  for (int l = 0; l < 2; ++l) {
-    svg << "<text x=\"" << margin << "\" y=\"" << 20 + 18 * l << "\" font-family=\"sans-serif\" font-size=\"" << (l ? 13 : 15)
-        << "\">" << xml_escape(lines[l]) << "</text>\n";
+
+  Canvas(const Box& b, const std::string& title) : box(b) {
+    const double target = 720, min_width = 640;
+    k = target / box.longer_side();
+    width = std::max(min_width, box.width() * k + 2 * margin);
+    height = box.height() * k + 2 * margin + title_height;
+    left = 0.5 * (width - box.width() * k);
+    svg.precision(6);
+    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+        << "\" viewBox=\"0 0 " << width << ' ' << height << "\">\n";
+    svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    // The title's first line, then the rest after " | ".
+    const size_t bar = title.find(" | ");
+    const std::string lines[2] = {title.substr(0, bar), bar == std::string::npos ? "" : title.substr(bar + 3)};
+    for (int l = 0; l < 2; ++l) {
+      svg << "<text x=\"" << margin << "\" y=\"" << 20 + 18 * l << "\" font-family=\"sans-serif\" font-size=\"" << (l ? 13 : 15)
+          << "\">" << xml_escape(lines[l]) << "</text>\n";
+    }
   }
-  for (size_t b = 0; b < blocks.size(); ++b) {
-    const Box& r = blocks[b];
-    svg << "<rect x=\"" << sx(r.xmin) << "\" y=\"" << sy(r.ymax) << "\" width=\"" << r.width() * k << "\" height=\""
-        << r.height() * k << "\" fill=\"" << block_colour(static_cast<int>(b))
-        << "\" stroke=\"#333\" stroke-width=\"1\"/>\n";
-  }
-  svg << "<path fill=\"none\" stroke=\"black\" stroke-width=\"2.5\" stroke-linejoin=\"miter\" d=\"";
-  auto ring_path = [&](const Ring& ring) {
+  double sx(double x) const { return left + (x - box.xmin) * k; }
+  double sy(double y) const { return title_height + margin + (box.ymax - y) * k; }
+  void ring_path(const Ring& ring) {
     for (size_t i = 0; i < ring.size(); ++i) svg << (i == 0 ? "M" : "L") << sx(ring[i].x) << ',' << sy(ring[i].y) << ' ';
     svg << "Z ";
-  };
-  ring_path(polygon.outer);
-  for (const Ring& hole : polygon.holes) ring_path(hole);
-  svg << "\"/>\n";
-  for (size_t c = 0; c < cuts.size(); ++c) {
-    const double x = sx(cuts[c].position.x), y = sy(cuts[c].position.y);
+  }
+  void outline(const Ring& outer, const std::vector<Ring>& holes) {
+    svg << "<path fill=\"none\" stroke=\"black\" stroke-width=\"2.5\" stroke-linejoin=\"miter\" d=\"";
+    ring_path(outer);
+    for (const Ring& hole : holes) ring_path(hole);
+    svg << "\"/>\n";
+  }
+  void cut_mark(Point2 p, size_t number) {
+    const double x = sx(p.x), y = sy(p.y);
     svg << "<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"4\" fill=\"#c0392b\"/>"
         << "<text x=\"" << x + 5 << "\" y=\"" << y - 5
-        << "\" font-family=\"sans-serif\" font-size=\"11\" fill=\"#c0392b\">" << c + 1 << "</text>\n";
+        << "\" font-family=\"sans-serif\" font-size=\"11\" fill=\"#c0392b\">" << number << "</text>\n";
   }
-  svg << "</svg>\n";
-  return svg.str();
+  std::string finish() {
+    svg << "</svg>\n";
+    return svg.str();
+  }
+};
+
+}  // namespace
+
+std::string decomposition_svg(const RectilinearPolygon& polygon, const std::vector<Box>& blocks,
+                              const std::vector<CutRecord>& cuts, const std::string& title) {
+  Canvas c(ring_bbox(polygon.outer), title);
+  for (size_t b = 0; b < blocks.size(); ++b) {
+    const Box& r = blocks[b];
+    c.svg << "<rect x=\"" << c.sx(r.xmin) << "\" y=\"" << c.sy(r.ymax) << "\" width=\"" << r.width() * c.k
+          << "\" height=\"" << r.height() * c.k << "\" fill=\"" << block_colour(static_cast<int>(b))
+          << "\" stroke=\"#333\" stroke-width=\"1\"/>\n";
+  }
+  c.outline(polygon.outer, polygon.holes);
+  for (size_t k = 0; k < cuts.size(); ++k) c.cut_mark(cuts[k].position, k + 1);
+  return c.finish();
+}
+
+std::string region_decomposition_svg(const Region& face, const RegionDecomposition& d, const std::string& title) {
+  Canvas c(face.bbox(), title);
+  for (size_t b = 0; b < d.finished.size(); ++b) {
+    const FinishedRegion& f = d.finished[b];
+    c.svg << "<path fill=\"" << block_colour(static_cast<int>(b)) << "\" stroke=\"#333\" stroke-width=\"1\" d=\"";
+    c.ring_path(f.region.outer());
+    c.svg << "\"/>\n";
+    if (f.is_template) {  // the template's quads, dashed
+      c.svg << "<path fill=\"none\" stroke=\"#333\" stroke-width=\"0.8\" stroke-dasharray=\"4 3\" d=\"";
+      for (const auto& quad : template_quads(f.region)) c.ring_path(Ring(quad.begin(), quad.end()));
+      c.svg << "\"/>\n";
+    }
+  }
+  for (const Region& part : d.unfinished) {
+    c.svg << "<path fill=\"#eeeeee\" fill-rule=\"evenodd\" stroke=\"#999\" stroke-width=\"1\" d=\"";
+    c.ring_path(part.outer());
+    for (const Ring& hole : part.holes()) c.ring_path(hole);
+    c.svg << "\"/>\n";
+  }
+  c.outline(face.outer(), face.holes());
+  for (size_t k = 0; k < d.cuts.size(); ++k) {
+    if (d.cuts[k].action.kind == RegionAction::Kind::Cut) c.cut_mark(d.cuts[k].action.cut.origin, k + 1);
+  }
+  return c.finish();
 }
 
 }  // namespace autoblock

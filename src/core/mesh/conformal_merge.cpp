@@ -1,7 +1,9 @@
 #include "core/mesh/conformal_merge.h"
 
 #include <BRepAlgoAPI_BuilderAlgo.hxx>
+#include <BRepGProp.hxx>
 #include <BRep_Builder.hxx>
+#include <GProp_GProps.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
@@ -15,7 +17,7 @@
 
 namespace autoblock {
 
-ConformalBlocks conformal_merge(const std::vector<TopoDS_Face>& blocks) {
+ConformalBlocks conformal_merge(const std::vector<TopoDS_Face>& blocks, double fuzzy) {
   if (blocks.empty()) throw std::runtime_error("conformal_merge: no blocks");
   if (blocks.size() == 1) {  // a rectangular face: nothing to merge (the general fuse wants two)
     ConformalBlocks single;
@@ -31,6 +33,7 @@ ConformalBlocks conformal_merge(const std::vector<TopoDS_Face>& blocks) {
   builder.SetArguments(arguments);
   builder.SetRunParallel(false);
   builder.SetNonDestructive(true);  // the input faces stay untouched
+  if (fuzzy > 0) builder.SetFuzzyValue(fuzzy);
   try {
     builder.Build();
   } catch (const Standard_Failure& e) {
@@ -55,7 +58,13 @@ ConformalBlocks conformal_merge(const std::vector<TopoDS_Face>& blocks) {
       face = TopoDS::Face(images.First());
     }
     const double area = occt_area(blocks[b]);
-    if (std::fabs(occt_area(face) - area) > 1e-9 * std::max(1.0, area)) {
+    double slack = 1e-9 * std::max(1.0, area);
+    if (fuzzy > 0) {
+      GProp_GProps lengths;
+      BRepGProp::LinearProperties(blocks[b], lengths);
+      slack += fuzzy * lengths.Mass();
+    }
+    if (std::fabs(occt_area(face) - area) > slack) {
       throw std::runtime_error("conformal merge: block " + std::to_string(b + 1) + " changed its area");
     }
     result.faces.push_back(face);

@@ -18,10 +18,13 @@ struct ConformalBlocks {
   std::vector<TopoDS_Face> faces;   // one per input block, same order
 };
 
-// Inputs:  blocks, planar faces in one plane that do not overlap (e.g. replay_cuts_occt's).
-// Outputs: the merged model. Each face has the same area as its block.
+// Inputs:  blocks, planar faces in one plane that do not overlap (e.g. replay_cuts_occt's); fuzzy,
+//          OpenCASCADE's fuzzy value (0: exact; a general face's blocks, whose cut ends were rounded
+//          to the face's lattice, use its quantum).
+// Outputs: the merged model. Each face has the same area as its block (within 1e-9 relative, plus
+//          fuzzy times its perimeter).
 // Throws std::runtime_error when OpenCASCADE fails, a block does not come back as exactly one
 // face, or the result fails BRepCheck_Analyzer.
-ConformalBlocks conformal_merge(const std::vector<TopoDS_Face>& blocks);
+ConformalBlocks conformal_merge(const std::vector<TopoDS_Face>& blocks, double fuzzy = 0.0);
 
 }  // namespace autoblock

@@ -59,17 +59,6 @@ void put_node(std::string& out, const QuadMesh& mesh, size_t id, const MeshPlace
 
 }  // namespace
 
-bool MeshPlacement::identity() const {
-  return rotation == std::array<double, 9>{1, 0, 0, 0, 1, 0, 0, 0, 1} && translation == std::array<double, 3>{0, 0, 0};
-}
-
-std::array<double, 3> MeshPlacement::apply(double x, double y, double z) const {
-  if (identity()) return {x, y, z};  // bitwise: no arithmetic on the identity
-  const auto& r = rotation;
-  return {r[0] * x + r[1] * y + r[2] * z + translation[0], r[3] * x + r[4] * y + r[5] * z + translation[1],
-          r[6] * x + r[7] * y + r[8] * z + translation[2]};
-}
-
 std::string gmsh_msh41(const QuadMesh& mesh, const MeshPlacement& placement) {
   const size_t n_blocks = static_cast<size_t>(mesh.blocks);
   // Owner block of every node (first block using it), quads and bounds per block.

@@ -12,19 +12,15 @@
 #include <array>
 #include <string>
 
+#include "core/geometry/placement.h"
 #include "core/mesh/quad_mesh.h"
 
 namespace autoblock {
 
-// Where the mesh's plane lies in the model: the node (x, y, z) is written as rotation (x, y, z) +
-// translation (row-major rotation). A front end whose face lies in another plane (a CAD model's
-// side face, carried into the XY plane for the core) writes the nodes where the face is.
-struct MeshPlacement {
-  std::array<double, 9> rotation{1, 0, 0, 0, 1, 0, 0, 0, 1};
-  std::array<double, 3> translation{0, 0, 0};
-  bool identity() const;
-  std::array<double, 3> apply(double x, double y, double z) const;
-};
+// Where the mesh's plane lies in the model (geometry/placement.h): a front end whose face lies in
+// another plane (a CAD model's side face, carried into its own frame for the core) writes the nodes
+// where the face is.
+using MeshPlacement = Placement;
 
 // Inputs: mesh; placement. Output: the file's text.
 std::string gmsh_msh41(const QuadMesh& mesh, const MeshPlacement& placement = {});

@@ -46,6 +46,7 @@ double target_size_for(const InputFace& face, double size) {
 }
 
 MeshResult mesh_decomposition(const InputFace& face, const Decomposition& d, const MeshOptions& options) {
+  require_rectilinear(face, "meshing");
   if (!d.complete()) {
     const size_t left = d.unfinished.size();
     throw InputError("the decomposition is incomplete (" + counted(static_cast<long long>(left), "part") +

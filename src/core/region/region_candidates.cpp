@@ -149,6 +149,11 @@ RegionAction progress_action(const Region& part, const BlockRules& rules) {
     if (makes_progress(part, cut_region(part, action.cut).pieces, rules)) return action;
   }
   if (template_applies(part)) return {RegionAction::Kind::Template, {}};
+  // Last resort: a cut that does not keep clear of the vertices (region_cut.h).
+  for (RegionAction action : tries) {
+    action.cut.forced = true;
+    if (makes_progress(part, cut_region(part, action.cut).pieces, rules)) return action;
+  }
   return tries.empty() ? RegionAction{RegionAction::Kind::Template, {}} : tries.front();
 }
 

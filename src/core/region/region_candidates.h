@@ -46,7 +46,8 @@ bool makes_progress(const Region& part, const std::vector<Region>& pieces, const
 //          opens the hole); else a partial cut along an edge's extension from a reflex vertex (it
 //          removes the reflex vertex); else, on a convex part with five or more corners, a partial
 //          cut between two opposite corners; else the template. Each is tried in turn (vertex by
-//          vertex) until one makes progress.
+//          vertex) until one makes progress; if none does, the same cuts forced (RegionCut::forced:
+//          even one grazing a vertex).
 RegionAction progress_action(const Region& part, const BlockRules& rules = {});
 
 }  // namespace autoblock

@@ -228,6 +228,29 @@ bool tiles(const Region& region, const std::vector<Region>& pieces) {
   return std::fabs(area - region.area()) <= region.quantum() * length;
 }
 
+// True when the cut keeps clear of the region's vertices and leaves no sliver: every vertex of the
+// region that is not an end of a chord lies farther than 2 q from every chord, and no piece has an
+// area of at most q times its perimeter. A cut that grazes a vertex, ends within 2 q of a corner, or
+// leaves a neck or a sliver narrower than the lattice can tell is one that OpenCASCADE, cutting the
+// real face at the face's tolerance, would read differently (see region_cut.h).
+bool acceptable(const Region& region, const std::vector<Region>& pieces, const std::vector<Chord>& chords, bool forced) {
+  if (!tiles(region, pieces)) return false;
+  if (forced) return true;
+  const double q = region.quantum();
+  for (const Region& piece : pieces) {
+    if (piece.area() <= q * region_perimeter(piece)) return false;
+  }
+  for (int k = 0; k < region.loop_count(); ++k) {
+    for (const Point2& v : region.loop(k)) {
+      for (const Chord& c : chords) {
+        if ((v.x == c.a.x && v.y == c.a.y) || (v.x == c.b.x && v.y == c.b.y)) continue;
+        if (segment_distance(v, c.a, c.b) <= 2.0 * q) return false;
+      }
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 CutOutcome cut_region_by_arrangement(const Region& region, const RegionCut& cut) {
@@ -274,7 +297,7 @@ CutOutcome cut_region_by_arrangement(const Region& region, const RegionCut& cut)
     if (!piece.holes().empty() && loops_touch(piece)) return unchanged;
     outcome.pieces.push_back(std::move(piece));
   }
-  if (outcome.pieces.size() < 2 || !tiles(region, outcome.pieces)) return unchanged;
+  if (outcome.pieces.size() < 2) return unchanged;
   std::sort(outcome.pieces.begin(), outcome.pieces.end(), lower_left);
   // The chords: cut edges with the interior on at least one side.
   for (auto edge = arrangement.edges_begin(); edge != arrangement.edges_end(); ++edge) {
@@ -285,6 +308,7 @@ CutOutcome cut_region_by_arrangement(const Region& region, const RegionCut& cut)
     if (edge->face()->is_unbounded() && edge->twin()->face()->is_unbounded()) continue;
     outcome.chords.push_back({rounded(edge->source()->point(), q), rounded(edge->target()->point(), q)});
   }
+  if (!acceptable(region, outcome.pieces, outcome.chords, cut.forced)) return unchanged;
   return outcome;
 }
 
@@ -294,7 +318,7 @@ CutOutcome cut_region(const Region& region, const RegionCut& cut) {
     CutOutcome outcome;
     Chord chord;
     if (split_simple(region, cut, &outcome.pieces, &chord)) {
-      if (outcome.pieces.size() < 2 || !tiles(region, outcome.pieces)) return {{region}, {}};
+      if (outcome.pieces.size() < 2 || !acceptable(region, outcome.pieces, {chord}, cut.forced)) return {{region}, {}};
       std::sort(outcome.pieces.begin(), outcome.pieces.end(), lower_left);
       outcome.chords.push_back(chord);
       return outcome;

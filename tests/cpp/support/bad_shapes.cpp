@@ -35,7 +35,8 @@ std::vector<BadShape> bad_shapes() {
     const TopoDS_Wire wire = BRepBuilderAPI_MakeWire(circle).Wire();
     shapes.push_back({"curved-edge", BRepBuilderAPI_MakeFace(wire).Face(), "is a circular arc"});
   }
-  shapes.push_back({"slanted-edge", raw_polygon_face({{0, 0}, {2, 0}, {1, 2}}), "is not parallel to the X or Y axis"});
+  // Edges at any angle are accepted (the general engine); a corner of 1.7 degrees is not.
+  shapes.push_back({"sharp-corner", raw_polygon_face({{0, 0}, {100, 0}, {0, 3}}), "sharper than the smallest supported"});
   {
     const TopoDS_Shape cylinder = BRepPrimAPI_MakeCylinder(1.0, 2.0).Shape();
     for (TopExp_Explorer faces(cylinder, TopAbs_FACE); faces.More(); faces.Next()) {
@@ -47,9 +48,13 @@ std::vector<BadShape> bad_shapes() {
     }
   }
   {
-    BRepBuilderAPI_MakePolygon polygon(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0), gp_Pnt(1, 0, 1), gp_Pnt(0, 0, 1), true);
-    shapes.push_back({"other-plane", BRepBuilderAPI_MakeFace(polygon.Wire(), true).Face(),
-                      "only faces parallel to the XY plane are supported"});
+    // Faces in any plane are accepted (in their own frame); this one in the XZ plane crosses itself.
+    BRepBuilderAPI_MakePolygon polygon;
+    for (const auto& [x, z] : std::vector<std::pair<double, double>>{{0, 0}, {2, 0}, {2, 2}, {1, 2}, {1, -1}, {0, -1}}) {
+      polygon.Add(gp_Pnt(x, 0, z));
+    }
+    polygon.Close();
+    shapes.push_back({"other-plane-crossing", BRepBuilderAPI_MakeFace(polygon.Wire(), true).Face(), "crosses itself"});
   }
   shapes.push_back({"self-crossing", raw_polygon_face({{0, 0}, {2, 0}, {2, 2}, {1, 2}, {1, -1}, {0, -1}}),
                     "crosses itself at (1, 0)"});

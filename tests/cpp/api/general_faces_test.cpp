@@ -1,0 +1,143 @@
+// Faces in any plane, turned within their plane, and with edges at any angle, through core/api: the
+// face's own frame (occt_face.h, face_frame) and the general engine behind decompose_input_face.
+#include "support/catch_torch.h"
+
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <Bnd_Box.hxx>
+#include <TopoDS.hxx>
+#include <gp_Ax1.hxx>
+#include <gp_Trsf.hxx>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "core/api/face_actions.h"
+#include "core/baselines/min_rectangles.h"
+#include "core/common/error.h"
+#include "core/data/general_generator.h"
+#include "core/geometry/occt_face.h"
+#include "core/geometry/occt_properties.h"
+#include "support/test_shapes.h"
+
+using namespace autoblock;
+
+namespace {
+
+TopoDS_Face moved(const TopoDS_Face& face, const gp_Trsf& move) {
+  return TopoDS::Face(BRepBuilderAPI_Transform(face, move, true).Shape());
+}
+
+// A rotation about a skew axis through (5, -3, 2), then a shift: the face ends up in a tilted plane.
+gp_Trsf tilt() {
+  gp_Trsf rotation, shift;
+  rotation.SetRotation(gp_Ax1(gp_Pnt(5, -3, 2), gp_Dir(1, 2, 3)), 0.7);
+  shift.SetTranslation(gp_Vec(10, 20, -30));
+  return shift * rotation;
+}
+
+gp_Trsf turn_about_z(double radians) {
+  gp_Trsf t;
+  t.SetRotation(gp_Ax1(gp_Pnt(1, 2, 0), gp_Dir(0, 0, 1)), radians);
+  return t;
+}
+
+// The largest distance between the corners of two shapes' bounding boxes.
+double box_distance(const TopoDS_Shape& a, const TopoDS_Shape& b) {
+  Bnd_Box ba, bb;
+  BRepBndLib::Add(a, ba, false);
+  BRepBndLib::Add(b, bb, false);
+  return std::max(ba.CornerMin().Distance(bb.CornerMin()), ba.CornerMax().Distance(bb.CornerMax()));
+}
+
+TopoDS_Face general_face(std::uint64_t seed, GeneralKind kind, bool holes) {
+  std::mt19937_64 rng(seed);
+  GeneralOptions options;
+  options.kind = kind;
+  options.holes = holes;
+  const GeneralShape shape = generate_general_shape(rng, options);
+  return occt_face_from_polygon(RectilinearPolygon{shape.outer, shape.holes}, 0.0, true);
+}
+
+}  // namespace
+
+TEST_CASE("a rectilinear face in a tilted plane or turned in its plane gets its axis-aligned twin's blocks",
+          "[api][frame]") {
+  const TopoDS_Face flat = occt_face_from_polygon(test::polygon_of(test::l_shape()), 0.0, true);
+  const InputFace twin = check_face(flat, "flat");
+  REQUIRE(twin.frame.identity());
+  DecomposeSettings settings;
+  settings.policy = "optimal";
+  const FaceDecomposition expected = decompose_input_face(twin, settings);
+  for (const gp_Trsf& move : {tilt(), turn_about_z(0.5), turn_about_z(-1.2)}) {
+    const TopoDS_Face model = moved(flat, move);
+    const InputFace face = check_face(model, "moved");
+    REQUIRE_FALSE(face.is_general());
+    CHECK_FALSE(face.frame.identity());
+    CHECK(polygon_area(face.planar.polygon) == Approx(polygon_area(twin.planar.polygon)).epsilon(1e-9));
+    CHECK(min_rectangles(face.grid.whole) == min_rectangles(twin.grid.whole));
+    const FaceDecomposition result = decompose_input_face(face, settings);
+    CHECK(result.decomposition.blocks.size() == expected.decomposition.blocks.size());
+    CHECK(result.decomposition.total_return == Approx(expected.decomposition.total_return).epsilon(1e-9));
+    // The blocks come back where the face is in the model.
+    CHECK(occt_area(result.shape) == Approx(occt_area(model)).epsilon(1e-9));
+    CHECK(box_distance(result.shape, model) < 1e-6);
+    CHECK(occt_shape_valid(result.shape));
+  }
+}
+
+TEST_CASE("a face with edges at any angle goes to the general engine; OpenCASCADE cuts its blocks", "[api][general]") {
+  int faces = 0;
+  for (const GeneralKind kind : {GeneralKind::Polygon, GeneralKind::Chamfered, GeneralKind::Turned}) {
+    for (const bool holes : {false, true}) {
+      for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        const TopoDS_Face occt = general_face(seed * 7 + (holes ? 100 : 0), kind, holes);
+        for (const bool tilted : {false, true}) {
+          const TopoDS_Face model = tilted ? moved(occt, tilt()) : occt;
+          const InputFace face = check_face(model, "general");
+          INFO(general_kind_name(kind) << " holes " << holes << " seed " << seed << " tilted " << tilted);
+          // A turned union of rectangles is rectilinear in its own frame: the grid engine takes it.
+          CHECK(face.is_general() == (kind != GeneralKind::Turned));
+          CHECK(face.frame.identity() == (!tilted && kind != GeneralKind::Turned));
+          DecomposeSettings settings;
+          settings.policy = "greedy";
+          const FaceDecomposition result = decompose_input_face(face, settings);
+          const size_t pieces = face.is_general() ? result.region.finished.size() : result.decomposition.blocks.size();
+          CHECK((face.is_general() ? result.region.complete() : result.decomposition.complete()));
+          CHECK(result.block_faces.size() == pieces);
+          CHECK(occt_area(result.shape) == Approx(occt_area(model)).epsilon(1e-6));
+          CHECK(box_distance(result.shape, model) < 1e-6 * 200);
+          CHECK(occt_shape_valid(result.shape));
+          ++faces;
+        }
+      }
+    }
+  }
+  CHECK(faces == 36);
+  // A face that is a block already (a parallelogram): no cut, one block, the face itself.
+  const InputFace parallelogram = check_face(
+      occt_face_from_polygon(RectilinearPolygon{{{0, 0}, {4, 0}, {5, 2}, {1, 2}}, {}}, 1.0, true), "parallelogram");
+  REQUIRE(parallelogram.is_general());
+  const FaceDecomposition one = decompose_input_face(parallelogram, DecomposeSettings{});
+  CHECK(one.region.blocks == 1);
+  CHECK(one.region.cuts.empty());
+  REQUIRE(one.block_faces.size() == 1);
+  CHECK(occt_area(one.shape) == Approx(8.0));
+}
+
+TEST_CASE("general faces: grid-only actions and learned policies say so", "[api][general][errors]") {
+  const InputFace face = check_face(general_face(5, GeneralKind::Polygon, false), "polygon");
+  REQUIRE(face.is_general());
+  DecomposeSettings settings;
+  settings.policy = "sac-mesh";
+  CHECK_THROWS_WITH(decompose_input_face(face, settings), Catch::Contains("this face has edges at other angles"));
+  settings.policy = "search";
+  settings.policy_settings.time_limit = 2.0;
+  settings.occt_blocks = false;
+  const FaceDecomposition searched = decompose_input_face(face, settings);
+  CHECK(searched.region.complete());
+  CHECK(searched.block_faces.empty());
+  CHECK_THROWS_WITH(face_mesh(face, {}, 0, RewardPreset::Paper, MeshOptions{}), Catch::Contains("meshing works on faces"));
+  CHECK_THROWS_AS(face_step(face, {}, 0), InputError);
+}

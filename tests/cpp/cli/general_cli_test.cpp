@@ -1,0 +1,57 @@
+// `autoblock generate --kind` and `autoblock decompose` on general faces (edges at any angle).
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "support/run_command.h"
+#include "support/test_shapes.h"
+
+using namespace autoblock;
+using Catch::Matchers::Contains;
+
+TEST_CASE("autoblock decomposes generated general faces: report, picture and OpenCASCADE blocks", "[cli][general]") {
+  const std::string folder = test::temporary_folder("cli-general");
+  REQUIRE(test::run_autoblock("generate --kind polygon --holes --count 2 --seed 4 --out '" + folder + "/poly'").exit_code == 0);
+  REQUIRE(test::run_autoblock("generate --kind chamfered --count 1 --seed 4 --out '" + folder + "/cham'").exit_code == 0);
+  const nlohmann::json index = test::read_json(folder + "/poly/index.json");
+  CHECK(index["generator"]["kind"] == "polygon");
+  CHECK(index["shapes"].size() == 2);
+  for (const std::string file : {"/poly/shape_0000.brep", "/poly/shape_0001.brep", "/cham/shape_0000.brep"}) {
+    const auto r = test::run_autoblock("decompose '" + folder + file + "' --policy greedy --out '" + folder +
+                                       "/b.brep' --json '" + folder + "/r.json' --picture '" + folder + "/p.svg'");
+    INFO(file << "\n" << r.out << r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Contains("greedy (general engine)"));
+    const nlohmann::json report = test::read_json(folder + "/r.json");
+    CHECK(report["engine"] == "general");
+    CHECK(report["complete"] == true);
+    CHECK(report["blocks"].size() == report["n_blocks"].get<int>() + report["n_templates"].get<int>());
+    double area = 0;
+    for (const auto& block : report["blocks"]) {
+      const auto& outline = block["outline"];
+      for (size_t i = 0; i < outline.size(); ++i) {
+        const auto& a = outline[i];
+        const auto& b = outline[(i + 1) % outline.size()];
+        area += 0.5 * (a[0].get<double>() * b[1].get<double>() - b[0].get<double>() * a[1].get<double>());
+      }
+    }
+    CHECK(area == Approx(report["face"]["area"].get<double>()).epsilon(1e-6));
+    CHECK(std::filesystem::file_size(folder + "/b.brep") > 0);
+    CHECK(std::filesystem::file_size(folder + "/p.svg") > 0);
+  }
+  // Meshing general blocks is not there yet: a clear input error, nothing written.
+  const auto mesh = test::run_autoblock("mesh '" + folder + "/poly/shape_0000.brep' --out '" + folder + "/m.msh'");
+  CHECK(mesh.exit_code == 2);
+  CHECK_THAT(mesh.err, Contains("meshing works on faces whose edges run along two perpendicular directions"));
+  CHECK_FALSE(std::filesystem::exists(folder + "/m.msh"));
+  // eval (a data set's figures) works on rectilinear faces only, for now.
+  const auto eval = test::run_autoblock("eval '" + folder + "/poly' --policy greedy");
+  CHECK(eval.exit_code == 2);
+  CHECK_THAT(eval.err, Contains("autoblock eval works on faces whose edges run along two perpendicular directions"));
+  // Learned policies work on rectilinear faces only.
+  const auto learned = test::run_autoblock("decompose '" + folder + "/poly/shape_0000.brep' --policy sac-mesh");
+  CHECK(learned.exit_code == 2);
+  CHECK_THAT(learned.err, Contains("this face has edges at other angles"));
+}
