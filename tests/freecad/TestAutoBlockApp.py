@@ -329,7 +329,7 @@ class TestDecompose(unittest.TestCase):
                 (sphere, "not planar"),
                 (box, "6 faces"),
                 ((box, "Edge1"), "not a face"),
-                (triangle, "not parallel"),
+                (triangle, "edges at other angles"),
                 (disc, "only straight edges"),
                 (Part.makeCompound([support.l_face(), support.l_face().translate(V(10, 0, 0))]), "2 faces"),
                 (Part.makePolygon([V(0, 0, 0), V(1, 0, 0), V(1, 1, 0)]), "its wire is not closed"),

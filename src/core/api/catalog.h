@@ -34,6 +34,7 @@ std::vector<std::string> policy_names();
 // The policies of the general engine (faces with edges at any angle, core/region): "auto" and
 // "search" (the lookahead search, region_search.h; also what "optimal" means there), "greedy", "random"
 // (and "random-split", the same there). Learned policies work on rectilinear faces only (issue 12).
+// Their own reward preset (used without --reward): mesh for auto and search, paper for the others.
 std::vector<std::string> general_policy_names();
 
 // The reward presets: "paper" (Eq. 1) and "mesh". The default is "": each policy's own preset.

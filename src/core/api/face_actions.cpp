@@ -59,7 +59,10 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
     std::unique_ptr<RegionPolicy> policy = general_policy(settings.policy, settings.policy_settings);
     RegionEpisodeOptions options;
     options.max_steps = settings.max_steps;
-    options.reward = settings.reward.empty() ? RewardPreset::Paper : reward_preset_by_name(settings.reward);
+    // The policy's own preset, as on the grid: mesh for auto and search, paper for the baselines.
+    const bool searching = policy->name() == "search";
+    options.reward = !settings.reward.empty() ? reward_preset_by_name(settings.reward)
+                                              : (searching ? RewardPreset::Mesh : RewardPreset::Paper);
     result.region = decompose_region(face.region, *policy, options);
     if (settings.occt_blocks) blocks = replay_region_cuts_occt(face.occt, face.region, result.region, options);
   } else {
