@@ -10,9 +10,6 @@
 #include "core/api/face_actions.h"
 #include "core/common/error.h"
 #include "core/common/format.h"
-#include "core/env/occt_replay.h"
-#include "core/geometry/occt_face.h"
-#include "core/mesh/conformal_merge.h"
 #include "core/io/decomposition_json.h"
 #include "core/io/shape_file.h"
 #include "core/io/svg_picture.h"
@@ -48,26 +45,46 @@ std::string general_summary(const RegionDecomposition& d) {
   return buf;
 }
 
-// A face with edges at other angles: the general engine, through core/api.
-void decompose_general(const Arguments& args, const InputFace& face) {
+// Every face through core/api: the grid engine for a rectilinear face, the general one otherwise.
+void decompose(const Arguments& args) {
+  const InputFace face = args.face.load(args.file);
   DecomposeSettings settings;
   settings.policy = args.policy.policy;
   settings.reward = args.policy.reward;
   settings.policy_settings.seed = args.policy.seed;
   settings.policy_settings.time_limit = args.policy.time_limit;
   settings.max_steps = args.policy.max_steps;
+  // The blocks as OpenCASCADE cuts them from the input face (checked against the engine at every
+  // cut), merged into one conformal model: neighbours share edges and vertices.
   settings.occt_blocks = !args.out.empty();
   const FaceDecomposition made = decompose_input_face(face, settings);
-  const RegionDecomposition& d = made.region;
+  const std::string name = std::filesystem::path(args.file).filename().string();
+  std::string policy, summary, report, picture;
+  if (made.general()) {
+    const RegionDecomposition& d = made.region;
+    policy = d.policy + " (general engine)";
+    summary = general_summary(d);
+    if (!args.json.empty()) report = region_decomposition_json(args.file, face, d).dump(2) + "\n";
+    if (!args.picture.empty()) picture = region_decomposition_svg(face.region, d, name + " - policy " + d.policy + " | " + summary);
+  } else {
+    const Decomposition& d = made.decomposition;
+    policy = d.policy;
+    summary = summary_line(d);
+    if (!args.json.empty()) {
+      nlohmann::json json = decomposition_json(args.file, face.planar, d);
+      json["engine"] = "grid";
+      json["frame"] = frame_json(face.frame);
+      report = json.dump(2) + "\n";
+    }
+    if (!args.picture.empty()) {
+      picture = decomposition_svg(face.planar.polygon, d.blocks, d.cuts, name + " - policy " + d.policy + " | " + summary);
+    }
+  }
   // Everything is made before anything is written.
-  const std::string report = args.json.empty() ? "" : region_decomposition_json(args.file, face, d).dump(2) + "\n";
-  const std::string title = std::filesystem::path(args.file).filename().string() + " - policy " + d.policy + " | " +
-                            general_summary(d);
-  const std::string picture = args.picture.empty() ? "" : region_decomposition_svg(face.region, d, title);
   if (!args.out.empty()) write_shape_file(args.out, made.shape);
   if (!args.json.empty()) write_text_file(args.json, report);
   if (!args.picture.empty()) write_picture(args.picture, picture);
-  std::cout << face.source << ": " << d.policy << " (general engine): " << general_summary(d) << "\n";
+  std::cout << face.source << ": " << policy << ": " << summary << "\n";
   if (!args.out.empty()) std::cout << "  blocks:  " << args.out << "\n";
   if (!args.json.empty()) std::cout << "  report:  " << args.json << "\n";
   if (!args.picture.empty()) std::cout << "  picture: " << args.picture << "\n";
@@ -87,35 +104,7 @@ void add_decompose_command(CLI::App& app) {
   command->callback([args] {
     require_extension(args->out, {".brep", ".brp", ".step", ".stp"}, "--out");
     if (!args->picture.empty()) check_picture_path(args->picture, "--picture");
-    const InputFace face = args->face.load(args->file);
-    if (face.is_general()) {
-      decompose_general(*args, face);
-      return;
-    }
-    std::unique_ptr<Policy> policy = args->policy.make(face);
-    const EpisodeOptions options = args->policy.episode_options();
-    const Decomposition result = decompose_face(face.grid, *policy, options);
-    if (!args->out.empty()) {
-      // The blocks as OpenCASCADE cuts them from the input face (checked against the grid engine at
-      // every cut), then merged into one conformal model: neighbours share edges and vertices.
-      const ConformalBlocks model = conformal_merge(replay_cuts_occt(face.occt, face.grid, result.cuts, options));
-      write_shape_file(args->out, shape_to_model(model.compound, face.frame));
-    }
-    if (!args->json.empty()) {
-      nlohmann::json report = decomposition_json(args->file, face.planar, result);
-      report["engine"] = "grid";
-      report["frame"] = frame_json(face.frame);
-      write_text_file(args->json, report.dump(2) + "\n");
-    }
-    if (!args->picture.empty()) {
-      const std::string title = std::filesystem::path(args->file).filename().string() + " - policy " + result.policy +
-                                " | " + summary_line(result);
-      write_picture(args->picture, decomposition_svg(face.planar.polygon, result.blocks, result.cuts, title));
-    }
-    std::cout << face.source << ": " << result.policy << ": " << summary_line(result) << "\n";
-    if (!args->out.empty()) std::cout << "  blocks:  " << args->out << "\n";
-    if (!args->json.empty()) std::cout << "  report:  " << args->json << "\n";
-    if (!args->picture.empty()) std::cout << "  picture: " << args->picture << "\n";
+    decompose(*args);
   });
 }
 

@@ -44,6 +44,8 @@ std::shared_ptr<const PolicySource> policy_source(const std::string& spec, const
   BaselineOptions options;
   options.seed = settings.seed;
   options.optimal_seconds = settings.time_limit;
+  check_reward_preset(settings.reward);
+  options.reward = settings.reward.empty() ? RewardPreset::Paper : reward_preset_by_name(settings.reward);
   return std::make_shared<PolicySource>(spec, options);
 }
 

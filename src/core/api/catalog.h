@@ -47,6 +47,7 @@ struct PolicySettings {
   std::uint64_t seed = 0;     // random policies
   double time_limit = 30.0;   // seconds per face (<= 0: unlimited): optimal finishes greedily after it, and so
                               // do auto and learned policies
+  std::string reward;         // the preset optimal maximises (a name of reward_preset_names(); empty: paper)
 };
 
 // Inputs:  spec, a name of policy_names() or a policy file's path (empty: the default); settings.

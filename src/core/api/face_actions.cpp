@@ -66,7 +66,9 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
     result.region = decompose_region(face.region, *policy, options);
     if (settings.occt_blocks) blocks = replay_region_cuts_occt(face.occt, face.region, result.region, options);
   } else {
-    const auto source = policy_source(settings.policy, settings.policy_settings);
+    PolicySettings policy_settings = settings.policy_settings;
+    policy_settings.reward = settings.reward;  // what optimal maximises
+    const auto source = policy_source(settings.policy, policy_settings);
     std::unique_ptr<Policy> policy = source->make(face.grid.size, settings.policy_settings.seed);
     EpisodeOptions options;
     options.max_steps = settings.max_steps;
