@@ -8,9 +8,11 @@
 
 namespace autoblock {
 
-std::vector<ScoredAction> score_candidates(const Region& part, double face_size, const RegionEpisodeOptions& options) {
+std::vector<ScoredAction> score_candidates(const Region& part, double face_size, const RegionEpisodeOptions& options,
+                                          const std::chrono::steady_clock::time_point* deadline) {
   std::vector<ScoredAction> scored;
   for (const RegionAction& action : region_candidates(part)) {
+    if (deadline && !scored.empty() && std::chrono::steady_clock::now() > *deadline) break;
     ScoredAction s{action, {}, 0.0};
     if (action.kind == RegionAction::Kind::Template) {
       s.outcome = {{part}, {}};

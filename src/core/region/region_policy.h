@@ -9,6 +9,7 @@
 // (or templates), whatever the policy.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <random>
@@ -52,10 +53,11 @@ struct ScoredAction {
   double reward = 0.0;
 };
 
-// Inputs:  part; face_size; reward preset and rules (as the episode's).
+// Inputs:  part; face_size; reward preset and rules (as the episode's); deadline (optional).
 // Outputs: every candidate of region_candidates(part) that makes progress, with its outcome and
-//          reward, in order.
-std::vector<ScoredAction> score_candidates(const Region& part, double face_size, const RegionEpisodeOptions& options);
+//          reward, in order; past the deadline, only those scored so far (at least one, if any).
+std::vector<ScoredAction> score_candidates(const Region& part, double face_size, const RegionEpisodeOptions& options,
+                                          const std::chrono::steady_clock::time_point* deadline = nullptr);
 
 struct RegionDecomposition {
   std::string policy;

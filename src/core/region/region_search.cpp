@@ -14,9 +14,12 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
   const bool late = options_.time_limit > 0.0 && std::chrono::steady_clock::now() > deadline_;
   if (late) capped_ = true;
   // Past the budget, parts are finished by progress_action alone (one cut each, no scoring).
-  std::vector<ScoredAction> scored = late ? std::vector<ScoredAction>{} : score_candidates(part, face_size, options);
-  Entry best{0.0, progress_action(part, options.rules)};
+  std::vector<ScoredAction> scored =
+      late ? std::vector<ScoredAction>{}
+           : score_candidates(part, face_size, options, options_.time_limit > 0.0 ? &deadline_ : nullptr);
+  Entry best;
   if (scored.empty()) {
+    best.action = progress_action(part, options.rules);
     // Nothing listed makes progress: the fallback action, valued like any other.
     if (best.action.kind == RegionAction::Kind::Template) {
       best.value = region_template_reward(options.reward, part, face_size);
