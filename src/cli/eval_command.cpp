@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_common.h"
+#include "core/api/face_actions.h"
+#include "core/common/error.h"
 #include "core/common/format.h"
 #include "cli/commands.h"
 #include "cli/progress_bar.h"
@@ -52,19 +54,37 @@ void add_eval_command(CLI::App& app) {
     // Read and check every input before any work, so bad input stops the run at once.
     const std::vector<std::string> files = collect_shape_files(args->paths);
     std::vector<InputFace> faces;
-    for (const std::string& file : files) {
-      faces.push_back(args->face.load(file));
-      require_rectilinear(faces.back(), "autoblock eval", "decompose it with `autoblock decompose`");
-    }
-    const std::string policy_name = args->policy.source()->name();  // loads the policy, or says why not
+    for (const std::string& file : files) faces.push_back(args->face.load(file));
+    // The grid engine's policy is loaded (or said to be unknown) when some face is rectilinear; the
+    // general engine takes its own names (general_policy_names()).
+    const bool any_grid = std::any_of(faces.begin(), faces.end(), [](const InputFace& f) { return !f.is_general(); });
+    const std::string policy_name =
+        any_grid ? args->policy.source()->name() : (args->policy.policy.empty() ? "auto" : args->policy.policy);
 
     std::vector<Decomposition> results(faces.size());
+    std::vector<RegionDecomposition> general(faces.size());  // faces with edges at other angles (core/api)
+    std::vector<std::string> errors(faces.size());
     std::atomic<size_t> next{0}, done{0};
-    const EpisodeOptions options = args->policy.episode_options();
+    const EpisodeOptions options = any_grid ? args->policy.episode_options() : EpisodeOptions{};
     auto work = [&] {
       for (size_t k = next++; k < faces.size(); k = next++) {
-        std::unique_ptr<Policy> policy = args->policy.make(faces[k], k);
-        results[k] = decompose_face(faces[k].grid, *policy, options);
+        try {
+          if (faces[k].is_general()) {
+            DecomposeSettings settings;
+            settings.policy = args->policy.policy;
+            settings.reward = args->policy.reward;
+            settings.policy_settings.seed = args->policy.seed + k;
+            settings.policy_settings.time_limit = args->policy.time_limit;
+            settings.max_steps = args->policy.max_steps;
+            settings.occt_blocks = false;
+            general[k] = decompose_input_face(faces[k], settings).region;
+          } else {
+            std::unique_ptr<Policy> policy = args->policy.make(faces[k], k);
+            results[k] = decompose_face(faces[k].grid, *policy, options);
+          }
+        } catch (const std::exception& e) {
+          errors[k] = e.what();  // a learned policy on a general face: said after the workers stop
+        }
         ++done;
       }
     };
@@ -83,15 +103,36 @@ void add_eval_command(CLI::App& app) {
       }
     }
     for (std::thread& worker : workers) worker.join();
+    for (size_t k = 0; k < faces.size(); ++k) {
+      if (!errors[k].empty()) throw InputError(files[k] + ": " + errors[k]);
+    }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     nlohmann::json report = {{"policy", policy_name},
                              {"files", files.size()}};
     report["shapes"] = nlohmann::json::array();
-    std::vector<double> returns, blocks, minimum, ratio, seconds, cuts;
-    size_t complete = 0, truncated = 0, capped = 0;
+    std::vector<double> returns, blocks, minimum, ratio, seconds, cuts, templates;
+    size_t complete = 0, truncated = 0, capped = 0, general_faces = 0;
     std::printf("%7s %7s %6s %10s %-10s %9s  %s\n", "blocks", "minimum", "cuts", "return", "status", "ms", "file");
     for (size_t k = 0; k < faces.size(); ++k) {
+      if (faces[k].is_general()) {
+        // Blocks and templates of the general engine; no minimum (it is known on rectilinear faces only).
+        const RegionDecomposition& g = general[k];
+        report["shapes"].push_back(region_decomposition_json(files[k], faces[k], g));
+        returns.push_back(g.total_return);
+        blocks.push_back(static_cast<double>(g.blocks));
+        templates.push_back(static_cast<double>(g.templates));
+        seconds.push_back(g.seconds);
+        cuts.push_back(static_cast<double>(g.cuts.size()));
+        complete += g.complete();
+        truncated += g.status == EpisodeStatus::Truncated;
+        capped += g.time_capped;
+        ++general_faces;
+        std::printf("%7s %7s %6zu %10.3f %-10s %9.2f  %s\n",
+                    (std::to_string(g.blocks) + (g.templates ? "+" + std::to_string(g.templates) + "t" : "")).c_str(), "-",
+                    g.cuts.size(), g.total_return, status_name(g.status).c_str(), g.seconds * 1000.0, files[k].c_str());
+        continue;
+      }
       const Decomposition& d = results[k];
       report["shapes"].push_back(decomposition_json(files[k], faces[k].planar, d));
       returns.push_back(d.total_return);
@@ -119,10 +160,21 @@ void add_eval_command(CLI::App& app) {
         {"complete", complete},
         {"truncated", truncated},
         {"time_capped", capped},
+        {"general_faces", general_faces},  // by the general engine: blocks and templates, no minimum
+        {"templates", statistics(templates)},
         {"completion_rate", faces.empty() ? 0.0 : static_cast<double>(complete) / static_cast<double>(faces.size())},
         {"wall_seconds", wall},
         {"threads", thread_count}};
     const nlohmann::json& s = report["summary"];
+    if (minimum.empty()) {
+      std::printf("\n%s on %s (general engine): return mean %.3f median %.3f; blocks mean %.2f, templates mean %.2f; "
+                  "complete %zu/%zu%s; %.2f ms per shape\n",
+                  report["policy"].get<std::string>().c_str(), counted(static_cast<long long>(faces.size()), "shape").c_str(),
+                  s["return"]["mean"].get<double>(), s["return"]["median"].get<double>(), s["blocks"]["mean"].get<double>(),
+                  s["templates"]["mean"].is_null() ? 0.0 : s["templates"]["mean"].get<double>(), complete, faces.size(),
+                  capped ? (", " + std::to_string(capped) + " hit the time limit").c_str() : "",
+                  s["seconds"]["mean"].get<double>() * 1000.0);
+    } else {
     std::printf("\n%s on %s: return mean %.3f median %.3f; blocks mean %.2f (minimum %.2f, ratio %.3f); "
                 "complete %zu/%zu%s; %.2f ms per shape, %.3f ms per cut\n",
                 report["policy"].get<std::string>().c_str(), counted(static_cast<long long>(faces.size()), "shape").c_str(), s["return"]["mean"].get<double>(),
@@ -130,6 +182,8 @@ void add_eval_command(CLI::App& app) {
                 s["min_blocks"]["mean"].get<double>(), s["blocks_over_min"]["mean"].get<double>(), complete, faces.size(),
                 capped ? (", " + std::to_string(capped) + " hit the time limit").c_str() : "",
                 s["seconds"]["mean"].get<double>() * 1000.0, s["seconds_per_cut"].get<double>() * 1000.0);
+      if (general_faces > 0) std::printf("(%zu of the shapes by the general engine: their blocks count, not in the minimum)\n", general_faces);
+    }
     if (!args->json.empty()) {
       write_text_file(args->json, report.dump(2) + "\n");
       std::printf("report: %s\n", args->json.c_str());

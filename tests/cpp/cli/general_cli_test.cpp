@@ -46,10 +46,19 @@ TEST_CASE("autoblock decomposes generated general faces: report, picture and Ope
   CHECK(mesh.exit_code == 2);
   CHECK_THAT(mesh.err, Contains("meshing works on faces whose edges run along two perpendicular directions"));
   CHECK_FALSE(std::filesystem::exists(folder + "/m.msh"));
-  // eval (a data set's figures) works on rectilinear faces only, for now.
-  const auto eval = test::run_autoblock("eval '" + folder + "/poly' --policy greedy");
-  CHECK(eval.exit_code == 2);
-  CHECK_THAT(eval.err, Contains("autoblock eval works on faces whose edges run along two perpendicular directions"));
+  // eval: a data set's figures, by the general engine (no minimum there).
+  const auto eval = test::run_autoblock("eval '" + folder + "/poly' '" + folder + "/cham' --policy greedy --threads 2 --json '" +
+                                        folder + "/eval.json'");
+  INFO(eval.out << eval.err);
+  CHECK(eval.exit_code == 0);
+  const nlohmann::json figures = test::read_json(folder + "/eval.json");
+  CHECK(figures["summary"]["general_faces"] == 3);
+  CHECK(figures["summary"]["complete"] == 3);
+  CHECK(figures["shapes"].size() == 3);
+  CHECK(figures["shapes"][0]["engine"] == "general");
+  const auto learned_eval = test::run_autoblock("eval '" + folder + "/poly' --policy sac-paper");
+  CHECK(learned_eval.exit_code == 2);
+  CHECK_THAT(learned_eval.err, Contains("this face has edges at other angles"));
   // Learned policies work on rectilinear faces only.
   const auto learned = test::run_autoblock("decompose '" + folder + "/poly/shape_0000.brep' --policy sac-mesh");
   CHECK(learned.exit_code == 2);
