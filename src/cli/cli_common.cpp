@@ -10,12 +10,12 @@ namespace autoblock::cli {
 void PolicyArguments::add_to(CLI::App& command) {
   command.add_option("--policy", policy,
                      "auto (exact search, learned where it runs out of time) | random | random-split | greedy | optimal | a shipped policy (sac-paper, sac-mesh, sac-faithful) | a policy file "
-                     "(default: the shipped default, " + default_policy_name() + ")");
+                     "(default: the shipped default, " + default_policy_name() + "); on faces with edges at other angles: auto or search (lookahead search), greedy, random");
   command.add_option("--seed", seed, "seed of the random policies")->capture_default_str();
   command.add_option("--max-steps", max_steps, "step cap per face (0: 10 x corners + 10)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  command.add_option("--time-limit", time_limit, "seconds per face before greedy finishes the remaining parts (optimal, auto and learned policies)")
+  time_limit_option_ = command.add_option("--time-limit", time_limit, "seconds per face before greedy finishes the remaining parts (optimal, auto and learned policies; on faces with edges at other angles, the search's budget, default 2)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command.add_option("--reward", reward, "reward preset: paper (Eq. 1) | mesh (few, fat blocks); default: the policy's own")
@@ -34,6 +34,15 @@ std::shared_ptr<const PolicySource> PolicyArguments::source() const {
 
 std::unique_ptr<Policy> PolicyArguments::make(const InputFace& face, std::uint64_t shape_index) const {
   return source()->make(face.grid.size, seed + shape_index);
+}
+
+PolicySettings PolicyArguments::policy_settings(std::uint64_t shape_index) const {
+  PolicySettings settings;
+  settings.seed = seed + shape_index;
+  settings.time_limit = time_limit;
+  settings.reward = reward;
+  if (time_limit_option_ && time_limit_option_->count() > 0) settings.general_time_limit = time_limit;
+  return settings;
 }
 
 EpisodeOptions PolicyArguments::episode_options() const {

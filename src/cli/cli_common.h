@@ -9,6 +9,7 @@
 #include "core/env/decomposition.h"
 #include "core/env/episode.h"
 #include "core/io/input_face.h"
+#include "core/api/catalog.h"
 #include "core/api/policy_source.h"
 
 namespace autoblock::cli {
@@ -27,9 +28,13 @@ struct PolicyArguments {
   // Inputs: face; shape_index, added to the seed so that each shape of a set has its own stream.
   std::unique_ptr<Policy> make(const InputFace& face, std::uint64_t shape_index = 0) const;
   EpisodeOptions episode_options() const;
+  // The policy settings of core/api (api/catalog.h): seed (plus shape_index), time limits, reward.
+  // --time-limit sets both engines' budgets when given; else each keeps its own default.
+  PolicySettings policy_settings(std::uint64_t shape_index = 0) const;
 
  private:
   mutable std::shared_ptr<const PolicySource> source_;
+  CLI::Option* time_limit_option_ = nullptr;
 };
 
 // The --face option of the commands that read a face from a file.

@@ -51,8 +51,7 @@ void decompose(const Arguments& args) {
   DecomposeSettings settings;
   settings.policy = args.policy.policy;
   settings.reward = args.policy.reward;
-  settings.policy_settings.seed = args.policy.seed;
-  settings.policy_settings.time_limit = args.policy.time_limit;
+  settings.policy_settings = args.policy.policy_settings();
   settings.max_steps = args.policy.max_steps;
   // The blocks as OpenCASCADE cuts them from the input face (checked against the engine at every
   // cut), merged into one conformal model: neighbours share edges and vertices.

@@ -73,8 +73,7 @@ void add_eval_command(CLI::App& app) {
             DecomposeSettings settings;
             settings.policy = args->policy.policy;
             settings.reward = args->policy.reward;
-            settings.policy_settings.seed = args->policy.seed + k;
-            settings.policy_settings.time_limit = args->policy.time_limit;
+            settings.policy_settings = args->policy.policy_settings(k);
             settings.max_steps = args->policy.max_steps;
             settings.occt_blocks = false;
             general[k] = decompose_input_face(faces[k], settings).region;

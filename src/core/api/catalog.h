@@ -48,6 +48,8 @@ struct PolicySettings {
   double time_limit = 30.0;   // seconds per face (<= 0: unlimited): optimal finishes greedily after it, and so
                               // do auto and learned policies
   std::string reward;         // the preset optimal maximises (a name of reward_preset_names(); empty: paper)
+  double general_time_limit = 2.0;  // seconds per face (<= 0: unlimited) for the general engine's search
+                                    // (auto, search), after which progress cuts finish the parts
 };
 
 // Inputs:  spec, a name of policy_names() or a policy file's path (empty: the default); settings.

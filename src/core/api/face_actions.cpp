@@ -30,7 +30,7 @@ namespace {
 std::unique_ptr<RegionPolicy> general_policy(const std::string& name, const PolicySettings& settings) {
   if (name.empty() || name == "auto" || name == "search" || name == "optimal") {
     RegionSearchOptions options;
-    options.time_limit = settings.time_limit > 0 ? settings.time_limit : 0.0;
+    options.time_limit = settings.general_time_limit > 0 ? settings.general_time_limit : 0.0;
     return std::make_unique<RegionSearchPolicy>(options);
   }
   if (name == "greedy") return std::make_unique<RegionGreedyPolicy>();

@@ -133,7 +133,7 @@ TEST_CASE("general faces: grid-only actions and learned policies say so", "[api]
   settings.policy = "sac-mesh";
   CHECK_THROWS_WITH(decompose_input_face(face, settings), Catch::Contains("this face has edges at other angles"));
   settings.policy = "search";
-  settings.policy_settings.time_limit = 2.0;
+  settings.policy_settings.general_time_limit = 1.0;
   settings.occt_blocks = false;
   const FaceDecomposition searched = decompose_input_face(face, settings);
   CHECK(searched.region.complete());
