@@ -45,6 +45,16 @@ PolicySettings PolicyArguments::policy_settings(std::uint64_t shape_index) const
   return settings;
 }
 
+DecomposeSettings PolicyArguments::decompose_settings(std::uint64_t shape_index) const {
+  DecomposeSettings settings;
+  settings.policy = policy;
+  settings.reward = reward;
+  settings.policy_settings = policy_settings(shape_index);
+  settings.max_steps = max_steps;
+  settings.occt_blocks = false;
+  return settings;
+}
+
 EpisodeOptions PolicyArguments::episode_options() const {
   EpisodeOptions options;
   options.max_steps = max_steps;

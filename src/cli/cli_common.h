@@ -10,6 +10,7 @@
 #include "core/env/episode.h"
 #include "core/io/input_face.h"
 #include "core/api/catalog.h"
+#include "core/api/face_actions.h"
 #include "core/api/policy_source.h"
 
 namespace autoblock::cli {
@@ -31,6 +32,8 @@ struct PolicyArguments {
   // The policy settings of core/api (api/catalog.h): seed (plus shape_index), time limits, reward.
   // --time-limit sets both engines' budgets when given; else each keeps its own default.
   PolicySettings policy_settings(std::uint64_t shape_index = 0) const;
+  // What core/api's decompose_input_face takes from these options (OpenCASCADE blocks off).
+  DecomposeSettings decompose_settings(std::uint64_t shape_index = 0) const;
 
  private:
   mutable std::shared_ptr<const PolicySource> source_;

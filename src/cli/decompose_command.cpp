@@ -48,11 +48,7 @@ std::string general_summary(const RegionDecomposition& d) {
 // Every face through core/api: the grid engine for a rectilinear face, the general one otherwise.
 void decompose(const Arguments& args) {
   const InputFace face = args.face.load(args.file);
-  DecomposeSettings settings;
-  settings.policy = args.policy.policy;
-  settings.reward = args.policy.reward;
-  settings.policy_settings = args.policy.policy_settings();
-  settings.max_steps = args.policy.max_steps;
+  DecomposeSettings settings = args.policy.decompose_settings();
   // The blocks as OpenCASCADE cuts them from the input face (checked against the engine at every
   // cut), merged into one conformal model: neighbours share edges and vertices.
   settings.occt_blocks = !args.out.empty();

@@ -70,13 +70,7 @@ void add_eval_command(CLI::App& app) {
       for (size_t k = next++; k < faces.size(); k = next++) {
         try {
           if (faces[k].is_general()) {
-            DecomposeSettings settings;
-            settings.policy = args->policy.policy;
-            settings.reward = args->policy.reward;
-            settings.policy_settings = args->policy.policy_settings(k);
-            settings.max_steps = args->policy.max_steps;
-            settings.occt_blocks = false;
-            general[k] = decompose_input_face(faces[k], settings).region;
+            general[k] = decompose_input_face(faces[k], args->policy.decompose_settings(k)).region;
           } else {
             std::unique_ptr<Policy> policy = args->policy.make(faces[k], k);
             results[k] = decompose_face(faces[k].grid, *policy, options);

@@ -3,10 +3,9 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "core/common/error.h"
-#include <BRepBuilderAPI_Transform.hxx>
 #include <TopoDS.hxx>
 
+#include "core/common/error.h"
 #include "core/env/occt_replay.h"
 #include "core/env/region_replay.h"
 #include "core/geometry/occt_face.h"

@@ -217,29 +217,26 @@ bool partial_cut_end(const Region& region, Point2 origin, Point2 direction, Poin
 
 namespace {
 
-// The pieces tile the part: rounding to the lattice changes the area by at most q per unit of
-// boundary (a safety net: with loops that touch refused, this holds by construction).
-bool tiles(const Region& region, const std::vector<Region>& pieces) {
-  double area = 0.0, length = 0.0;
-  for (const Region& piece : pieces) {
-    area += piece.area();
-    length += region_perimeter(piece);
-  }
-  return std::fabs(area - region.area()) <= region.quantum() * length;
-}
-
-// True when the cut keeps clear of the region's vertices and leaves no sliver: every vertex of the
-// region that is not an end of a chord lies farther than 2 q from every chord, and no piece has an
-// area of at most q times its perimeter. A cut that grazes a vertex, ends within 2 q of a corner, or
-// leaves a neck or a sliver narrower than the lattice can tell is one that OpenCASCADE, cutting the
-// real face at the face's tolerance, would read differently (see region_cut.h).
+// True when the pieces tile the part (rounding to the lattice changes the area by at most q per unit
+// of boundary: a safety net, with loops that touch refused this holds by construction) and, unless
+// the cut is forced, the cut keeps clear of the region's vertices and leaves no sliver: every vertex
+// of the region that is not an end of a chord lies farther than 2 q from every chord, and no piece
+// has an area of at most q times its perimeter. A cut that grazes a vertex, ends within 2 q of a
+// corner, or leaves a neck or a sliver narrower than the lattice can tell is one that OpenCASCADE,
+// cutting the real face at the face's tolerance, would read differently (see region_cut.h).
 bool acceptable(const Region& region, const std::vector<Region>& pieces, const std::vector<Chord>& chords, bool forced) {
-  if (!tiles(region, pieces)) return false;
-  if (forced) return true;
   const double q = region.quantum();
+  double area = 0.0, length = 0.0;
+  bool sliver = false;
   for (const Region& piece : pieces) {
-    if (piece.area() <= q * region_perimeter(piece)) return false;
+    const double perimeter = region_perimeter(piece);
+    area += piece.area();
+    length += perimeter;
+    sliver = sliver || piece.area() <= q * perimeter;
   }
+  if (std::fabs(area - region.area()) > q * length) return false;
+  if (forced) return true;
+  if (sliver) return false;
   for (int k = 0; k < region.loop_count(); ++k) {
     for (const Point2& v : region.loop(k)) {
       for (const Chord& c : chords) {
