@@ -1,7 +1,6 @@
 // autoblock mesh FILE [--face N] [--policy NAME] [--size H] [--intervals X0,Y0,X1,Y1=N ...]
 //                     [--out mesh.msh|.vtu|.inp] [--picture mesh.svg|.png] [--json report.json]
 //                     [--seed S] [--max-steps N] [--time-limit T]
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -13,11 +12,9 @@
 #include "core/common/error.h"
 #include "core/common/format.h"
 #include "core/io/text_file.h"
+#include "core/api/face_meshing.h"
 #include "core/mesh/mesh_export.h"
-#include "core/mesh/mesh_picture.h"
 #include "core/raster/picture_file.h"
-#include "core/mesh/mesh_pipeline.h"
-#include "core/mesh/mesh_report.h"
 
 namespace autoblock::cli {
 namespace {
@@ -62,23 +59,38 @@ void require_folder(const std::string& path, const std::string& option) {
 // The element size to four significant digits, as a plain decimal.
 std::string size_text(const MeshResult& r) { return format_significant(r.intervals.target_size, 4); }
 
-std::string mesh_summary(const Decomposition& d, const MeshResult& r, double seconds) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf, "%s, %s, %s, size %s (max deviation %.1f %%), min scaled Jacobian %.4g, %s, %s, %.1f ms",
-                counted(static_cast<long long>(d.blocks.size()), "block").c_str(),
+// "0.9613 (0.97 of the bound 0.9239)" for a general face, "0.9613" for a rectilinear one.
+std::string jacobian_text(const FaceMeshing& m) {
+  char buf[128];
+  const MeshResult& r = m.result;
+  if (m.general()) {
+    std::snprintf(buf, sizeof buf, "%.4g (%.3g of the bound %.4g)", r.quality.min_scaled_jacobian,
+                  r.quality.min_scaled_jacobian / r.bound, r.bound);
+  } else {
+    std::snprintf(buf, sizeof buf, "%.4g", r.quality.min_scaled_jacobian);
+  }
+  return buf;
+}
+
+std::string mesh_summary(const FaceMeshing& m) {
+  const MeshResult& r = m.result;
+  char buf[640];
+  std::snprintf(buf, sizeof buf, "%s, %s, %s, size %s (max deviation %.1f %%), min scaled Jacobian %s, %s, %s, %.1f ms",
+                counted(static_cast<long long>(m.blocks()), "block").c_str(),
                 counted(static_cast<long long>(r.mesh.nodes.size()), "node").c_str(),
                 counted(static_cast<long long>(r.mesh.quads.size()), "quad").c_str(), size_text(r).c_str(),
-                100.0 * r.intervals.max_relative_deviation, r.quality.min_scaled_jacobian,
+                100.0 * r.intervals.max_relative_deviation, jacobian_text(m).c_str(),
                 counted(r.quality.irregular_interior_nodes, "irregular interior vertex", "irregular interior vertices").c_str(),
-                r.conformity.conformal ? "conformal" : "NOT conformal", seconds * 1000.0);
+                r.conformity.conformal ? "conformal" : "NOT conformal", m.seconds * 1000.0);
   return buf;
 }
 
 // The picture's second title line, short enough for its width.
-std::string picture_summary(const Decomposition& d, const MeshResult& r) {
+std::string picture_summary(const FaceMeshing& m) {
+  const MeshResult& r = m.result;
   char buf[256];
   std::snprintf(buf, sizeof buf, "%s, %s, size %s, min scaled Jacobian %.4g, %s",
-                counted(static_cast<long long>(d.blocks.size()), "block").c_str(),
+                counted(static_cast<long long>(m.blocks()), "block").c_str(),
                 counted(static_cast<long long>(r.mesh.quads.size()), "quad").c_str(), size_text(r).c_str(),
                 r.quality.min_scaled_jacobian,
                 counted(r.quality.irregular_interior_nodes, "irregular vertex", "irregular vertices").c_str());
@@ -118,33 +130,26 @@ void add_mesh_command(CLI::App& app) {
     require_folder(args->json, "--json");
     MeshOptions options;
     options.size = args->size;
-    options.episode = args->policy.episode_options();
     for (const std::string& text : args->intervals) options.fixed.push_back(parse_edge_intervals(text));
 
     const InputFace face = args->face.load(args->file);
-    require_rectilinear(face, "meshing");
-    const auto start = std::chrono::steady_clock::now();
-    std::unique_ptr<Policy> policy = args->policy.make(face);
-    const Decomposition decomposition = decompose_face(face.grid, *policy, options.episode);
-    const MeshResult result = mesh_decomposition(face, decomposition, options);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const FaceMeshing meshing = mesh_input_face(face, args->policy.decompose_settings(), options);
+    const MeshResult& result = meshing.result;
 
     // Everything is made before anything is written.
-    const std::string report =
-        args->json.empty() ? "" : mesh_report_json(args->file, decomposition, result, seconds).dump(2) + "\n";
+    const std::string report = args->json.empty() ? "" : face_meshing_json(args->file, meshing).dump(2) + "\n";
     if (!result.conformity.conformal) {
       if (!args->json.empty()) write_text_file(args->json, report);
       throw std::runtime_error("the mesh failed the conformity check: " + result.conformity.problem);
     }
     const std::string mesh_text = args->out.empty() ? "" : mesh_file_text(args->out, result.mesh, face.frame);
-    const std::string title = std::filesystem::path(args->file).filename().string() + " - policy " +
-                              decomposition.policy + " | " + picture_summary(decomposition, result);
-    const std::string picture = args->picture.empty() ? ""
-                                                      : mesh_svg(face.planar.polygon, decomposition.blocks, result.mesh, title);
+    const std::string title = std::filesystem::path(args->file).filename().string() + " - policy " + meshing.policy() +
+                              " | " + picture_summary(meshing);
+    const std::string picture = args->picture.empty() ? "" : face_meshing_svg(meshing, title);
     if (!args->out.empty()) write_text_file(args->out, mesh_text);
     if (!args->picture.empty()) write_picture(args->picture, picture);
     if (!args->json.empty()) write_text_file(args->json, report);
-    std::cout << face.source << ": " << decomposition.policy << ": " << mesh_summary(decomposition, result, seconds) << "\n";
+    std::cout << face.source << ": " << meshing.policy() << ": " << mesh_summary(meshing) << "\n";
     if (!args->out.empty()) std::cout << "  mesh:    " << args->out << "\n";
     if (!args->json.empty()) std::cout << "  report:  " << args->json << "\n";
     if (!args->picture.empty()) std::cout << "  picture: " << args->picture << "\n";

@@ -1,6 +1,5 @@
 #include "core/api/face_actions.h"
 
-#include <mutex>
 #include <stdexcept>
 
 #include <TopoDS.hxx>
@@ -64,10 +63,7 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
     options.reward = !settings.reward.empty() ? reward_preset_by_name(settings.reward)
                                               : (searching ? RewardPreset::Mesh : RewardPreset::Paper);
     {
-      // One general decomposition at a time: region/ builds CGAL without thread support (see
-      // src/core/CMakeLists.txt), and front ends may call this from several threads (eval's workers).
-      static std::mutex general_engine;
-      const std::lock_guard<std::mutex> lock(general_engine);
+      const auto lock = lock_general_engine();
       result.region = decompose_region(face.region, *policy, options);
       if (settings.occt_blocks) blocks = replay_region_cuts_occt(face.occt, face.region, result.region, options);
     }

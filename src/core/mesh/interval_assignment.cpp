@@ -58,6 +58,15 @@ FixedIntervals fixed_intervals_on(const StripLayout& layout, Point2 a, Point2 b,
   return fixed;
 }
 
+void check_quad_limit(double quads, bool estimated, double h, long max_quads) {
+  const double limit = static_cast<double>(max_quads);
+  if (estimated ? quads > 1.5 * limit + 16 : quads > limit) {
+    throw InputError("element size " + format_number(h) + " would need " + (estimated ? "about " : "") +
+                     (quads > 1e18 ? std::string("too many") : std::to_string(static_cast<long long>(quads))) +
+                     " quadrilaterals (limit " + std::to_string(max_quads) + "); choose a larger size");
+  }
+}
+
 long quad_count(const StripLayout& layout, const std::vector<int>& intervals) {
   long quads = 0;
   for (const StripCell& c : layout.cells) {
@@ -82,11 +91,7 @@ IntervalAssignment assign_intervals(const StripLayout& layout, const IntervalOpt
   for (const Strip& s : layout.strips) {
     if (s.length() / h > kMaxStripIntervals) estimate = 1e300;
   }
-  if (estimate > 1.5 * static_cast<double>(options.max_quads) + 16) {
-    throw InputError("element size " + format_number(h) + " would need about " +
-                     (estimate > 1e18 ? std::string("too many") : std::to_string(static_cast<long>(estimate))) +
-                     " quadrilaterals (limit " + std::to_string(options.max_quads) + "); choose a larger size");
-  }
+  check_quad_limit(estimate, true, h, options.max_quads);
 
   // Candidate windows.
   std::vector<int> lo(n_strips), hi(n_strips);
@@ -208,10 +213,7 @@ IntervalAssignment assign_intervals(const StripLayout& layout, const IntervalOpt
     if (total != f.intervals) throw std::runtime_error("GLPK's solution breaks a fixed count");
   }
   result.quads = quad_count(layout, result.intervals);
-  if (result.quads > options.max_quads) {
-    throw InputError("element size " + format_number(h) + " would need " + std::to_string(result.quads) +
-                     " quadrilaterals (limit " + std::to_string(options.max_quads) + "); choose a larger size");
-  }
+  check_quad_limit(static_cast<double>(result.quads), false, h, options.max_quads);
   return result;
 }
 

@@ -78,6 +78,11 @@ IntervalAssignment assign_intervals(const StripLayout& layout, const IntervalOpt
 // strip (its ends must be where mesh lines meet it: block corners or crossings of forced lines).
 FixedIntervals fixed_intervals_on(const StripLayout& layout, Point2 a, Point2 b, int intervals, double tolerance);
 
+// Inputs: quads, the number of quadrilaterals a mesh would have; estimated, whether that is an
+//         estimate (then it may exceed max_quads by half before it counts); h; max_quads.
+// Throws InputError ("element size h would need ... quadrilaterals (limit ...)") when it is too many.
+void check_quad_limit(double quads, bool estimated, double h, long max_quads);
+
 // Inputs: layout; intervals per strip. Output: the number of quadrilaterals they give.
 long quad_count(const StripLayout& layout, const std::vector<int>& intervals);
 

@@ -123,7 +123,6 @@ QuadMesh mapped_mesh(const ConformalBlocks& model, const std::vector<Box>& block
       if (side < 0) throw std::logic_error("mapped_mesh: an edge of block " + std::to_string(b + 1) + " is not on its sides");
       sides[side].push_back(&en);
     }
-    std::vector<Point2> chains[4];
     std::vector<int> chain_ids[4];
     for (int side = 0; side < 4; ++side) {
       std::sort(sides[side].begin(), sides[side].end(), [](const EdgeNodes* x, const EdgeNodes* y) { return x->from < y->from; });
@@ -135,34 +134,11 @@ QuadMesh mapped_mesh(const ConformalBlocks& model, const std::vector<Box>& block
         at = en->to;
       }
       if (at != end) throw std::logic_error("mapped_mesh: a side of block " + std::to_string(b + 1) + " is incomplete");
-      for (int id : chain_ids[side]) chains[side].push_back(mesh.nodes[static_cast<size_t>(id)]);
     }
     if (chain_ids[0].size() != chain_ids[1].size() || chain_ids[2].size() != chain_ids[3].size()) {
       throw std::logic_error("mapped_mesh: opposite sides of block " + std::to_string(b + 1) + " have different node counts");
     }
-    const std::vector<Point2> points = transfinite_grid(chains[0], chains[1], chains[2], chains[3]);
-    const size_t nu = chain_ids[0].size() - 1, nv = chain_ids[2].size() - 1;
-    std::vector<int> ids(points.size());
-    for (size_t j = 0; j <= nv; ++j) {
-      for (size_t i = 0; i <= nu; ++i) {
-        int& id = ids[j * (nu + 1) + i];
-        if (j == 0) id = chain_ids[0][i];
-        else if (j == nv) id = chain_ids[1][i];
-        else if (i == 0) id = chain_ids[2][j];
-        else if (i == nu) id = chain_ids[3][j];
-        else {
-          id = static_cast<int>(mesh.nodes.size());
-          mesh.nodes.push_back(points[j * (nu + 1) + i]);
-        }
-      }
-    }
-    for (size_t j = 0; j < nv; ++j) {
-      for (size_t i = 0; i < nu; ++i) {
-        const size_t k = j * (nu + 1) + i;
-        mesh.quads.push_back({ids[k], ids[k + 1], ids[k + nu + 2], ids[k + nu + 1]});
-        mesh.quad_block.push_back(static_cast<int>(b));
-      }
-    }
+    add_mapped_block(mesh, chain_ids[0], chain_ids[1], chain_ids[2], chain_ids[3], static_cast<int>(b));
   }
   return mesh;
 }

@@ -13,31 +13,40 @@ struct Segment {
   Point2 a, b;
 };
 
-// True when p lies on segment s (axis-parallel) within tolerance.
-bool on_segment(const Point2& p, const Segment& s, double tolerance) {
-  const double x0 = std::min(s.a.x, s.b.x), x1 = std::max(s.a.x, s.b.x);
-  const double y0 = std::min(s.a.y, s.b.y), y1 = std::max(s.a.y, s.b.y);
-  return p.x >= x0 - tolerance && p.x <= x1 + tolerance && p.y >= y0 - tolerance && p.y <= y1 + tolerance;
+// The distance from p to segment s.
+double distance(const Point2& p, const Segment& s) {
+  const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y, l2 = dx * dx + dy * dy;
+  const double t = l2 > 0.0 ? std::clamp(((p.x - s.a.x) * dx + (p.y - s.a.y) * dy) / l2, 0.0, 1.0) : 0.0;
+  return std::hypot(s.a.x + t * dx - p.x, s.a.y + t * dy - p.y);
+}
+
+double ring_area(const Ring& ring) {
+  double twice = 0.0;
+  for (size_t k = 0; k < ring.size(); ++k) twice += ring[k].x * ring[(k + 1) % ring.size()].y - ring[(k + 1) % ring.size()].x * ring[k].y;
+  return 0.5 * twice;
 }
 
 }  // namespace
 
 Conformity check_conformity(const QuadMesh& mesh, const RectilinearPolygon& face) {
+  std::vector<Ring> loops{face.outer};
+  loops.insert(loops.end(), face.holes.begin(), face.holes.end());
+  return check_conformity(mesh, loops, 1e-9 * ring_bbox(face.outer).longer_side());
+}
+
+Conformity check_conformity(const QuadMesh& mesh, const std::vector<Ring>& loops, double tolerance) {
   Conformity c;
   std::vector<Segment> rings;
-  auto add_ring = [&](const Ring& ring) {
+  for (size_t l = 0; l < loops.size(); ++l) {
+    const Ring& ring = loops[l];
     for (size_t k = 0; k < ring.size(); ++k) {
       const Segment s{ring[k], ring[(k + 1) % ring.size()]};
       c.face_perimeter += std::hypot(s.b.x - s.a.x, s.b.y - s.a.y);
       rings.push_back(s);
     }
-  };
-  add_ring(face.outer);
-  for (const Ring& hole : face.holes) add_ring(hole);
-  c.face_area = polygon_area(face);
-  const Box box = ring_bbox(face.outer);
-  const double tolerance = 1e-9 * box.longer_side();
-
+    // The outer loop adds its area, holes take theirs away, whatever their orientation.
+    c.face_area += (l == 0 ? 1.0 : -1.0) * std::fabs(ring_area(ring));
+  }
   for (size_t q = 0; q < mesh.quads.size(); ++q) {
     const auto p = mesh.corners(q);
     double twice = 0;
@@ -57,13 +66,13 @@ Conformity check_conformity(const QuadMesh& mesh, const RectilinearPolygon& face
       const Point2& b = mesh.nodes[static_cast<size_t>(e.b)];
       c.boundary_length += std::hypot(b.x - a.x, b.y - a.y);
       const bool on_boundary = std::any_of(rings.begin(), rings.end(), [&](const Segment& s) {
-        return on_segment(a, s, tolerance) && on_segment(b, s, tolerance);
+        return distance(a, s) <= tolerance && distance(b, s) <= tolerance;
       });
       c.stray_boundary_edges += !on_boundary;
     }
   }
-  const double area_tolerance = 1e-9 * std::max(c.face_area, 1e-300);
-  const double length_tolerance = 1e-9 * c.face_perimeter;
+  const double area_tolerance = 1e-9 * std::max(c.face_area, 1e-300) + tolerance * c.face_perimeter;
+  const double length_tolerance = 1e-9 * c.face_perimeter + 2.0 * tolerance * c.boundary_edges;
   if (mesh.quads.empty()) c.problem = "the mesh has no quads";
   else if (c.overused_edges) c.problem = counted(c.overused_edges, "edge") + (c.overused_edges == 1 ? " is" : " are") + " used by more than two quads";
   else if (c.stray_boundary_edges) c.problem = counted(c.stray_boundary_edges, "edge") + " inside the face " + (c.stray_boundary_edges == 1 ? "belongs" : "belong") + " to one quad only (hanging nodes or unshared edges)";

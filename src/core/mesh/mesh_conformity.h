@@ -32,4 +32,13 @@ struct Conformity {
 // (areas and lengths compared to a relative tolerance of 1e-9).
 Conformity check_conformity(const QuadMesh& mesh, const RectilinearPolygon& face);
 
+// Inputs: mesh; loops, the face's outer loop and its holes (any orientation, edges at any angle);
+//         tolerance, how far a boundary node may lie off the face's boundary (a general face's nodes
+//         lie on its lattice: within its quantum).
+// Output: the figures above and the verdict: a boundary edge counts as on the boundary when both its
+//         ends lie within tolerance of one boundary segment; areas agree within 1e-9 relative plus
+//         tolerance times the perimeter, lengths within 1e-9 relative plus twice the tolerance per
+//         boundary edge.
+Conformity check_conformity(const QuadMesh& mesh, const std::vector<Ring>& loops, double tolerance);
+
 }  // namespace autoblock

@@ -26,9 +26,17 @@ struct View {
 
 std::string mesh_svg(const RectilinearPolygon& polygon, const std::vector<Box>& blocks, const QuadMesh& mesh,
                      const std::string& title) {
+  std::vector<Ring> loops{polygon.outer}, outlines;
+  loops.insert(loops.end(), polygon.holes.begin(), polygon.holes.end());
+  for (const Box& r : blocks) outlines.push_back(Ring{{r.xmin, r.ymin}, {r.xmax, r.ymin}, {r.xmax, r.ymax}, {r.xmin, r.ymax}});
+  return mesh_svg(loops, outlines, mesh, title);
+}
+
+std::string mesh_svg(const std::vector<Ring>& loops, const std::vector<Ring>& blocks, const QuadMesh& mesh,
+                     const std::string& title) {
   const double margin = 24, title_height = 46, target = 720, min_width = 640;
   View v;
-  v.box = ring_bbox(polygon.outer);
+  v.box = ring_bbox(loops.front());
   v.k = target / v.box.longer_side();
   const double width = std::max(min_width, v.box.width() * v.k + 2 * margin);
   const double height = v.box.height() * v.k + 2 * margin + title_height;
@@ -44,10 +52,14 @@ std::string mesh_svg(const RectilinearPolygon& polygon, const std::vector<Box>& 
     svg << "<text x=\"" << margin << "\" y=\"" << 20 + 18 * l << "\" font-family=\"sans-serif\" font-size=\""
         << (l ? 13 : 15) << "\">" << xml_escape(lines[l]) << "</text>\n";
   }
+  auto ring_path = [&](const Ring& ring) {
+    for (size_t i = 0; i < ring.size(); ++i) svg << (i == 0 ? 'M' : 'L') << v.x(ring[i].x) << ',' << v.y(ring[i].y);
+    svg << 'Z';
+  };
   for (size_t b = 0; b < blocks.size(); ++b) {
-    const Box& r = blocks[b];
-    svg << "<rect x=\"" << v.x(r.xmin) << "\" y=\"" << v.y(r.ymax) << "\" width=\"" << r.width() * v.k << "\" height=\""
-        << r.height() * v.k << "\" fill=\"" << block_colour(static_cast<int>(b)) << "\"/>\n";
+    svg << "<path fill=\"" << block_colour(static_cast<int>(b)) << "\" d=\"";
+    ring_path(blocks[b]);
+    svg << "\"/>\n";
   }
   svg << "<path fill=\"none\" stroke=\"#444\" stroke-width=\"0.6\" d=\"";
   for (const MeshEdge& e : mesh_edges(mesh)) {
@@ -56,16 +68,9 @@ std::string mesh_svg(const RectilinearPolygon& polygon, const std::vector<Box>& 
     svg << 'M' << v.x(a.x) << ',' << v.y(a.y) << 'L' << v.x(b.x) << ',' << v.y(b.y);
   }
   svg << "\"/>\n<path fill=\"none\" stroke=\"#222\" stroke-width=\"1.6\" d=\"";
-  for (const Box& r : blocks) {
-    svg << 'M' << v.x(r.xmin) << ',' << v.y(r.ymin) << 'H' << v.x(r.xmax) << 'V' << v.y(r.ymax) << 'H' << v.x(r.xmin) << 'Z';
-  }
+  for (const Ring& r : blocks) ring_path(r);
   svg << "\"/>\n<path fill=\"none\" stroke=\"black\" stroke-width=\"2.5\" d=\"";
-  auto ring_path = [&](const Ring& ring) {
-    for (size_t i = 0; i < ring.size(); ++i) svg << (i == 0 ? 'M' : 'L') << v.x(ring[i].x) << ',' << v.y(ring[i].y);
-    svg << 'Z';
-  };
-  ring_path(polygon.outer);
-  for (const Ring& hole : polygon.holes) ring_path(hole);
+  for (const Ring& loop : loops) ring_path(loop);
   svg << "\"/>\n</svg>\n";
   return svg.str();
 }

@@ -18,4 +18,9 @@ namespace autoblock {
 std::string mesh_svg(const RectilinearPolygon& polygon, const std::vector<Box>& blocks, const QuadMesh& mesh,
                      const std::string& title);
 
+// Inputs: loops, the face's outer loop and holes (edges at any angle); blocks, the parts' outlines
+//         (a template is one part); mesh; title. Output: the SVG document, drawn as above.
+std::string mesh_svg(const std::vector<Ring>& loops, const std::vector<Ring>& blocks, const QuadMesh& mesh,
+                     const std::string& title);
+
 }  // namespace autoblock

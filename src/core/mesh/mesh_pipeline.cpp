@@ -15,6 +15,9 @@
 #include "core/common/error.h"
 #include "core/common/format.h"
 #include "core/env/occt_replay.h"
+#include "core/env/region_replay.h"
+#include "core/mesh/block_mesh.h"
+#include "core/mesh/edge_intervals.h"
 #include "core/mesh/mapped_mesh.h"
 
 namespace autoblock {
@@ -39,10 +42,22 @@ Box vertex_box(const TopoDS_Face& face) {
   return box;
 }
 
+// The user's fixed counts made by fix (per stretch), then the assignment by assign, into result.
+template <class Fix, class Assign>
+void assign_with_fixed(MeshResult& result, const MeshOptions& options, double h, Fix fix, Assign assign) {
+  IntervalOptions interval_options;
+  interval_options.target_size = h;
+  interval_options.max_quads = options.max_quads;
+  for (const EdgeIntervals& e : options.fixed) interval_options.fixed.push_back(fix(e));
+  result.fixed = interval_options.fixed;
+  result.intervals = assign(interval_options);
+}
+
 }  // namespace
 
 double target_size_for(const InputFace& face, double size) {
-  return size > 0 ? size : face.grid.size / kDefaultSizeDivisions;
+  if (size > 0) return size;
+  return (face.is_general() ? face.region.bbox().longer_side() : face.grid.size) / kDefaultSizeDivisions;
 }
 
 MeshResult mesh_decomposition(const InputFace& face, const Decomposition& d, const MeshOptions& options) {
@@ -61,15 +76,10 @@ MeshResult mesh_decomposition(const InputFace& face, const Decomposition& d, con
   // Intervals first: an infeasible request fails before the slower CAD work.
   auto start = std::chrono::steady_clock::now();
   result.layout = strip_layout(face.grid, d.blocks);
-  IntervalOptions interval_options;
-  interval_options.target_size = h;
-  interval_options.max_quads = options.max_quads;
   const double tolerance = std::max(face.planar.tolerance, 1e-9 * face.grid.size);
-  for (const EdgeIntervals& e : options.fixed) {
-    interval_options.fixed.push_back(fixed_intervals_on(result.layout, e.a, e.b, e.intervals, tolerance));
-  }
-  result.fixed = interval_options.fixed;
-  result.intervals = assign_intervals(result.layout, interval_options);
+  assign_with_fixed(result, options, h, [&](const EdgeIntervals& e) {
+    return fixed_intervals_on(result.layout, e.a, e.b, e.intervals, tolerance);
+  }, [&](const IntervalOptions& o) { return assign_intervals(result.layout, o); });
   result.interval_seconds = since(start);
 
   start = std::chrono::steady_clock::now();
@@ -93,6 +103,52 @@ MeshResult mesh_decomposition(const InputFace& face, const Decomposition& d, con
   start = std::chrono::steady_clock::now();
   result.quality = mesh_quality(result.mesh);
   result.conformity = check_conformity(result.mesh, face.planar.polygon);
+  result.check_seconds = since(start);
+  return result;
+}
+
+MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecomposition& d, const MeshOptions& options) {
+  if (!face.is_general()) throw std::logic_error("mesh_region_decomposition: the face is rectilinear");
+  if (!d.complete()) {
+    const size_t left = d.unfinished.size();
+    throw InputError("the decomposition is incomplete (" + counted(static_cast<long long>(left), "part") + " left after " +
+                     counted(static_cast<long long>(d.cuts.size()), "cut") + "); meshing needs blocks only: raise --max-steps or use another policy");
+  }
+  if (!std::isfinite(options.size) || options.size < 0) throw InputError("the element size must be a positive number");
+  MeshResult result;
+  result.default_size = !(options.size > 0);
+  const double h = target_size_for(face, options.size);
+  const double q = face.region.quantum();
+  const double tolerance = std::max({face.planar.tolerance, 2.0 * q, 1e-9 * face.region.bbox().longer_side()});
+  std::vector<Ring> loops{face.region.outer()};
+  loops.insert(loops.end(), face.region.holes().begin(), face.region.holes().end());
+  result.bound = scaled_jacobian_bound(loops);
+
+  // Intervals first: an infeasible request fails before the slower CAD work.
+  auto start = std::chrono::steady_clock::now();
+  result.block_model = block_model(d, options.general.rules, q);
+  assign_with_fixed(result, options, h, [&](const EdgeIntervals& e) {
+    return fixed_edge_intervals(result.block_model, e.a, e.b, e.intervals, tolerance);
+  }, [&](const IntervalOptions& o) { return assign_edge_intervals(result.block_model, o); });
+  result.interval_seconds = since(start);
+
+  // OpenCASCADE stays the judge: it cuts the face as the engine did, and merges the parts.
+  start = std::chrono::steady_clock::now();
+  {
+    const auto lock = lock_general_engine();
+    const std::vector<TopoDS_Face> parts = replay_region_cuts_occt(face.occt, face.region, d, options.general);
+    if (parts.size() != d.finished.size()) throw std::logic_error("mesh: the replay gave a different number of parts");
+    result.model = conformal_merge(parts, q);
+  }
+  result.merge_seconds = since(start);
+
+  start = std::chrono::steady_clock::now();
+  result.mesh = block_model_mesh(result.block_model, result.intervals.intervals, face.planar.z);
+  result.mesh_seconds = since(start);
+
+  start = std::chrono::steady_clock::now();
+  result.quality = mesh_quality(result.mesh);
+  result.conformity = check_conformity(result.mesh, loops, tolerance);
   result.check_seconds = since(start);
   return result;
 }

@@ -1,11 +1,15 @@
 // From a decomposition to a checked quad mesh: replay the cuts on the CAD face, merge the blocks
-// conformally, assign intervals, mesh every block, measure quality and check conformity.
+// conformally, assign intervals, mesh every block, measure quality and check conformity. A
+// rectilinear face's decomposition (the grid engine) is meshed on strips (strip_layout.h), every
+// element an exact rectangle; a general face's (core/region) on its block model (block_model.h,
+// edge_intervals.h, block_mesh.h).
 #pragma once
 
 #include <vector>
 
 #include "core/env/decomposition.h"
 #include "core/io/input_face.h"
+#include "core/mesh/block_model.h"
 #include "core/mesh/conformal_merge.h"
 #include "core/mesh/interval_assignment.h"
 #include "core/mesh/mesh_conformity.h"
@@ -26,17 +30,20 @@ struct MeshOptions {
   std::vector<EdgeIntervals> fixed;  // fixed interval counts
   long max_quads = kMaxMeshQuads;
   EpisodeOptions episode;            // the decomposition's options (for the replay)
+  RegionEpisodeOptions general;      // a general face's decomposition options (replay, block rules)
 };
 
 struct MeshResult {
   ConformalBlocks model;        // the blocks merged, sharing edges
-  StripLayout layout;
-  std::vector<FixedIntervals> fixed;  // the user's fixed counts, as strips
-  IntervalAssignment intervals;
+  StripLayout layout;           // a rectilinear face's strips
+  BlockModel block_model;       // a general face's block model
+  std::vector<FixedIntervals> fixed;  // the user's fixed counts, as strips (rectilinear) or model edges (general)
+  IntervalAssignment intervals; // per strip (rectilinear) or per model edge (general)
   QuadMesh mesh;
   MeshQuality quality;
   Conformity conformity;        // the independent check
   bool default_size = false;    // h was derived from the face's size
+  double bound = 1.0;           // scaled_jacobian_bound of the face (1 for a rectilinear face)
   double merge_seconds = 0.0;   // replay of the cuts and the conformal merge (OpenCASCADE)
   double interval_seconds = 0.0;
   double mesh_seconds = 0.0;    // mapped meshing
@@ -49,6 +56,14 @@ struct MeshResult {
 // Throws InputError when the decomposition is incomplete or the request is infeasible (see
 // assign_intervals, fixed_intervals_on); std::logic_error / std::runtime_error on internal failures.
 MeshResult mesh_decomposition(const InputFace& face, const Decomposition& decomposition, const MeshOptions& options = {});
+
+// Inputs:  face, a general face; decomposition of face.region (complete), made with options.general;
+//          options.
+// Outputs: everything above (layout empty; block_model, and fixed counts over its edges). Nodes lie
+//          on the face's lattice (within its quantum), and conformity is checked to that tolerance.
+// Throws as mesh_decomposition.
+MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecomposition& decomposition,
+                                     const MeshOptions& options = {});
 
 // Inputs: face; size as given (<= 0: none). Output: the target size h used.
 double target_size_for(const InputFace& face, double size);

@@ -2,25 +2,30 @@
 
 namespace autoblock {
 
-nlohmann::json mesh_report_json(const std::string& input, const Decomposition& d, const MeshResult& r, double seconds) {
+namespace {
+
+// The fields every report has; the decomposition's and the counting unit's come from the callers.
+nlohmann::json common_report(const std::string& input, const std::string& policy, size_t blocks, const MeshResult& r,
+                             double seconds, const char* unit, size_t units, const char* fixed_unit,
+                             double decomposition_seconds) {
   const MeshQuality& q = r.quality;
   const Conformity& c = r.conformity;
   nlohmann::json report;
   report["input"] = input;
-  report["policy"] = d.policy;
-  report["blocks"] = d.blocks.size();
+  report["policy"] = policy;
+  report["blocks"] = blocks;
   report["nodes"] = r.mesh.nodes.size();
   report["quads"] = r.mesh.quads.size();
   report["target_size"] = r.intervals.target_size;
   report["default_size"] = r.default_size;
-  report["intervals"] = {{"strips", r.layout.strips.size()},
+  report["intervals"] = {{unit, units},
                          {"max_deviation", r.intervals.max_deviation},
                          {"max_relative_deviation", r.intervals.max_relative_deviation},
                          {"mean_relative_deviation", r.intervals.mean_relative_deviation},
                          {"optimal", r.intervals.optimal},
                          {"fixed", nlohmann::json::array()}};
   for (const FixedIntervals& f : r.fixed) {
-    report["intervals"]["fixed"].push_back({{"edge", f.what}, {"intervals", f.intervals}, {"strips", f.strips.size()}});
+    report["intervals"]["fixed"].push_back({{"edge", f.what}, {"intervals", f.intervals}, {fixed_unit, f.strips.size()}});
   }
   report["quality"] = {{"min_scaled_jacobian", q.min_scaled_jacobian},
                        {"mean_scaled_jacobian", q.mean_scaled_jacobian},
@@ -39,16 +44,37 @@ nlohmann::json mesh_report_json(const std::string& input, const Decomposition& d
                           {"face_area", c.face_area},               {"boundary_length", c.boundary_length},
                           {"face_perimeter", c.face_perimeter},     {"problem", c.problem}};
   report["seconds"] = seconds;
-  report["timing"] = {{"decomposition", d.seconds},
+  report["timing"] = {{"decomposition", decomposition_seconds},
                       {"merge", r.merge_seconds},
                       {"intervals", r.interval_seconds},
                       {"mesh", r.mesh_seconds},
                       {"checks", r.check_seconds}};
+  return report;
+}
+
+}  // namespace
+
+nlohmann::json mesh_report_json(const std::string& input, const Decomposition& d, const MeshResult& r, double seconds) {
+  nlohmann::json report =
+      common_report(input, d.policy, d.blocks.size(), r, seconds, "strips", r.layout.strips.size(), "strips", d.seconds);
   nlohmann::json deciders = nlohmann::json::object();
   for (const std::string& who : d.decided_by) deciders[who] = deciders.value(who, 0) + 1;
   report["decomposition"] = {{"complete", d.complete()},         {"min_blocks", d.min_blocks},
                              {"cuts", d.cuts.size()},            {"return", d.total_return},
                              {"time_capped", d.time_capped},     {"decided_by", deciders}};
+  return report;
+}
+
+nlohmann::json mesh_report_json(const std::string& input, const RegionDecomposition& d, const MeshResult& r,
+                                double seconds) {
+  nlohmann::json report = common_report(input, d.policy, d.finished.size(), r, seconds, "edges",
+                                        r.block_model.edges.size(), "edges", d.seconds);
+  report["templates"] = d.templates;
+  report["quality"]["bound"] = r.bound;
+  report["quality"]["min_scaled_jacobian_over_bound"] = r.quality.min_scaled_jacobian / r.bound;
+  report["decomposition"] = {{"complete", d.complete()},     {"cuts", d.cuts.size()},
+                             {"return", d.total_return},     {"time_capped", d.time_capped},
+                             {"policy_steps", d.policy_steps}};
   return report;
 }
 

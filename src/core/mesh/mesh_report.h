@@ -7,6 +7,7 @@
 
 #include "core/env/decomposition.h"
 #include "core/mesh/mesh_pipeline.h"
+#include "core/region/region_policy.h"
 
 namespace autoblock {
 
@@ -26,5 +27,13 @@ namespace autoblock {
 //          "decided_by": {policy: cuts it chose}}}
 nlohmann::json mesh_report_json(const std::string& input, const Decomposition& decomposition, const MeshResult& result,
                                 double seconds);
+
+// Inputs:  input; decomposition, a general face's; result (mesh_region_decomposition's); seconds.
+// Outputs: the report above, with "intervals": {"edges" (model edges) instead of "strips", ...},
+//          "quality" adding "bound" (scaled_jacobian_bound) and "min_scaled_jacobian_over_bound",
+//          "blocks" counting the finished parts and "templates" those finished by a template, and
+//          "decomposition": {"complete", "cuts", "return", "time_capped", "policy_steps"}.
+nlohmann::json mesh_report_json(const std::string& input, const RegionDecomposition& decomposition,
+                                const MeshResult& result, double seconds);
 
 }  // namespace autoblock

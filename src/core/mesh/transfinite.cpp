@@ -55,4 +55,37 @@ std::vector<Point2> transfinite_grid(const std::vector<Point2>& bottom, const st
   return grid;
 }
 
+void add_mapped_block(QuadMesh& mesh, const std::vector<int>& bottom, const std::vector<int>& top,
+                      const std::vector<int>& left, const std::vector<int>& right, int block) {
+  auto points = [&](const std::vector<int>& ids) {
+    std::vector<Point2> p;
+    p.reserve(ids.size());
+    for (int id : ids) p.push_back(mesh.nodes[static_cast<size_t>(id)]);
+    return p;
+  };
+  const std::vector<Point2> grid = transfinite_grid(points(bottom), points(top), points(left), points(right));
+  const size_t nu = bottom.size() - 1, nv = left.size() - 1;
+  std::vector<int> ids(grid.size());
+  for (size_t j = 0; j <= nv; ++j) {
+    for (size_t i = 0; i <= nu; ++i) {
+      int& id = ids[j * (nu + 1) + i];
+      if (j == 0) id = bottom[i];
+      else if (j == nv) id = top[i];
+      else if (i == 0) id = left[j];
+      else if (i == nu) id = right[j];
+      else {
+        id = static_cast<int>(mesh.nodes.size());
+        mesh.nodes.push_back(grid[j * (nu + 1) + i]);
+      }
+    }
+  }
+  for (size_t j = 0; j < nv; ++j) {
+    for (size_t i = 0; i < nu; ++i) {
+      const size_t k = j * (nu + 1) + i;
+      mesh.quads.push_back({ids[k], ids[k + 1], ids[k + nu + 2], ids[k + nu + 1]});
+      mesh.quad_block.push_back(block);
+    }
+  }
+}
+
 }  // namespace autoblock

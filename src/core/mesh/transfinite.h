@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/geometry/point.h"
+#include "core/mesh/quad_mesh.h"
 
 namespace autoblock {
 
@@ -21,5 +22,14 @@ namespace autoblock {
 // Throws std::invalid_argument when the chain sizes or corners do not match.
 std::vector<Point2> transfinite_grid(const std::vector<Point2>& bottom, const std::vector<Point2>& top,
                                      const std::vector<Point2>& left, const std::vector<Point2>& right);
+
+// Inputs:  mesh, holding the sides' nodes; the four sides as node ids into mesh.nodes, oriented as
+//          transfinite_grid's (bottom P00 -> P10, top P01 -> P11, left P00 -> P01, right P10 -> P11,
+//          corners shared); block, the quads' block number.
+// Outputs: the block's interior nodes appended to mesh.nodes (transfinite_grid's), and its quads
+//          appended row by row, counter-clockwise when the sides are.
+// Throws std::invalid_argument as transfinite_grid.
+void add_mapped_block(QuadMesh& mesh, const std::vector<int>& bottom, const std::vector<int>& top,
+                      const std::vector<int>& left, const std::vector<int>& right, int block);
 
 }  // namespace autoblock

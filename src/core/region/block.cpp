@@ -36,7 +36,7 @@ std::optional<std::array<int, 4>> block_corners(const Region& region, const Bloc
 
 bool template_applies(const Region& region) { return region.is_convex(); }
 
-std::vector<std::array<Point2, 4>> template_quads(const Region& region, const BlockRules& rules) {
+std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& rules) {
   const Ring& ring = region.outer();
   const size_t n = ring.size();
   // The template's corners: the part's corners (side vertices lie on the template's sides); all
@@ -49,28 +49,71 @@ std::vector<std::array<Point2, 4>> template_quads(const Region& region, const Bl
     corners.clear();
     for (size_t i = 0; i < n; ++i) corners.push_back(i);
   }
-  // The midpoint, by length along the boundary, of the side from corner k to corner k + 1.
-  auto side_midpoint = [&](size_t k) {
-    const size_t from = corners[k], to = corners[(k + 1) % corners.size()];
-    double length = 0.0;
-    for (size_t i = from; i != to; i = (i + 1) % n) length += std::hypot(ring[(i + 1) % n].x - ring[i].x, ring[(i + 1) % n].y - ring[i].y);
-    double left = 0.5 * length;
-    for (size_t i = from;; i = (i + 1) % n) {
-      const Point2 a = ring[i], b = ring[(i + 1) % n];
-      const double e = std::hypot(b.x - a.x, b.y - a.y);
-      if (left <= e || (i + 1) % n == to) {
-        const double t = e > 0.0 ? std::min(1.0, left / e) : 0.0;
-        return Point2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
-      }
-      left -= e;
-    }
+  const size_t m = corners.size();
+  auto next = [n](size_t i) { return (i + 1) % n; };
+  auto length = [](Point2 a, Point2 b) { return std::hypot(b.x - a.x, b.y - a.y); };
+  // Side k (corner k to corner k + 1) split at its midpoint by length: the boundary vertices before
+  // it (from corner k), the midpoint, and the vertices after it (up to corner k + 1, exclusive).
+  struct Split {
+    std::vector<Point2> before, after;
+    Point2 midpoint;
   };
+  std::vector<Split> splits(m);
+  const double q = region.quantum();
+  for (size_t k = 0; k < m; ++k) {
+    // The side's vertices, corner k to corner k + 1 inclusive, and their distances along it.
+    std::vector<Point2> side{ring[corners[k]]};
+    std::vector<double> at{0.0};
+    for (size_t i = corners[k]; i != corners[(k + 1) % m]; i = next(i)) {
+      side.push_back(ring[next(i)]);
+      at.push_back(at.back() + length(ring[i], ring[next(i)]));
+    }
+    const double half = 0.5 * at.back();
+    Split& s = splits[k];
+    // A side vertex within the quantum of the midpoint is the midpoint.
+    size_t on_vertex = 0;
+    for (size_t v = 1; v + 1 < side.size(); ++v) {
+      if (std::fabs(at[v] - half) <= q) on_vertex = v;
+    }
+    for (size_t v = 0; v + 1 < side.size(); ++v) {
+      if (on_vertex != 0 ? v < on_vertex : at[v] < half) s.before.push_back(side[v]);
+      else if (on_vertex != 0 ? v > on_vertex : true) s.after.push_back(side[v]);
+    }
+    if (on_vertex != 0) {
+      s.midpoint = side[on_vertex];
+    } else {
+      size_t v = 0;
+      while (v + 2 < side.size() && at[v + 1] < half) ++v;
+      const double e = at[v + 1] - at[v];
+      const double t = e > 0.0 ? (half - at[v]) / e : 0.0;
+      s.midpoint = Point2{side[v].x + t * (side[v + 1].x - side[v].x), side[v].y + t * (side[v + 1].y - side[v].y)};
+    }
+  }
   const Point2 c = region.centroid();
-  std::vector<Point2> mids;
-  for (size_t k = 0; k < corners.size(); ++k) mids.push_back(side_midpoint(k));
+  std::vector<QuadPiece> pieces;
+  for (size_t k = 0; k < m; ++k) {
+    const Split& out = splits[k];
+    const Split& in = splits[(k + m - 1) % m];
+    QuadPiece piece;
+    piece.ring = out.before;  // corner k first
+    piece.corners[1] = static_cast<int>(piece.ring.size());
+    piece.ring.push_back(out.midpoint);
+    piece.corners[2] = static_cast<int>(piece.ring.size());
+    piece.ring.push_back(c);
+    piece.corners[3] = static_cast<int>(piece.ring.size());
+    piece.ring.push_back(in.midpoint);
+    piece.ring.insert(piece.ring.end(), in.after.begin(), in.after.end());
+    piece.corners[0] = 0;
+    pieces.push_back(std::move(piece));
+  }
+  return pieces;
+}
+
+std::vector<std::array<Point2, 4>> template_quads(const Region& region, const BlockRules& rules) {
   std::vector<std::array<Point2, 4>> quads;
-  for (size_t k = 0; k < corners.size(); ++k) {
-    quads.push_back({ring[corners[k]], mids[k], c, mids[(k + corners.size() - 1) % corners.size()]});
+  for (const QuadPiece& p : template_pieces(region, rules)) {
+    quads.push_back({p.ring[static_cast<size_t>(p.corners[0])], p.ring[static_cast<size_t>(p.corners[1])],
+                     p.ring[static_cast<size_t>(p.corners[2])], p.ring[static_cast<size_t>(p.corners[3])]});
   }
   return quads;
 }

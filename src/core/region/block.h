@@ -47,6 +47,22 @@ bool template_applies(const Region& region);
 //          quads' boundary sides, which the four points here give as chords.
 std::vector<std::array<Point2, 4>> template_quads(const Region& region, const BlockRules& rules = {});
 
+// A four-sided piece of a finished part: its loop (counter-clockwise, side vertices included) and
+// the positions of its four corners in the loop, in order. A block is one piece; a template is one
+// piece per corner of the part.
+struct QuadPiece {
+  Ring ring;
+  std::array<int, 4> corners{};
+};
+
+// Inputs:  region, convex (template_applies); rules (which vertices are side vertices).
+// Outputs: the template's pieces, one per corner of the region, in the order of template_quads:
+//          piece k runs from corner k along the region's boundary (through its side vertices) to the
+//          midpoint of that side, to the centroid, to the midpoint of the side that ends at corner k,
+//          and back along the boundary. A midpoint within the region's quantum of a side vertex is
+//          that vertex. The pieces' loops share their spokes (midpoint to centroid) exactly.
+std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& rules = {});
+
 // The minimum-area rectangle enclosing a region (its outer loop's convex hull; rotating calipers).
 struct OrientedRectangle {
   Point2 center;

@@ -8,6 +8,11 @@
 
 namespace autoblock {
 
+std::unique_lock<std::mutex> lock_general_engine() {
+  static std::mutex general_engine;
+  return std::unique_lock<std::mutex>(general_engine);
+}
+
 std::vector<ScoredAction> score_candidates(const Region& part, double face_size, const RegionEpisodeOptions& options,
                                           const std::chrono::steady_clock::time_point* deadline) {
   std::vector<ScoredAction> scored;

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <random>
 #include <string>
 #include <vector>
@@ -73,6 +74,11 @@ struct RegionDecomposition {
   bool time_capped = false;
   bool complete() const { return status == EpisodeStatus::Complete; }
 };
+
+// One general computation at a time: region/ builds CGAL without thread support (see
+// src/core/CMakeLists.txt), and front ends may call the general engine from several threads (eval's
+// workers). Whoever runs a decomposition, a replay or a step on regions holds this lock.
+std::unique_lock<std::mutex> lock_general_engine();
 
 // Inputs:  face (a region, not empty); policy; options.
 // Outputs: the decomposition, complete unless an action failed to make progress on some part.

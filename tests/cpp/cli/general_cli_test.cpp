@@ -41,11 +41,29 @@ TEST_CASE("autoblock decomposes generated general faces: report, picture and Ope
     CHECK(std::filesystem::file_size(folder + "/b.brep") > 0);
     CHECK(std::filesystem::file_size(folder + "/p.svg") > 0);
   }
-  // Meshing general blocks is not there yet: a clear input error, nothing written.
-  const auto mesh = test::run_autoblock("mesh '" + folder + "/poly/shape_0000.brep' --out '" + folder + "/m.msh'");
-  CHECK(mesh.exit_code == 2);
-  CHECK_THAT(mesh.err, Contains("meshing works on faces whose edges run along two perpendicular directions"));
-  CHECK_FALSE(std::filesystem::exists(folder + "/m.msh"));
+  // Meshing general blocks: every file written, the independent check passed, areas exact.
+  const auto mesh = test::run_autoblock("mesh '" + folder + "/poly/shape_0000.brep' --policy greedy --out '" + folder +
+                                        "/m.msh' --json '" + folder + "/m.json' --picture '" + folder + "/m.svg'");
+  INFO(mesh.out << mesh.err);
+  REQUIRE(mesh.exit_code == 0);
+  CHECK_THAT(mesh.out, Contains("of the bound"));
+  const nlohmann::json report = test::read_json(folder + "/m.json");
+  CHECK(report["conformal"] == true);
+  CHECK(report["quads"].get<int>() > 0);
+  CHECK(report["intervals"]["edges"].get<int>() > 0);
+  CHECK(report["conformity"]["quad_area"].get<double>() ==
+        Approx(report["conformity"]["face_area"].get<double>()).epsilon(1e-6));  // the lattice: within its quantum
+  const double bound = report["quality"]["bound"].get<double>();
+  CHECK((bound > 0.0 && bound <= 1.0));
+  CHECK(report["quality"]["min_scaled_jacobian"].get<double>() > 0.0);
+  CHECK(std::filesystem::file_size(folder + "/m.msh") > 0);
+  CHECK(std::filesystem::file_size(folder + "/m.svg") > 0);
+  // A fixed count on a stretch that is not made of block sides: a clear input error, nothing written.
+  const auto bad = test::run_autoblock("mesh '" + folder + "/poly/shape_0000.brep' --policy greedy --intervals 0,0,1,1=3 --out '" +
+                                       folder + "/bad.msh'");
+  CHECK(bad.exit_code == 2);
+  CHECK_THAT(bad.err, Contains("edge (0, 0)-(1, 1)"));
+  CHECK_FALSE(std::filesystem::exists(folder + "/bad.msh"));
   // eval: a data set's figures, by the general engine (no minimum there).
   const auto eval = test::run_autoblock("eval '" + folder + "/poly' '" + folder + "/cham' --policy greedy --threads 2 --json '" +
                                         folder + "/eval.json'");

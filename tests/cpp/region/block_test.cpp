@@ -65,3 +65,42 @@ TEST_CASE("the minimum-area rectangle: a turned rectangle is found in its own fr
     CHECK(m.width * m.height == Approx(4.0));
   }
 }
+
+TEST_CASE("template pieces: four-sided loops through side vertices, sharing spokes", "[region][block]") {
+  // A pentagon with a side vertex (bent by 3 degrees) on its bottom side, left of that side's midpoint.
+  const Region pentagon(Ring{{0, 0}, {1, -0.05}, {4, 0}, {5, 2}, {2, 4}, {-1, 2}}, {}, kQ);
+  REQUIRE(template_applies(pentagon));
+  const auto pieces = template_pieces(pentagon);
+  REQUIRE(pieces.size() == 5);
+  double area = 0.0;
+  const QuadPiece* from_origin = nullptr;
+  for (const QuadPiece& p : pieces) {
+    CHECK(p.corners[0] == 0);
+    CHECK(p.corners[1] < p.corners[2]);
+    CHECK(p.corners[2] < p.corners[3]);
+    CHECK(p.ring[static_cast<size_t>(p.corners[2])] == pentagon.centroid());
+    double a = 0.0;
+    for (size_t i = 0; i < p.ring.size(); ++i) a += p.ring[i].x * p.ring[(i + 1) % p.ring.size()].y - p.ring[(i + 1) % p.ring.size()].x * p.ring[i].y;
+    CHECK(a > 0.0);
+    area += 0.5 * a;
+    if (p.ring[0] == Point2{0, 0}) from_origin = &p;
+  }
+  CHECK(area == Approx(pentagon.area()));
+  // The side vertex lies on the boundary of the piece at (0, 0), before the bottom side's midpoint.
+  REQUIRE(from_origin);
+  CHECK(from_origin->corners[1] == 2);
+  CHECK(from_origin->ring[1].x == Approx(1.0));
+  CHECK(from_origin->ring[1].y == Approx(-0.05));
+  CHECK(from_origin->ring[2].x == Approx(2.0).margin(0.01));
+  // A side vertex at a side's midpoint is the midpoint.
+  const Region square(Ring{{0, 0}, {1, -0.01}, {2, 0}, {2, 2}, {0, 2}}, {}, kQ);
+  const auto square_pieces = template_pieces(square);
+  REQUIRE(square_pieces.size() == 4);
+  bool found = false;
+  for (const QuadPiece& p : square_pieces) {
+    CHECK(p.ring.size() == 4);
+    const Point2 mid = p.ring[static_cast<size_t>(p.corners[1])];
+    found = found || (std::fabs(mid.x - 1.0) < 1e-6 && std::fabs(mid.y + 0.01) < 1e-6);
+  }
+  CHECK(found);
+}

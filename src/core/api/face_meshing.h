@@ -1,0 +1,41 @@
+// Mesh one face in one call, whatever its kind: decompose it (face_actions.h) and mesh the blocks
+// (mesh_pipeline.h). The CLI's `mesh` and the benchmarks call this.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/api/face_actions.h"
+#include "core/mesh/mesh_pipeline.h"
+
+namespace autoblock {
+
+struct FaceMeshing {
+  FaceDecomposition decomposition;  // decomposition (rectilinear) or region (general); no OCCT blocks
+  MeshResult result;
+  double seconds = 0.0;             // decomposition and meshing, wall time
+  bool general() const { return decomposition.general(); }
+  const std::string& policy() const {
+    return general() ? decomposition.region.policy : decomposition.decomposition.policy;
+  }
+  size_t blocks() const {
+    return general() ? decomposition.region.finished.size() : decomposition.decomposition.blocks.size();
+  }
+};
+
+// Inputs:  face, a checked face; settings (the policy and its options; occt_blocks is ignored: the
+//          mesh pipeline replays the cuts itself); options (size, fixed intervals, quad limit; the
+//          episode options are set from settings).
+// Outputs: the decomposition and its mesh, returned even when the conformity check fails (the caller
+//          reports it: FaceMeshing::result.conformity).
+// Throws InputError for a bad policy, reward or request (see decompose_input_face, mesh_decomposition).
+FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& settings, MeshOptions options);
+
+// Inputs: input, the file name; meshing. Output: the JSON report (mesh_report.h).
+nlohmann::json face_meshing_json(const std::string& input, const FaceMeshing& meshing);
+
+// Inputs: meshing; title. Output: the picture of the blocks and the mesh (mesh_picture.h), SVG.
+std::string face_meshing_svg(const FaceMeshing& meshing, const std::string& title);
+
+}  // namespace autoblock

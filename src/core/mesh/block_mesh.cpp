@@ -1,0 +1,61 @@
+#include "core/mesh/block_mesh.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "core/mesh/transfinite.h"
+
+namespace autoblock {
+
+QuadMesh block_model_mesh(const BlockModel& model, const std::vector<int>& intervals, double z) {
+  if (intervals.size() != model.edges.size()) throw std::logic_error("block_model_mesh: one count per edge expected");
+  QuadMesh mesh;
+  mesh.z = z;
+  mesh.blocks = model.parts;
+  mesh.nodes = model.vertices;  // node v is model vertex v
+
+  // Every edge's nodes from a to b, its vertices included.
+  std::vector<std::vector<int>> edge_nodes(model.edges.size());
+  for (size_t e = 0; e < model.edges.size(); ++e) {
+    const ModelEdge& edge = model.edges[e];
+    const int n = intervals[e];
+    if (n < 1) throw std::logic_error("block_model_mesh: an edge without intervals");
+    const Point2 a = model.vertices[static_cast<size_t>(edge.a)], b = model.vertices[static_cast<size_t>(edge.b)];
+    std::vector<int>& nodes = edge_nodes[e];
+    nodes.push_back(edge.a);
+    for (int k = 1; k < n; ++k) {
+      const double t = static_cast<double>(k) / n;
+      nodes.push_back(static_cast<int>(mesh.nodes.size()));
+      mesh.nodes.push_back(Point2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)});
+    }
+    nodes.push_back(edge.b);
+  }
+
+  for (size_t b = 0; b < model.blocks.size(); ++b) {
+    const ModelBlock& block = model.blocks[b];
+    // Side k's nodes from corner k to corner k + 1.
+    std::vector<int> side_ids[4];
+    for (int k = 0; k < 4; ++k) {
+      const ModelSide& side = block.sides[static_cast<size_t>(k)];
+      std::vector<int>& ids = side_ids[k];
+      for (size_t i = 0; i < side.edges.size(); ++i) {
+        const std::vector<int>& nodes = edge_nodes[static_cast<size_t>(side.edges[i])];
+        const bool forward = side.forward[i] != 0;
+        for (size_t j = ids.empty() ? 0 : 1; j < nodes.size(); ++j) ids.push_back(forward ? nodes[j] : nodes[nodes.size() - 1 - j]);
+      }
+    }
+    if (side_ids[0].size() != side_ids[2].size() || side_ids[1].size() != side_ids[3].size() || side_ids[0].size() < 2 ||
+        side_ids[1].size() < 2) {
+      throw std::logic_error("block_model_mesh: opposite sides of block " + std::to_string(b + 1) + " have different node counts");
+    }
+    // Transfinite sides: bottom c0 -> c1 (side 0), right c1 -> c2 (side 1), top c3 -> c2 (side 2
+    // reversed), left c0 -> c3 (side 3 reversed).
+    std::vector<int> bottom = side_ids[0], right = side_ids[1];
+    std::vector<int> top(side_ids[2].rbegin(), side_ids[2].rend()), left(side_ids[3].rbegin(), side_ids[3].rend());
+    add_mapped_block(mesh, bottom, top, left, right, block.part);
+  }
+  return mesh;
+}
+
+}  // namespace autoblock

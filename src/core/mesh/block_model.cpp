@@ -1,0 +1,177 @@
+#include "core/mesh/block_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <utility>
+
+namespace autoblock {
+namespace {
+
+// Model vertices found by position within a tolerance: a hash of square cells as wide as the
+// tolerance, searched in the 3 x 3 cells around a point.
+class VertexIndex {
+ public:
+  VertexIndex(std::vector<Point2>* vertices, double tolerance) : vertices_(vertices), tolerance_(tolerance) {}
+
+  int find_or_add(Point2 p) {
+    const auto [cx, cy] = cell(p);
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const auto it = cells_.find(key(cx + dx, cy + dy));
+        if (it == cells_.end()) continue;
+        for (int id : it->second) {
+          const Point2& v = (*vertices_)[static_cast<size_t>(id)];
+          if (std::hypot(v.x - p.x, v.y - p.y) <= tolerance_) return id;
+        }
+      }
+    }
+    const int id = static_cast<int>(vertices_->size());
+    vertices_->push_back(p);
+    cells_[key(cx, cy)].push_back(id);
+    return id;
+  }
+
+ private:
+  std::pair<std::int64_t, std::int64_t> cell(Point2 p) const {
+    return {static_cast<std::int64_t>(std::floor(p.x / tolerance_)), static_cast<std::int64_t>(std::floor(p.y / tolerance_))};
+  }
+  static std::uint64_t key(std::int64_t x, std::int64_t y) {
+    return static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(y);
+  }
+
+  std::vector<Point2>* vertices_;
+  double tolerance_;
+  std::unordered_map<std::uint64_t, std::vector<int>> cells_;
+};
+
+struct LoopPiece {
+  std::vector<int> loop;  // vertex ids, counter-clockwise
+  std::array<int, 4> corners{};  // positions in loop
+  int part = 0;
+  bool from_template = false;
+};
+
+}  // namespace
+
+double BlockModel::side_length(const ModelSide& side) const {
+  double total = 0.0;
+  for (int e : side.edges) total += edges[static_cast<size_t>(e)].length;
+  return total;
+}
+
+BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, double quantum) {
+  if (!d.complete()) throw std::logic_error("block_model: the decomposition is incomplete");
+  if (!(quantum > 0.0)) throw std::logic_error("block_model: the quantum must be positive");
+  BlockModel model;
+  model.parts = static_cast<int>(d.finished.size());
+  const double tolerance = 1.5 * quantum;
+  VertexIndex index(&model.vertices, tolerance);
+
+  // The pieces, their loops as vertex ids.
+  std::vector<LoopPiece> pieces;
+  for (size_t f = 0; f < d.finished.size(); ++f) {
+    const FinishedRegion& part = d.finished[f];
+    std::vector<QuadPiece> quads;
+    if (part.is_template) {
+      quads = template_pieces(part.region, rules);
+    } else {
+      quads.push_back(QuadPiece{part.region.outer(), part.corners});
+    }
+    for (const QuadPiece& q : quads) {
+      LoopPiece piece;
+      piece.part = static_cast<int>(f);
+      piece.from_template = part.is_template;
+      std::vector<int> position(q.ring.size());
+      for (size_t i = 0; i < q.ring.size(); ++i) {
+        const int id = index.find_or_add(q.ring[i]);
+        if (!piece.loop.empty() && piece.loop.back() == id) {
+          position[i] = static_cast<int>(piece.loop.size()) - 1;
+          continue;
+        }
+        position[i] = static_cast<int>(piece.loop.size());
+        piece.loop.push_back(id);
+      }
+      while (piece.loop.size() > 1 && piece.loop.back() == piece.loop.front()) piece.loop.pop_back();
+      for (int k = 0; k < 4; ++k) {
+        piece.corners[static_cast<size_t>(k)] =
+            std::min(position[static_cast<size_t>(q.corners[static_cast<size_t>(k)])], static_cast<int>(piece.loop.size()) - 1);
+      }
+      for (int k = 0; k < 4; ++k) {
+        if (piece.corners[static_cast<size_t>(k)] == piece.corners[static_cast<size_t>((k + 1) % 4)]) {
+          throw std::logic_error("block_model: two corners of part " + std::to_string(f + 1) + " coincide");
+        }
+      }
+      pieces.push_back(std::move(piece));
+    }
+  }
+
+  // Imprint: every vertex on the inside of a loop's segment goes into the loop, in order along it.
+  for (LoopPiece& piece : pieces) {
+    std::vector<int> loop;
+    std::vector<int> new_position(piece.loop.size());
+    const size_t n = piece.loop.size();
+    for (size_t i = 0; i < n; ++i) {
+      new_position[i] = static_cast<int>(loop.size());
+      loop.push_back(piece.loop[i]);
+      const Point2 a = model.vertices[static_cast<size_t>(piece.loop[i])];
+      const Point2 b = model.vertices[static_cast<size_t>(piece.loop[(i + 1) % n])];
+      const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+      if (l2 == 0.0) continue;
+      const double length = std::sqrt(l2);
+      const double xmin = std::min(a.x, b.x) - tolerance, xmax = std::max(a.x, b.x) + tolerance;
+      const double ymin = std::min(a.y, b.y) - tolerance, ymax = std::max(a.y, b.y) + tolerance;
+      std::vector<std::pair<double, int>> inside;
+      for (size_t v = 0; v < model.vertices.size(); ++v) {
+        const Point2 p = model.vertices[v];
+        if (p.x < xmin || p.x > xmax || p.y < ymin || p.y > ymax) continue;
+        const double t = ((p.x - a.x) * dx + (p.y - a.y) * dy) / l2;
+        if (t * length <= tolerance || (1.0 - t) * length <= tolerance) continue;
+        const double off = std::fabs((p.x - a.x) * dy - (p.y - a.y) * dx) / length;
+        if (off <= tolerance) inside.emplace_back(t, static_cast<int>(v));
+      }
+      std::sort(inside.begin(), inside.end());
+      for (const auto& [t, v] : inside) loop.push_back(v);
+    }
+    for (int& c : piece.corners) c = new_position[static_cast<size_t>(c)];
+    piece.loop = std::move(loop);
+  }
+
+  // Edges by their vertex pair, and every piece's four sides.
+  std::map<std::pair<int, int>, int> edge_of;
+  std::vector<int> uses;
+  for (const LoopPiece& piece : pieces) {
+    ModelBlock block;
+    block.part = piece.part;
+    block.from_template = piece.from_template;
+    const int n = static_cast<int>(piece.loop.size());
+    for (int k = 0; k < 4; ++k) {
+      ModelSide& side = block.sides[static_cast<size_t>(k)];
+      const int from = piece.corners[static_cast<size_t>(k)], to = piece.corners[static_cast<size_t>((k + 1) % 4)];
+      for (int i = from; i != to; i = (i + 1) % n) {
+        const int a = piece.loop[static_cast<size_t>(i)], b = piece.loop[static_cast<size_t>((i + 1) % n)];
+        const std::pair<int, int> pair{std::min(a, b), std::max(a, b)};
+        auto [it, added] = edge_of.emplace(pair, static_cast<int>(model.edges.size()));
+        if (added) {
+          const Point2 pa = model.vertices[static_cast<size_t>(a)], pb = model.vertices[static_cast<size_t>(b)];
+          model.edges.push_back(ModelEdge{a, b, std::hypot(pb.x - pa.x, pb.y - pa.y)});
+          uses.push_back(0);
+        }
+        const int e = it->second;
+        if (++uses[static_cast<size_t>(e)] > 2) {
+          throw std::logic_error("block_model: an edge of part " + std::to_string(piece.part + 1) + " is used by more than two pieces");
+        }
+        side.edges.push_back(e);
+        side.forward.push_back(model.edges[static_cast<size_t>(e)].a == a);
+      }
+    }
+    model.blocks.push_back(std::move(block));
+  }
+  return model;
+}
+
+}  // namespace autoblock

@@ -1,0 +1,60 @@
+// The block model of a general decomposition: the unknowns and the layout of its mapped mesh.
+//
+// Every finished part becomes four-sided pieces (region/block.h: a block is one piece, a template
+// one piece per corner around its centroid). The model joins them: every piece's corners and side
+// vertices, the template midpoints and centroids, are model vertices, shared by position (within
+// 1.5 times the face's quantum, the tolerance of the general engine's lattice); a vertex of one
+// piece on the side of another (a T-junction) is imprinted into that side. Between consecutive
+// vertices of a piece's loop lies a model edge, a straight segment shared by the one or two pieces
+// it bounds. Each piece's four logical sides are the chains of model edges between its corners.
+// Interval assignment gives every model edge a count (edge_intervals.h); the mesh puts that many
+// intervals on every edge once (both neighbours use the same nodes: no hanging nodes) and fills every
+// piece by transfinite interpolation (block_mesh.h).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/geometry/point.h"
+#include "core/region/block.h"
+#include "core/region/region_policy.h"
+
+namespace autoblock {
+
+struct ModelEdge {
+  int a = 0, b = 0;  // vertex ids; the edge runs from a to b
+  double length = 0.0;
+};
+
+// A logical side: model edges in order from one corner to the next (counter-clockwise around the
+// piece), each run forward (a to b) or backward.
+struct ModelSide {
+  std::vector<int> edges;
+  std::vector<char> forward;
+};
+
+struct ModelBlock {
+  std::array<ModelSide, 4> sides;  // side k from corner k to corner k + 1
+  int part = 0;                    // the finished part it belongs to (index into the decomposition's)
+  bool from_template = false;
+};
+
+struct BlockModel {
+  std::vector<Point2> vertices;
+  std::vector<ModelEdge> edges;
+  std::vector<ModelBlock> blocks;
+  int parts = 0;  // finished parts
+
+  // Inputs: side. Output: its length, the sum of its edges'.
+  double side_length(const ModelSide& side) const;
+};
+
+// Inputs:  decomposition, complete; rules, the block rules it was made with (side vertices);
+//          quantum, the face's lattice spacing (Region::quantum).
+// Outputs: the model above, blocks part by part in the decomposition's order (a template's pieces
+//          in template_pieces's order).
+// Throws std::logic_error when the pieces do not fit together (an edge used by more than two
+// pieces, a corner lost).
+BlockModel block_model(const RegionDecomposition& decomposition, const BlockRules& rules, double quantum);
+
+}  // namespace autoblock

@@ -1,0 +1,225 @@
+#include "core/mesh/edge_intervals.h"
+
+#include <glpk.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "core/common/error.h"
+#include "core/common/format.h"
+
+namespace autoblock {
+namespace {
+
+struct GlpkProblem {
+  void operator()(glp_prob* p) const { glp_delete_prob(p); }
+};
+
+// f(n) = max(g / n, n / g) - 1 (see the header).
+double size_factor(double g, double n) { return std::max(g / n, n / g) - 1.0; }
+
+// The largest count the program may give an edge (guards int overflow).
+constexpr double kMaxEdgeIntervals = 1e7;
+
+double distance_to_segment(Point2 p, Point2 a, Point2 b) {
+  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+  const double t = l2 > 0.0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
+  return std::hypot(a.x + t * dx - p.x, a.y + t * dy - p.y);
+}
+
+}  // namespace
+
+int side_intervals(const BlockModel& model, const ModelSide& side, const std::vector<int>& intervals) {
+  (void)model;
+  int total = 0;
+  for (int e : side.edges) total += intervals[static_cast<size_t>(e)];
+  return total;
+}
+
+long quad_count(const BlockModel& model, const std::vector<int>& intervals) {
+  long quads = 0;
+  for (const ModelBlock& b : model.blocks) {
+    quads += static_cast<long>(side_intervals(model, b.sides[0], intervals)) * side_intervals(model, b.sides[1], intervals);
+  }
+  return quads;
+}
+
+FixedIntervals fixed_edge_intervals(const BlockModel& model, Point2 a, Point2 b, int intervals, double tolerance) {
+  FixedIntervals fixed;
+  fixed.intervals = intervals;
+  fixed.what = "edge " + format_point(a.x, a.y) + "-" + format_point(b.x, b.y);
+  if (intervals < 1) throw InputError(fixed.what + ": the interval count must be at least 1");
+  auto is_vertex = [&](Point2 p) {
+    return std::any_of(model.vertices.begin(), model.vertices.end(),
+                       [&](const Point2& v) { return std::hypot(v.x - p.x, v.y - p.y) <= tolerance; });
+  };
+  if (!is_vertex(a) || !is_vertex(b)) {
+    throw InputError(fixed.what + ": its ends must be block corners or T-junctions (vertices of the block model)");
+  }
+  double covered = 0.0;
+  for (size_t e = 0; e < model.edges.size(); ++e) {
+    const ModelEdge& edge = model.edges[e];
+    const Point2 p = model.vertices[static_cast<size_t>(edge.a)], q = model.vertices[static_cast<size_t>(edge.b)];
+    if (distance_to_segment(p, a, b) <= tolerance && distance_to_segment(q, a, b) <= tolerance) {
+      fixed.strips.push_back(static_cast<int>(e));
+      covered += edge.length;
+    }
+  }
+  const double length = std::hypot(b.x - a.x, b.y - a.y);
+  if (fixed.strips.empty() || std::fabs(covered - length) > tolerance * static_cast<double>(2 + fixed.strips.size())) {
+    throw InputError(fixed.what + ": not a straight stretch of block sides or of the face's boundary");
+  }
+  return fixed;
+}
+
+IntervalAssignment assign_edge_intervals(const BlockModel& model, const IntervalOptions& options) {
+  const double h = options.target_size;
+  if (!(h > 0) || !std::isfinite(h)) {
+    throw InputError("the element size must be a positive number, not " + format_number(h));
+  }
+  const size_t n_edges = model.edges.size();
+  if (n_edges == 0) throw std::logic_error("assign_edge_intervals: no edges");
+  // A quick bound before building anything: each block's sides over h.
+  double estimate = 0.0;
+  for (const ModelBlock& b : model.blocks) {
+    estimate += std::max(1.0, std::max(model.side_length(b.sides[0]), model.side_length(b.sides[2])) / h) *
+                std::max(1.0, std::max(model.side_length(b.sides[1]), model.side_length(b.sides[3])) / h);
+  }
+  for (const ModelEdge& e : model.edges) {
+    if (e.length / h > kMaxEdgeIntervals) estimate = 1e300;
+  }
+  check_quad_limit(estimate, true, h, options.max_quads);
+  for (const FixedIntervals& f : options.fixed) {
+    if (f.intervals < static_cast<int>(f.strips.size())) {
+      throw InputError(f.what + " cannot have " + counted(f.intervals, "interval") + ": block corners divide it into " +
+                       counted(static_cast<long long>(f.strips.size()), "edge") + ", each needing at least one");
+    }
+  }
+
+  glp_term_out(GLP_OFF);
+  std::unique_ptr<glp_prob, GlpkProblem> problem(glp_create_prob());
+  glp_prob* lp = problem.get();
+  glp_set_obj_dir(lp, GLP_MIN);
+  // Columns: 1 T; then per edge n_e (2 + 2e) and t_e (3 + 2e).
+  const int columns = static_cast<int>(1 + 2 * n_edges);
+  glp_add_cols(lp, columns);
+  glp_set_col_bnds(lp, 1, GLP_LO, 0.0, 0.0);
+  glp_set_obj_coef(lp, 1, 1.0);
+  const double mean_weight = 0.01 / static_cast<double>(n_edges);
+  auto n_col = [](size_t e) { return static_cast<int>(2 + 2 * e); };
+  auto t_col = [](size_t e) { return static_cast<int>(3 + 2 * e); };
+  for (size_t e = 0; e < n_edges; ++e) {
+    glp_set_col_kind(lp, n_col(e), GLP_IV);
+    glp_set_col_bnds(lp, n_col(e), GLP_DB, 1.0, kMaxEdgeIntervals);
+    glp_set_col_bnds(lp, t_col(e), GLP_LO, 0.0, 0.0);
+    glp_set_obj_coef(lp, t_col(e), mean_weight);
+  }
+  std::vector<int> ia{0}, ja{0};
+  std::vector<double> ar{0.0};
+  int rows = 0;
+  auto add_row = [&](int type, double lo, double hi) {
+    glp_add_rows(lp, 1);
+    glp_set_row_bnds(lp, ++rows, type, lo, hi);
+    return rows;
+  };
+  auto entry = [&](int row, int col, double value) {
+    ia.push_back(row);
+    ja.push_back(col);
+    ar.push_back(value);
+  };
+  for (size_t e = 0; e < n_edges; ++e) {
+    const double g = model.edges[e].length / h;
+    // t_e - slope n_e >= intercept for the secant between consecutive breakpoints, and T - t_e >= 0.
+    // Breakpoints: every integer down to 10, then 10 % apart down to 1 (between sparse breakpoints the
+    // secant lies above f_e: there the program sees a slightly larger deviation than the true one).
+    std::vector<int> breakpoints{std::max(1, static_cast<int>(std::ceil(g)))};
+    while (breakpoints.back() > 1) {
+      const int k = breakpoints.back();
+      breakpoints.push_back(k <= 10 ? k - 1 : std::min(k - 1, static_cast<int>(std::floor(0.9 * k))));
+    }
+    breakpoints.insert(breakpoints.begin(), breakpoints.front() + 1);
+    for (size_t i = 0; i + 1 < breakpoints.size(); ++i) {
+      const int k1 = breakpoints[i], k0 = breakpoints[i + 1];
+      const double f0 = size_factor(g, k0), f1 = size_factor(g, k1), slope = (f1 - f0) / (k1 - k0);
+      const int row = add_row(GLP_LO, f0 - slope * k0, 0.0);
+      entry(row, t_col(e), 1.0);
+      entry(row, n_col(e), -slope);
+    }
+    const int beyond = add_row(GLP_LO, -1.0, 0.0);
+    entry(beyond, t_col(e), 1.0);
+    entry(beyond, n_col(e), -1.0 / g);
+    const int max_row = add_row(GLP_LO, 0.0, 0.0);
+    entry(max_row, 1, 1.0);
+    entry(max_row, t_col(e), -1.0);
+  }
+  // Opposite sides: equal totals (an edge on both sides of a block cancels out).
+  for (const ModelBlock& b : model.blocks) {
+    for (int pair = 0; pair < 2; ++pair) {
+      std::vector<double> coefficient(n_edges, 0.0);
+      for (int e : b.sides[static_cast<size_t>(pair)].edges) coefficient[static_cast<size_t>(e)] += 1.0;
+      for (int e : b.sides[static_cast<size_t>(pair + 2)].edges) coefficient[static_cast<size_t>(e)] -= 1.0;
+      const int row = add_row(GLP_FX, 0.0, 0.0);
+      for (size_t e = 0; e < n_edges; ++e) {
+        if (coefficient[e] != 0.0) entry(row, n_col(e), coefficient[e]);
+      }
+    }
+  }
+  for (const FixedIntervals& f : options.fixed) {
+    const int row = add_row(GLP_FX, f.intervals, f.intervals);
+    for (int e : f.strips) entry(row, n_col(static_cast<size_t>(e)), 1.0);
+  }
+  glp_load_matrix(lp, static_cast<int>(ia.size()) - 1, ia.data(), ja.data(), ar.data());
+
+  glp_iocp parameters;
+  glp_init_iocp(&parameters);
+  parameters.presolve = GLP_ON;
+  parameters.msg_lev = GLP_MSG_OFF;
+  parameters.mip_gap = 1e-6;
+  parameters.tm_lim = static_cast<int>(std::min(1e9, std::max(1.0, options.time_limit * 1000.0)));
+  const int code = glp_intopt(lp, &parameters);
+  const int status = glp_mip_status(lp);
+  if (code == GLP_ENOPFS || status == GLP_NOFEAS) {
+    std::string list;
+    for (const FixedIntervals& f : options.fixed) list += (list.empty() ? "" : "; ") + f.what + " = " + std::to_string(f.intervals);
+    throw InputError("the fixed interval counts cannot all hold (" + list + "): opposite sides of every block must get equal counts");
+  }
+  if (status != GLP_OPT && status != GLP_FEAS) {
+    throw std::runtime_error("GLPK found no interval assignment (glp_intopt returned " + std::to_string(code) + ")");
+  }
+
+  IntervalAssignment result;
+  result.target_size = h;
+  result.optimal = status == GLP_OPT;
+  result.intervals.assign(n_edges, 0);
+  for (size_t e = 0; e < n_edges; ++e) {
+    const double value = glp_mip_col_val(lp, n_col(e));
+    result.intervals[e] = static_cast<int>(std::lround(value));
+    if (result.intervals[e] < 1) throw std::runtime_error("GLPK's solution leaves an edge without intervals");
+    const double d = std::fabs(model.edges[e].length / result.intervals[e] - h) / h;
+    result.mean_relative_deviation += d / static_cast<double>(n_edges);
+    if (d > result.max_relative_deviation || result.worst_strip < 0) {
+      result.max_relative_deviation = d;
+      result.worst_strip = static_cast<int>(e);
+    }
+  }
+  result.max_deviation = result.max_relative_deviation * h;
+  for (const ModelBlock& b : model.blocks) {  // the solution must give a structured grid in every block
+    if (side_intervals(model, b.sides[0], result.intervals) != side_intervals(model, b.sides[2], result.intervals) ||
+        side_intervals(model, b.sides[1], result.intervals) != side_intervals(model, b.sides[3], result.intervals)) {
+      throw std::runtime_error("GLPK's solution gives a block unequal opposite sides");
+    }
+  }
+  for (const FixedIntervals& f : options.fixed) {
+    long total = 0;
+    for (int e : f.strips) total += result.intervals[static_cast<size_t>(e)];
+    if (total != f.intervals) throw std::runtime_error("GLPK's solution breaks a fixed count");
+  }
+  result.quads = quad_count(model, result.intervals);
+  check_quad_limit(static_cast<double>(result.quads), false, h, options.max_quads);
+  return result;
+}
+
+}  // namespace autoblock

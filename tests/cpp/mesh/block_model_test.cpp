@@ -1,0 +1,84 @@
+// The block model of a general decomposition: shared vertices, imprinted T-junctions, four sides.
+#include "core/mesh/block_model.h"
+
+#include <algorithm>
+
+#include <catch2/catch.hpp>
+
+using namespace autoblock;
+
+namespace {
+
+constexpr double kQ = 1e-7;
+
+FinishedRegion block(int id, const Ring& ring) {
+  FinishedRegion f;
+  f.id = id;
+  f.region = Region(ring, {}, kQ);
+  const auto corners = block_corners(f.region);
+  REQUIRE(corners);
+  f.corners = *corners;
+  return f;
+}
+
+// A long block under two short ones: (1, 1) is a T-junction on the long block's top side.
+RegionDecomposition t_junction() {
+  RegionDecomposition d;
+  d.status = EpisodeStatus::Complete;
+  d.finished.push_back(block(0, Ring{{0, 0}, {2, 0}, {2, 1}, {0, 1}}));
+  d.finished.push_back(block(1, Ring{{0, 1}, {1, 1}, {1, 2}, {0, 2}}));
+  d.finished.push_back(block(2, Ring{{1, 1}, {2, 1}, {2, 2}, {1, 2}}));
+  return d;
+}
+
+int edge_uses(const BlockModel& m, size_t e) {
+  int uses = 0;
+  for (const ModelBlock& b : m.blocks) {
+    for (const ModelSide& s : b.sides) uses += static_cast<int>(std::count(s.edges.begin(), s.edges.end(), static_cast<int>(e)));
+  }
+  return uses;
+}
+
+}  // namespace
+
+TEST_CASE("block model: shared vertices and edges, a T-junction imprinted into the side it lies on", "[mesh][block_model]") {
+  const BlockModel m = block_model(t_junction(), BlockRules{}, kQ);
+  CHECK(m.parts == 3);
+  REQUIRE(m.blocks.size() == 3);
+  CHECK(m.vertices.size() == 8);  // the corners of the three squares; (1, 0) is none
+  // The long block's top side (side 2, from (2, 1) to (0, 1)) holds two edges, split at (1, 1).
+  const ModelBlock& bottom = m.blocks[0];
+  size_t top_side = 4;
+  for (size_t k = 0; k < 4; ++k) {
+    if (m.side_length(bottom.sides[k]) == Approx(2.0) && bottom.sides[k].edges.size() == 2) top_side = k;
+  }
+  REQUIRE(top_side < 4);
+  // Opposite: the bottom side, one edge of length 2.
+  CHECK(bottom.sides[(top_side + 2) % 4].edges.size() == 1);
+  CHECK(m.side_length(bottom.sides[(top_side + 2) % 4]) == Approx(2.0));
+  // Every edge bounds one or two pieces; the boundary edges add up to the face's perimeter (8).
+  double boundary = 0.0;
+  for (size_t e = 0; e < m.edges.size(); ++e) {
+    const int uses = edge_uses(m, e);
+    CHECK((uses == 1 || uses == 2));
+    if (uses == 1) boundary += m.edges[e].length;
+  }
+  CHECK(boundary == Approx(8.0));
+}
+
+TEST_CASE("block model: a template's pieces share their spokes and midpoints", "[mesh][block_model]") {
+  RegionDecomposition d;
+  d.status = EpisodeStatus::Complete;
+  FinishedRegion triangle;
+  triangle.region = Region(Ring{{0, 0}, {6, 0}, {0, 6}}, {}, kQ);
+  triangle.is_template = true;
+  d.finished.push_back(triangle);
+  const BlockModel m = block_model(d, BlockRules{}, kQ);
+  REQUIRE(m.blocks.size() == 3);
+  CHECK(m.vertices.size() == 7);  // 3 corners, 3 midpoints, the centroid
+  CHECK(m.edges.size() == 9);     // 6 half sides, 3 spokes
+  int shared = 0;
+  for (size_t e = 0; e < m.edges.size(); ++e) shared += edge_uses(m, e) == 2;
+  CHECK(shared == 3);
+  for (const ModelBlock& b : m.blocks) CHECK(b.from_template);
+}

@@ -1,0 +1,75 @@
+// Interval assignment on a general block model (GLPK): equal opposite totals, fixed counts, errors.
+#include "core/mesh/edge_intervals.h"
+
+#include <catch2/catch.hpp>
+
+#include "core/common/error.h"
+
+using namespace autoblock;
+using Catch::Matchers::Contains;
+
+namespace {
+
+constexpr double kQ = 1e-7;
+
+RegionDecomposition one_block(const Ring& ring) {
+  RegionDecomposition d;
+  d.status = EpisodeStatus::Complete;
+  FinishedRegion f;
+  f.region = Region(ring, {}, kQ);
+  const auto corners = block_corners(f.region);
+  REQUIRE(corners);
+  f.corners = *corners;
+  d.finished.push_back(f);
+  return d;
+}
+
+}  // namespace
+
+TEST_CASE("edge intervals: a rectangle gets counts near length / h", "[mesh][intervals][general]") {
+  const BlockModel m = block_model(one_block(Ring{{0, 0}, {4, 0}, {4, 1}, {0, 1}}), BlockRules{}, kQ);
+  IntervalOptions options;
+  options.target_size = 0.5;
+  const IntervalAssignment a = assign_edge_intervals(m, options);
+  REQUIRE(a.intervals.size() == 4);
+  for (size_t e = 0; e < 4; ++e) CHECK(a.intervals[e] == static_cast<int>(std::lround(m.edges[e].length / 0.5)));
+  CHECK(a.max_relative_deviation == Approx(0.0).margin(1e-12));
+  CHECK(a.quads == 16);
+  CHECK(quad_count(m, a.intervals) == 16);
+}
+
+TEST_CASE("edge intervals: a trapezoid's short side takes its long side's count", "[mesh][intervals][general]") {
+  // Bottom 6, top 2: opposite sides must carry equal counts whatever their lengths.
+  const BlockModel m = block_model(one_block(Ring{{0, 0}, {6, 0}, {4, 2}, {2, 2}}), BlockRules{}, kQ);
+  IntervalOptions options;
+  options.target_size = 1.0;
+  const IntervalAssignment a = assign_edge_intervals(m, options);
+  const ModelBlock& b = m.blocks[0];
+  CHECK(side_intervals(m, b.sides[0], a.intervals) == side_intervals(m, b.sides[2], a.intervals));
+  CHECK(side_intervals(m, b.sides[1], a.intervals) == side_intervals(m, b.sides[3], a.intervals));
+  // 6 and 2 against h = 1: the best compromise on the largest factor max(g / n, n / g) is n = 3 or 4.
+  const int n = side_intervals(m, b.sides[0], a.intervals);
+  CHECK((n == 3 || n == 4));
+}
+
+TEST_CASE("edge intervals: fixed counts hold or are refused with a reason", "[mesh][intervals][general]") {
+  const BlockModel m = block_model(one_block(Ring{{0, 0}, {4, 0}, {4, 1}, {0, 1}}), BlockRules{}, kQ);
+  IntervalOptions options;
+  options.target_size = 0.5;
+  options.fixed.push_back(fixed_edge_intervals(m, {0, 0}, {4, 0}, 3, 1e-9));
+  const IntervalAssignment a = assign_edge_intervals(m, options);
+  const ModelBlock& b = m.blocks[0];
+  CHECK(side_intervals(m, b.sides[0], a.intervals) == 3);
+  CHECK(side_intervals(m, b.sides[2], a.intervals) == 3);  // the opposite side follows
+  // Opposite sides fixed differently cannot hold.
+  options.fixed.push_back(fixed_edge_intervals(m, {4, 1}, {0, 1}, 5, 1e-9));
+  CHECK_THROWS_WITH(assign_edge_intervals(m, options), Contains("cannot all hold"));
+  // A stretch that does not end at model vertices, or is not on the model's edges.
+  CHECK_THROWS_WITH(fixed_edge_intervals(m, {0, 0}, {3, 0}, 2, 1e-9), Contains("block corners or T-junctions"));
+  CHECK_THROWS_WITH(fixed_edge_intervals(m, {0, 0}, {4, 1}, 2, 1e-9), Contains("not a straight stretch"));
+  options.fixed.clear();
+  options.target_size = -1.0;
+  CHECK_THROWS_AS(assign_edge_intervals(m, options), InputError);
+  options.target_size = 1e-6;
+  CHECK_THROWS_WITH(assign_edge_intervals(m, options), Contains("quadrilaterals (limit"));
+}
