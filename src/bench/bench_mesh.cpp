@@ -34,10 +34,13 @@
 #include <regex>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "core/baselines/baseline_policy.h"
 #include "core/sac/compute_threads.h"
 #include "core/api/policy_source.h"
 #include "core/common/error.h"
+#include "core/data/general_generator.h"
 #include "core/data/shape_generator.h"
 #include "core/env/decomposition.h"
 #include "core/geometry/occt_face.h"
@@ -54,6 +57,7 @@ namespace {
 
 struct Sample {
   double min_sj = 0, mean_sj = 0, max_aspect = 0;
+  double bound = 1.0;  // the face's scaled-Jacobian bound (general faces)
   int irregular = 0, quads = 0, triangles = 0;
   bool conformal = false;
   double seconds = 0, process_seconds = 0;
@@ -62,6 +66,9 @@ struct Sample {
 struct Face {
   InputFace face;
   std::string brep;  // the face as a file, for gmsh
+  // The loops the conformity check uses, and its tolerance (a general face: its lattice's).
+  std::vector<Ring> loops;
+  double tolerance = 0.0;
 };
 
 double median(std::vector<double> v) {
@@ -181,10 +188,23 @@ Sample gmsh_sample(const Face& f, const std::string& folder, int k, double h) {
   s.mean_sj = q.mean_scaled_jacobian;
   s.max_aspect = q.max_aspect_ratio;
   s.irregular = q.irregular_interior_nodes;
-  const Conformity c = check_conformity(mesh, f.face.planar.polygon);
+  const Conformity c = f.loops.empty() ? check_conformity(mesh, f.face.planar.polygon)
+                                       : check_conformity(mesh, f.loops, f.tolerance);
   s.conformal = s.triangles == 0 && c.conformal;
   if (!c.conformal) std::fprintf(stderr, "gmsh mesh of face %d (size %.6g) is not conformal: %s\n", k, h, c.problem.c_str());
   return s;
+}
+
+// gmsh with its size scaled so that its quad count comes close to quads (AutoBlock's): two rescaling
+// rounds from at_h, its run at size h (the count is not exactly proportional to 1 / size^2).
+Sample gmsh_matched_sample(const Face& f, const std::string& folder, int k, double h, const Sample& at_h, int quads) {
+  Sample matched = at_h;
+  double size = h;
+  for (int round = 0; round < 2 && matched.quads > 0 && quads > 0; ++round) {
+    size *= std::sqrt(static_cast<double>(matched.quads) / quads);
+    matched = gmsh_sample(f, folder, k, size);
+  }
+  return matched;
 }
 
 void print_row(const std::string& method, const std::vector<Sample>& samples) {
@@ -251,14 +271,7 @@ void run_set(const std::string& title, int count, int min_rects, int max_rects, 
     const double h = target_size_for(faces[k].face, 0.0);
     const Sample at_h = gmsh_sample(faces[k], folder, static_cast<int>(k), h);
     samples[gmsh_h].push_back(at_h);
-    // Two rescaling rounds: the count is not exactly proportional to 1 / size^2.
-    Sample matched = at_h;
-    double size = h;
-    for (int round = 0; round < 2 && matched.quads > 0; ++round) {
-      size *= std::sqrt(static_cast<double>(matched.quads) / first.quads);
-      matched = gmsh_sample(faces[k], folder, static_cast<int>(k), size);
-    }
-    samples[gmsh_matched].push_back(matched);
+    samples[gmsh_matched].push_back(gmsh_matched_sample(faces[k], folder, static_cast<int>(k), h, at_h, first.quads));
     if (tty) std::fprintf(stderr, "\r%s: %zu/%zu", title.c_str(), k + 1, faces.size());
   }
   if (tty) std::fprintf(stderr, "\n");
@@ -272,6 +285,103 @@ void run_set(const std::string& title, int count, int min_rects, int max_rects, 
   methods.push_back(gmsh_h);
   methods.push_back(gmsh_matched);
   for (const std::string& method : methods) print_row(method, samples[method]);
+}
+
+// `autoblock mesh` on a general face, as a user runs it (the whole process), its figures from --json.
+Sample cli_sample(const Face& f, const std::string& autoblock, const std::string& folder, int k) {
+  const std::string json = folder + "/report" + std::to_string(k) + ".json";
+  const std::string command = "'" + autoblock + "' mesh '" + f.brep + "' --json '" + json + "' > /dev/null 2>&1";
+  const auto start = std::chrono::steady_clock::now();
+  const int status = std::system(command.c_str());
+  Sample s;
+  s.process_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (status != 0) {
+    s.quads = -1;
+    return s;
+  }
+  std::ifstream in(json);
+  const nlohmann::json r = nlohmann::json::parse(in);
+  s.seconds = r["seconds"].get<double>();
+  s.min_sj = r["quality"]["min_scaled_jacobian"].get<double>();
+  s.mean_sj = r["quality"]["mean_scaled_jacobian"].get<double>();
+  s.max_aspect = r["quality"]["max_aspect_ratio"].get<double>();
+  s.irregular = r["quality"]["irregular_interior_vertices"].get<int>();
+  s.quads = r["quads"].get<int>();
+  s.conformal = r["conformal"].get<bool>();
+  s.bound = r["quality"]["bound"].get<double>();
+  return s;
+}
+
+void print_general_row(const std::string& method, const std::vector<Sample>& samples, const std::vector<Sample>& reference) {
+  std::vector<double> ms, process_ms, ratios;
+  double worst = 1e300, mean_ratio = 0, mean_min_sj = 0, irregular = 0, quads = 0;
+  int n = 0, above = 0, conformal = 0, failed = 0;
+  for (size_t k = 0; k < samples.size(); ++k) {
+    const Sample& s = samples[k];
+    if (s.quads <= 0) {
+      ++failed;
+      continue;
+    }
+    ++n;
+    const double ratio = s.min_sj / reference[k].bound;
+    worst = std::min(worst, ratio);
+    mean_ratio += ratio;
+    above += ratio >= 0.8;
+    mean_min_sj += s.min_sj;
+    irregular += s.irregular;
+    quads += s.quads;
+    conformal += s.conformal;
+    ms.push_back(1e3 * s.seconds);
+    process_ms.push_back(1e3 * s.process_seconds);
+    if (reference[k].quads > 0) ratios.push_back(s.process_seconds / reference[k].process_seconds);
+  }
+  const int d = std::max(1, n);
+  std::printf("| %s | %d/%zu | %.1f | %.4f | %.4f | %d | %.4f | %.2f | %d | %.1f | %.1f | %.2f |\n", method.c_str(), n,
+              samples.size(), quads / d, worst, mean_ratio / d, above, mean_min_sj / d, irregular / d, conformal,
+              median(ms), median(process_ms), median(ratios));
+  if (failed) std::printf("<!-- %s failed on %d faces -->\n", method.c_str(), failed);
+}
+
+// General faces: AutoBlock's `mesh` (default policy) and gmsh, side by side.
+void run_general_set(const std::string& title, const std::vector<GeneralOptions>& kinds, int count, std::uint64_t seed,
+                     const std::string& autoblock, const std::string& folder) {
+  std::mt19937_64 rng(seed);
+  std::vector<Face> faces;
+  for (int k = 0; k < count; ++k) {
+    const GeneralShape shape = generate_general_shape(rng, kinds[static_cast<size_t>(k) % kinds.size()]);
+    Face f;
+    f.face = input_face_from_occt(occt_face_from_polygon(RectilinearPolygon{shape.outer, shape.holes}, 0, true), "generated");
+    f.brep = folder + "/face" + std::to_string(k) + ".brep";
+    write_shape_file(f.brep, f.face.model);
+    if (f.face.is_general()) {
+      f.loops.push_back(f.face.region.outer());
+      f.loops.insert(f.loops.end(), f.face.region.holes().begin(), f.face.region.holes().end());
+      f.tolerance = 2.0 * f.face.region.quantum();
+    }
+    faces.push_back(std::move(f));
+  }
+  const std::string ours = "AutoBlock `mesh` (default policy)", gmsh_h = "gmsh 4.8, size h",
+                    gmsh_matched = "gmsh 4.8, size matched to AutoBlock's count";
+  std::map<std::string, std::vector<Sample>> samples;
+  const bool tty = isatty(2);
+  for (size_t k = 0; k < faces.size(); ++k) {
+    const Sample first = cli_sample(faces[k], autoblock, folder, static_cast<int>(k));
+    samples[ours].push_back(first);
+    const double h = target_size_for(faces[k].face, 0.0);
+    Sample at_h = gmsh_sample(faces[k], folder, static_cast<int>(k), h);
+    at_h.bound = first.bound;
+    samples[gmsh_h].push_back(at_h);
+    samples[gmsh_matched].push_back(gmsh_matched_sample(faces[k], folder, static_cast<int>(k), h, at_h, first.quads));
+    if (tty) std::fprintf(stderr, "\r%s: %zu/%zu", title.c_str(), k + 1, faces.size());
+  }
+  if (tty) std::fprintf(stderr, "\n");
+  std::printf("\n### %s (%d faces)\n\n", title.c_str(), count);
+  std::printf("| method | meshed | mean quads | worst min SJ / bound | mean min SJ / bound | faces >= 0.8 of the bound | "
+              "mean min SJ | mean irregular interior vertices | conformal | median ms in process | median ms, whole "
+              "process | median whole-process time / gmsh's at size h |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (const std::string& method : {ours, gmsh_h, gmsh_matched}) print_general_row(method, samples[method], samples[ours]);
+  // The gmsh rows divide by AutoBlock's bound, which is the face's (the same face): reference = ours.
 }
 
 }  // namespace
@@ -290,12 +400,40 @@ int main(int argc, char** argv) {
   app.add_option("--seed", seed, "generator seed (the large set uses seed + 1)")->capture_default_str();
   app.add_flag("--holes", holes, "faces with one or two holes");
   app.add_option("--time-limit", time_limit, "optimal: search seconds per face")->capture_default_str();
+  bool general = false;
+  app.add_flag("--general", general,
+               "general faces instead (edges at any angle): --small polygons of 5-12 vertices, --large of 13-40, a "
+               "quarter with holes, and as many chamfered unions of rectangles; AutoBlock runs as `autoblock mesh`");
   CLI11_PARSE(app, argc, argv);
   try {
     const std::string folder =
         (std::filesystem::temp_directory_path() / ("autoblock-bench-mesh-" + std::to_string(std::random_device{}()))).string();
     std::filesystem::create_directories(folder);
     set_compute_threads(1);
+    if (general) {
+      const std::string autoblock = (std::filesystem::path(argv[0]).parent_path() / "autoblock").string();
+      auto polygons = [](int lo, int hi) {
+        std::vector<GeneralOptions> kinds;
+        for (int k = 0; k < 4; ++k) {
+          GeneralOptions o;
+          o.min_vertices = lo;
+          o.max_vertices = hi;
+          o.holes = k == 3;
+          kinds.push_back(o);
+        }
+        return kinds;
+      };
+      GeneralOptions chamfered;
+      chamfered.kind = GeneralKind::Chamfered;
+      GeneralOptions chamfered_holes = chamfered;
+      chamfered_holes.holes = true;
+      if (small > 0) run_general_set("polygons of 5-12 vertices, a quarter with holes, seed " + std::to_string(seed), polygons(5, 12), small, seed, autoblock, folder);
+      if (large > 0) run_general_set("polygons of 13-40 vertices, a quarter with holes, seed " + std::to_string(seed + 1), polygons(13, 40), large, seed + 1, autoblock, folder);
+      if (small > 0) run_general_set("chamfered unions of 2-6 rectangles, a quarter with holes, seed " + std::to_string(seed + 2),
+                                     {chamfered, chamfered, chamfered, chamfered_holes}, small, seed + 2, autoblock, folder);
+      std::filesystem::remove_all(folder);
+      return 0;
+    }
     std::vector<std::shared_ptr<PolicySource>> policies;
     for (const std::string& name : policy_names) {
       BaselineOptions options;

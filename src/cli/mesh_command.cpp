@@ -1,5 +1,5 @@
 // autoblock mesh FILE [--face N] [--policy NAME] [--size H] [--intervals X0,Y0,X1,Y1=N ...]
-//                     [--out mesh.msh|.vtu|.inp] [--picture mesh.svg|.png] [--json report.json]
+//                     [--smoothing N] [--out mesh.msh|.vtu|.inp] [--picture mesh.svg|.png] [--json report.json]
 //                     [--seed S] [--max-steps N] [--time-limit T]
 #include <cstdio>
 #include <filesystem>
@@ -103,6 +103,7 @@ void add_mesh_command(CLI::App& app) {
   struct Arguments {
     std::string file, out, json, picture;
     double size = 0.0;
+    int smoothing = kDefaultSmoothingSweeps;
     std::vector<std::string> intervals;
     PolicyArguments policy;
     FaceArguments face;
@@ -117,6 +118,11 @@ void add_mesh_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   command->add_option("--intervals", args->intervals,
                       "X0,Y0,X1,Y1=N: the stretch from (X0,Y0) to (X1,Y1) gets exactly N intervals (repeatable)");
+  command->add_option("--smoothing", args->smoothing,
+                      "a general face's mesh: sweeps of smoothing that never moves boundary nodes nor lowers the "
+                      "minimum scaled Jacobian (0: none)")
+      ->check(CLI::Range(0, 1000))
+      ->capture_default_str();
   command->add_option("--out", args->out, "write the mesh: .msh (Gmsh 4.1), .vtu (VTK) or .inp (Abaqus/CalculiX)");
   command->add_option("--picture", args->picture, "write a picture of the blocks and the mesh (.svg or .png)");
   command->add_option("--json", args->json, "write the report as JSON");
@@ -130,6 +136,7 @@ void add_mesh_command(CLI::App& app) {
     require_folder(args->json, "--json");
     MeshOptions options;
     options.size = args->size;
+    options.smoothing_sweeps = args->smoothing;
     for (const std::string& text : args->intervals) options.fixed.push_back(parse_edge_intervals(text));
 
     const InputFace face = args->face.load(args->file);

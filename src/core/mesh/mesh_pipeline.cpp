@@ -144,6 +144,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
 
   start = std::chrono::steady_clock::now();
   result.mesh = block_model_mesh(result.block_model, result.intervals.intervals, face.planar.z);
+  result.smoothing = smooth_quad_mesh(result.mesh, options.smoothing_sweeps);
   result.mesh_seconds = since(start);
 
   start = std::chrono::steady_clock::now();

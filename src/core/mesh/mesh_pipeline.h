@@ -14,6 +14,7 @@
 #include "core/mesh/interval_assignment.h"
 #include "core/mesh/mesh_conformity.h"
 #include "core/mesh/mesh_quality.h"
+#include "core/mesh/mesh_smoothing.h"
 #include "core/mesh/quad_mesh.h"
 #include "core/mesh/strip_layout.h"
 
@@ -25,12 +26,17 @@ struct EdgeIntervals {
   int intervals = 1;
 };
 
+// Smoothing sweeps on a general face's mesh by default (a rectilinear face's elements are exact
+// rectangles: nothing to smooth).
+constexpr int kDefaultSmoothingSweeps = 30;
+
 struct MeshOptions {
   double size = 0.0;                 // target element size h; 0: the face's size / kDefaultSizeDivisions
   std::vector<EdgeIntervals> fixed;  // fixed interval counts
   long max_quads = kMaxMeshQuads;
   EpisodeOptions episode;            // the decomposition's options (for the replay)
   RegionEpisodeOptions general;      // a general face's decomposition options (replay, block rules)
+  int smoothing_sweeps = kDefaultSmoothingSweeps;  // a general face's mesh (mesh_smoothing.h); 0: none
 };
 
 struct MeshResult {
@@ -44,6 +50,7 @@ struct MeshResult {
   Conformity conformity;        // the independent check
   bool default_size = false;    // h was derived from the face's size
   double bound = 1.0;           // scaled_jacobian_bound of the face (1 for a rectilinear face)
+  SmoothingReport smoothing;    // a general face's
   double merge_seconds = 0.0;   // replay of the cuts and the conformal merge (OpenCASCADE)
   double interval_seconds = 0.0;
   double mesh_seconds = 0.0;    // mapped meshing

@@ -72,6 +72,9 @@ nlohmann::json mesh_report_json(const std::string& input, const RegionDecomposit
   report["templates"] = d.templates;
   report["quality"]["bound"] = r.bound;
   report["quality"]["min_scaled_jacobian_over_bound"] = r.quality.min_scaled_jacobian / r.bound;
+  report["smoothing"] = {{"sweeps", r.smoothing.sweeps},
+                         {"moves", r.smoothing.moves},
+                         {"min_scaled_jacobian_before", r.smoothing.min_before}};
   report["decomposition"] = {{"complete", d.complete()},     {"cuts", d.cuts.size()},
                              {"return", d.total_return},     {"time_capped", d.time_capped},
                              {"policy_steps", d.policy_steps}};

@@ -56,6 +56,10 @@ TEST_CASE("autoblock decomposes generated general faces: report, picture and Ope
   const double bound = report["quality"]["bound"].get<double>();
   CHECK((bound > 0.0 && bound <= 1.0));
   CHECK(report["quality"]["min_scaled_jacobian"].get<double>() > 0.0);
+  // Smoothing (on by default) never lowers the minimum.
+  CHECK(report["smoothing"]["sweeps"].get<int>() > 0);
+  CHECK(report["quality"]["min_scaled_jacobian"].get<double>() >=
+        report["smoothing"]["min_scaled_jacobian_before"].get<double>());
   CHECK(std::filesystem::file_size(folder + "/m.msh") > 0);
   CHECK(std::filesystem::file_size(folder + "/m.svg") > 0);
   // A fixed count on a stretch that is not made of block sides: a clear input error, nothing written.

@@ -1,0 +1,29 @@
+// Smoothing of a quad mesh that never moves a boundary node and never lowers the minimum scaled
+// Jacobian.
+//
+// A sweep visits every node that is not on the mesh's boundary (boundary nodes are the ends of edges
+// used by one quad: the face's outer loop and holes). For each it tries two positions: the
+// isoparametric one, the mean over its quads of (previous + next - opposite corner), which keeps an
+// affine (parallelogram) grid exactly where it is, and the Laplacian one, the mean of its edge
+// neighbours; and halfway to each. The node moves to the candidate whose worst quad around it (the
+// smallest scaled Jacobian, mesh_quality.h) is best, only if that is better than where it is. A move
+// changes only the quads around the node, and only for the better at their worst, so the mesh's
+// minimum scaled Jacobian never drops and no quad inverts. Sweeps stop after max_sweeps, or when a
+// sweep improves no node's worst quad by more than 1e-6.
+#pragma once
+
+#include "core/mesh/quad_mesh.h"
+
+namespace autoblock {
+
+struct SmoothingReport {
+  int sweeps = 0;         // sweeps run
+  int moves = 0;          // node moves made
+  double min_before = 0.0, min_after = 0.0;  // the mesh's minimum scaled Jacobian
+};
+
+// Inputs:  mesh, counter-clockwise quads; max_sweeps >= 0 (0: nothing moves).
+// Outputs: mesh with its interior nodes moved as above; the report.
+SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps);
+
+}  // namespace autoblock
