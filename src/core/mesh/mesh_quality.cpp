@@ -74,25 +74,4 @@ MeshQuality mesh_quality(const QuadMesh& mesh) {
   return m;
 }
 
-double scaled_jacobian_bound(const std::vector<Ring>& loops) {
-  double bound = 1.0;
-  for (const Ring& ring : loops) {
-    const size_t n = ring.size();
-    for (size_t i = 0; i < n; ++i) {
-      const Point2 prev = ring[(i + n - 1) % n], at = ring[i], next = ring[(i + 1) % n];
-      // Interior angle for the region on the left: the turn from the incoming to the outgoing edge.
-      const double in = std::atan2(at.y - prev.y, at.x - prev.x), out = std::atan2(next.y - at.y, next.x - at.x);
-      double turn = out - in;
-      while (turn <= -M_PI) turn += 2.0 * M_PI;
-      while (turn > M_PI) turn -= 2.0 * M_PI;
-      const double t = M_PI - turn;
-      // sin(t / k) is largest for t / k nearest a right angle: k = floor or ceil of t / (pi / 2).
-      const double k0 = std::max(1.0, std::floor(t / (0.5 * M_PI)));
-      const double best = std::max(std::sin(t / k0), std::sin(t / (k0 + 1.0)));
-      bound = std::min(bound, best);
-    }
-  }
-  return bound;
-}
-
 }  // namespace autoblock

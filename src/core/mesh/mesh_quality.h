@@ -12,9 +12,7 @@
 #pragma once
 
 #include <array>
-#include <vector>
 
-#include "core/geometry/rectilinear_polygon.h"
 #include "core/mesh/quad_mesh.h"
 
 namespace autoblock {
@@ -38,13 +36,5 @@ QuadQuality quad_quality(const std::array<Point2, 4>& corners);
 // Inputs: mesh with at least one quad. Output: the statistics over all quads and nodes.
 MeshQuality mesh_quality(const QuadMesh& mesh);
 
-// The best minimum scaled Jacobian any all-quad mesh of a face can have, set by its corners: k quads
-// meeting at a boundary corner of interior angle t split it into angles summing to t, the best being
-// t / k each, whose scaled Jacobian is at most sin(t / k). So the bound is the minimum over the
-// corners of the maximum over k >= 1 of sin(t / k) (1 for a right angle or a straight vertex; a
-// 135-degree chamfer corner allows sin 67.5 = 0.924; a 30-degree corner sin 30 = 0.5).
-// Inputs: loops, the face's outer loop and holes (the region on each loop's left: outer
-//         counter-clockwise, holes clockwise). Output: the bound, in (0, 1].
-double scaled_jacobian_bound(const std::vector<Ring>& loops);
 
 }  // namespace autoblock

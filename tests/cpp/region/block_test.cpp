@@ -104,3 +104,20 @@ TEST_CASE("template pieces: four-sided loops through side vertices, sharing spok
   }
   CHECK(found);
 }
+
+TEST_CASE("the scaled Jacobian bound of a face's corners", "[region][block]") {
+  CHECK(scaled_jacobian_bound({Ring{{0, 0}, {1, 0}, {1, 1}, {0, 1}}}) == Approx(1.0));
+  // An L-shape's reflex corner (270 degrees) takes three right angles.
+  CHECK(scaled_jacobian_bound({Ring{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}}) == Approx(1.0));
+  // A chamfered square: 135-degree corners, two quads of 67.5 degrees.
+  CHECK(scaled_jacobian_bound({Ring{{1, 0}, {3, 0}, {4, 1}, {4, 3}, {3, 4}, {1, 4}, {0, 3}, {0, 1}}}) ==
+        Approx(std::sin(67.5 * M_PI / 180.0)));
+  // An equilateral triangle: 60 degrees, one quad.
+  CHECK(scaled_jacobian_bound({Ring{{0, 0}, {2, 0}, {1, std::sqrt(3.0)}}}) == Approx(std::sin(M_PI / 3.0)));
+  // A triangular hole (clockwise) with a 30-degree corner: for the face that corner is reflex, 330
+  // degrees, best split into four quads of 82.5 degrees (its 75-degree corners give 285: three of 95).
+  const Ring square{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const double t = 30.0 * M_PI / 180.0;
+  const Ring sharp_hole{{4, 4}, {4 + 3 * std::cos(t), 4 + 3 * std::sin(t)}, {7, 4}};  // clockwise
+  CHECK(scaled_jacobian_bound({square, sharp_hole}) == Approx(std::sin(82.5 * M_PI / 180.0)));
+}
