@@ -22,19 +22,25 @@ bool corners_at_least(const Ring& ring, double degrees) {
 }
 
 Ring star_polygon(std::mt19937_64& rng, int vertices, double radius, double* inner_radius) {
+  // Angles drawn again until no gap reaches pi: only then is the polygon star-shaped around the centre,
+  // hence simple (an edge across a wider gap passes the centre on the far side and may cross others).
   std::vector<double> angles;
-  for (int i = 0; i < vertices; ++i) angles.push_back(uniform(rng, 0.0, 2.0 * M_PI));
-  std::sort(angles.begin(), angles.end());
-  double max_gap = angles.front() + 2.0 * M_PI - angles.back(), min_r = radius;
-  for (size_t i = 1; i < angles.size(); ++i) max_gap = std::max(max_gap, angles[i] - angles[i - 1]);
+  double max_gap = 2.0 * M_PI, min_r = radius;
+  while (max_gap >= M_PI) {
+    angles.clear();
+    for (int i = 0; i < vertices; ++i) angles.push_back(uniform(rng, 0.0, 2.0 * M_PI));
+    std::sort(angles.begin(), angles.end());
+    max_gap = angles.front() + 2.0 * M_PI - angles.back();
+    for (size_t i = 1; i < angles.size(); ++i) max_gap = std::max(max_gap, angles[i] - angles[i - 1]);
+  }
   Ring ring;
   for (double t : angles) {
     const double r = uniform(rng, 0.45, 1.0) * radius;
     min_r = std::min(min_r, r);
     ring.push_back({r * std::cos(t), r * std::sin(t)});
   }
-  // Every edge keeps at least min_r cos(max_gap / 2) from the centre when max_gap < pi.
-  *inner_radius = max_gap < M_PI ? min_r * std::cos(max_gap / 2.0) : 0.0;
+  // Every edge keeps at least min_r cos(max_gap / 2) from the centre.
+  *inner_radius = min_r * std::cos(max_gap / 2.0);
   return ring;
 }
 
