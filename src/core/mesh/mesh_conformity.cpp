@@ -52,7 +52,13 @@ Conformity check_conformity(const QuadMesh& mesh, const std::vector<Ring>& loops
     double twice = 0;
     for (size_t k = 0; k < 4; ++k) twice += p[k].x * p[(k + 1) % 4].y - p[(k + 1) % 4].x * p[k].y;
     c.quad_area += 0.5 * twice;
-    c.inverted_quads += twice <= 0;
+    // Inverted: a corner whose edges turn clockwise (a negative Jacobian there), or no area at all.
+    bool corner_inverted = false;
+    for (size_t k = 0; k < 4; ++k) {
+      const Point2 a = p[(k + 3) % 4], v = p[k], b = p[(k + 1) % 4];
+      corner_inverted = corner_inverted || (b.x - v.x) * (a.y - v.y) - (b.y - v.y) * (a.x - v.x) <= 0.0;
+    }
+    c.inverted_quads += twice <= 0 || corner_inverted;
   }
   for (const MeshEdge& e : mesh_edges(mesh)) {
     if (e.uses == 2) {

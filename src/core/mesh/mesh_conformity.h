@@ -3,8 +3,9 @@
 // Uses nothing but the mesh and the face's polygon: every mesh edge is used by one or two quads;
 // every edge used once (a boundary edge) lies on the face's boundary, and together they are as
 // long as the face's perimeter (outer boundary and holes); every interior edge is run once in each
-// direction by its two quads (consistent orientation); every quad is counter-clockwise with
-// positive area, and the quads' areas add up to the face's. A hanging node or an unshared edge
+// direction by its two quads (consistent orientation); every quad is counter-clockwise and
+// convex (a positive Jacobian at each corner: a reflex corner counts as inverted), and the quads'
+// areas add up to the face's. A hanging node or an unshared edge
 // shows up as a boundary edge inside the face.
 #pragma once
 
@@ -22,7 +23,7 @@ struct Conformity {
   int overused_edges = 0;        // used by three or more quads
   int stray_boundary_edges = 0;  // used by one quad but not on the face's boundary
   int misoriented_edges = 0;     // used by two quads running it the same way
-  int inverted_quads = 0;        // signed area <= 0
+  int inverted_quads = 0;        // a corner with a Jacobian <= 0 (reflex or degenerate), or area <= 0
   double quad_area = 0.0, face_area = 0.0;
   double boundary_length = 0.0, face_perimeter = 0.0;
   std::string problem;           // why it is not conformal ("" when it is)

@@ -10,7 +10,9 @@
 #include "core/data/general_generator.h"
 #include "core/mesh/edge_intervals.h"
 #include "core/mesh/mesh_conformity.h"
+#include "core/mesh/mesh_pipeline.h"
 #include "core/mesh/mesh_quality.h"
+#include "core/mesh/mesh_smoothing.h"
 #include "core/region/region_policy.h"
 
 using namespace autoblock;
@@ -71,8 +73,9 @@ TEST_CASE("block mesh: general decompositions with holes mesh conformally, templ
 
 TEST_CASE("block mesh: every generated general face meshes all-quad and conformal", "[mesh][general][property]") {
   // Random polygons and chamfered unions, a third with holes, 5 to 20 vertices, at two scales; the
-  // greedy general engine's blocks and templates. Every mesh must pass the independent check with
-  // the face's area, and have no inverted quad.
+  // general engine's greedy policy with the mesh preset (deterministic; the search's time limit is
+  // not), meshed and smoothed as the mesh pipeline does. Every
+  // mesh must pass the independent check with the face's area, and have no inverted quad.
   std::mt19937_64 rng(20261130);
   int faces = 0;
   for (int i = 0; i < 150; ++i) {
@@ -85,14 +88,17 @@ TEST_CASE("block mesh: every generated general face meshes all-quad and conforma
     const double q = 1e-7 * options.size;
     const Region face(shape.outer, shape.holes, q);
     RegionGreedyPolicy greedy;
-    const RegionDecomposition d = decompose_region(face, greedy);
+    RegionEpisodeOptions episode;
+    episode.reward = RewardPreset::Mesh;  // the preset `autoblock mesh` decomposes with
+    const RegionDecomposition d = decompose_region(face, greedy, episode);
     INFO("face " << i);
     REQUIRE(d.complete());
     const BlockModel m = block_model(d, BlockRules{}, q);
     IntervalOptions intervals;
     intervals.target_size = face.bbox().longer_side() / 15.0;
     const IntervalAssignment a = assign_edge_intervals(m, intervals);
-    const QuadMesh mesh = block_model_mesh(m, a.intervals, 0.0);
+    QuadMesh mesh = block_model_mesh(m, a.intervals, 0.0);
+    smooth_quad_mesh(mesh, kDefaultSmoothingSweeps);  // as the mesh pipeline does
     std::vector<Ring> loops{face.outer()};
     loops.insert(loops.end(), face.holes().begin(), face.holes().end());
     const Conformity c = check_conformity(mesh, loops, 2 * q);

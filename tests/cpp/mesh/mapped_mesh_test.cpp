@@ -138,6 +138,13 @@ TEST_CASE("the conformity check catches hanging nodes, gaps and overlaps", "[mes
   CHECK_FALSE(i.conformal);
   CHECK(i.misoriented_edges == 1);  // the shared edge runs the same way in both quads
   CHECK(i.inverted_quads == 1);
+  // A quad with a reflex corner (positive area, a negative Jacobian at one corner) is inverted too:
+  // the shared node (1, 1) pulled into the left quad past its diagonal.
+  QuadMesh dart = good;
+  dart.nodes[4] = {0.3, 0.2};
+  const Conformity d = check_conformity(dart, face);
+  CHECK_FALSE(d.conformal);
+  CHECK(d.inverted_quads == 1);
 }
 
 TEST_CASE("autoblock meshes hundreds of generated faces conformally with perfect quads", "[mesh][mapped][occt]") {
