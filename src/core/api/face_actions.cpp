@@ -41,6 +41,24 @@ std::unique_ptr<RegionPolicy> general_policy(const std::string& name, const Poli
                    "this face has edges at other angles: use one of " + list);
 }
 
+// One general decomposition at a time: region/ builds CGAL without thread support (see
+// src/core/CMakeLists.txt), and front ends may call core/api from several threads (eval's workers).
+std::mutex& general_engine() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+RegionEpisodeOptions general_options(const InputFace& face, const std::string& what, int max_steps, RewardPreset reward) {
+  if (!face.is_general()) {
+    throw InputError(face.source + ": " + what + ": this face's edges run along two perpendicular directions, so its "
+                     "cuts are given by vertex and axis, not by origin and direction");
+  }
+  RegionEpisodeOptions options;
+  options.max_steps = max_steps;
+  options.reward = reward;
+  return options;
+}
+
 // The faces in the model's coordinates.
 std::vector<TopoDS_Face> to_model(std::vector<TopoDS_Face> faces, const Placement& frame) {
   if (frame.identity()) return faces;
@@ -64,10 +82,7 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
     options.reward = !settings.reward.empty() ? reward_preset_by_name(settings.reward)
                                               : (searching ? RewardPreset::Mesh : RewardPreset::Paper);
     {
-      // One general decomposition at a time: region/ builds CGAL without thread support (see
-      // src/core/CMakeLists.txt), and front ends may call this from several threads (eval's workers).
-      static std::mutex general_engine;
-      const std::lock_guard<std::mutex> lock(general_engine);
+      const std::lock_guard<std::mutex> lock(general_engine());
       result.region = decompose_region(face.region, *policy, options);
       if (settings.occt_blocks) blocks = replay_region_cuts_occt(face.occt, face.region, result.region, options);
     }
@@ -96,6 +111,20 @@ EpisodeSnapshot face_step(const InputFace& face, const std::vector<CutSpec>& cut
   options.max_steps = max_steps;
   options.reward = reward;
   return episode_snapshot(face.grid, cuts, step, options);
+}
+
+RegionSnapshot face_step_general(const InputFace& face, const std::vector<RegionActionSpec>& actions, int step,
+                                 int max_steps, RewardPreset reward) {
+  const RegionEpisodeOptions options = general_options(face, "stepping through a general sequence", max_steps, reward);
+  const std::lock_guard<std::mutex> lock(general_engine());
+  return region_snapshot(face.region, actions, step, options);
+}
+
+RegionDecomposition face_replay_general(const InputFace& face, const std::vector<RegionActionSpec>& actions,
+                                        int max_steps, RewardPreset reward, const std::string& policy) {
+  const RegionEpisodeOptions options = general_options(face, "replaying a general sequence", max_steps, reward);
+  const std::lock_guard<std::mutex> lock(general_engine());
+  return replay_region_decomposition(face.region, actions, options, policy);
 }
 
 std::vector<double> face_vertex_scores(const InputFace& face, const std::vector<CutSpec>& cuts, int step,

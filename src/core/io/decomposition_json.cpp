@@ -105,6 +105,7 @@ nlohmann::json region_decomposition_json(const std::string& input, const InputFa
       cut["origin"] = point_json(rc.origin.x, rc.origin.y);
       cut["direction"] = point_json(rc.direction.x, rc.direction.y);
       cut["angle_degrees"] = std::atan2(rc.direction.y, rc.direction.x) * 180.0 / M_PI;
+      cut["forced"] = rc.forced;  // taken by the engine's last resort (region_cut.h): a replay needs it
       cut["chords"] = nlohmann::json::array();
       for (const Chord& chord : c.chords) cut["chords"].push_back({point_json(chord.a.x, chord.a.y), point_json(chord.b.x, chord.b.y)});
     }
