@@ -99,7 +99,8 @@ nlohmann::json region_decomposition_json(const std::string& input, const InputFa
   }
   report["cuts"] = nlohmann::json::array();
   for (const RegionCutRecord& c : d.cuts) {
-    nlohmann::json cut{{"part", c.part_id}, {"kind", action_kind_name(c.action)}, {"n_parts", c.n_parts}, {"reward", c.reward}};
+    nlohmann::json cut{{"part", c.part_id}, {"kind", action_kind_name(c.action)}, {"n_parts", c.n_parts}, {"reward", c.reward},
+                       {"children", c.children}};
     if (c.action.kind == RegionAction::Kind::Cut) {
       const RegionCut& rc = c.action.cut;
       cut["origin"] = point_json(rc.origin.x, rc.origin.y);
