@@ -1,4 +1,6 @@
-"""AutoBlock for FreeCAD: cut planar rectilinear faces into rectangular blocks and mesh them with quads.
+"""AutoBlock for FreeCAD: cut planar faces bounded by straight edges into blocks (rectangles on rectilinear faces,
+convex quadrilaterals and templates on faces with edges at other angles) and mesh them with quads (rectilinear
+faces for now).
 
 Console API (freecadcmd or FreeCAD's Python console):
 

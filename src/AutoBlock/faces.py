@@ -2,9 +2,11 @@
 
 A face can be given as a Part.Face, any Part.Shape holding one face (or closed planar wires, as a
 sketch holds), a document object with such a shape, or an object with a sub-element name
-((obj, "Face3")). The core cuts faces parallel to the XY plane with edges along X and Y; a face in
-any other plane (a sketch on XZ, the side of a box) or turned within its plane is carried into its
-own frame first (face_frame), cut there, and the blocks carried back.
+((obj, "Face3")). The core cuts faces parallel to the XY plane; a face in any other plane (a sketch on
+XZ, the side of a box) or turned within its plane is carried into its own frame first (face_frame,
+the same rule as the core's, src/core/geometry/occt_face.h), cut there, and the blocks carried back.
+In that frame a face whose edges run along two perpendicular directions has them along X and Y (the
+grid engine); any other (the general engine) keeps its longest straight edge along X.
 """
 
 import FreeCAD

@@ -268,6 +268,7 @@ void finish_next(py::dict& next, const std::vector<SegmentT>& segments, double r
 py::dict general_step_dict(const RegionSnapshot& s, const InputFace& face) {
   py::dict out = step_head("general", s.step, s.steps, s.blocks, s.return_so_far, s.status, face);
   out["templates"] = s.templates;
+  out["quantum"] = face.region.quantum();  // the lattice the pieces' corners lie on (region.h)
   py::list pieces;
   for (const RegionSnapshotPiece& piece : s.pieces) {
     py::dict p = piece_dict(piece.id, piece.finished, piece.region.outer(), piece.region.holes());

@@ -548,6 +548,62 @@ class TestStepThroughPanel(GuiTestCase):
         self.assertLess(width, 120)
         self.assertLess(height, 40)
 
+    def test_angled_and_partial_cuts_of_a_slanted_sketch_are_drawn(self):
+        from AutoBlock.objects.fem_mesh import mesh_objects_of
+        from AutoBlock.taskpanels import step_through
+        from AutoBlock.taskpanels.step_scene import CUT_COLOUR
+
+        sketch = support.add_slanted_sketch(self.doc)
+        pump()
+        obj = self.auto_block(sketch)[0]  # a face with edges at other angles: the general engine
+        self.assertEqual(mesh_objects_of(obj), [])  # no mesher for such faces in the workbench yet
+        self.assertGreater(obj.NumberOfCuts, 1)
+        top_view()
+        before = ([o.Name for o in self.doc.Objects], self.doc.UndoCount, obj.Shape.exportBrepToString())
+        self.assertTrue(step_through.open_step_panel(obj))
+        pump()
+        panel = step_through.current_panel()
+        form = panel.form
+        lift = 1e-3 * max(panel.current.size, 1e-9) * 2 * 1.01
+        shown = set()
+        for k in range(obj.NumberOfCuts):
+            form.slider.setValue(k)
+            pump(0.1)
+            cut = panel.current.next
+            words = form.directionLabel.text()
+            if cut.kind == "template":
+                self.assertIn("template", words)
+                continue
+            self.assertIn("{} cut at".format(cut.kind), words)
+            self.assertIn("faces with edges at other angles", step_through.plain_text(form.scoresLabel.text()))
+            # The red line is the cut's chords, at their angle: one 2-point polyline per chord.
+            red = []
+            for material in self.scene_nodes_of_type(panel.scene.content, "SoMaterial"):
+                colour = material.diffuseColor[0].getValue()
+                if all(abs(a - b) < 1e-6 for a, b in zip(colour, CUT_COLOUR)):
+                    red.append(material)
+            self.assertEqual(len(red), 1 if cut.line else 0)
+            if cut.line:
+                lines = self.scene_nodes_of_type(panel.scene.content, "SoLineSet")
+                counts = [list(node.numVertices.getValues()) for node in lines]
+                self.assertIn([2] * len(cut.line), counts)
+                points = [p for node in self.scene_nodes_of_type(panel.scene.content, "SoCoordinate3")
+                          for p in (FreeCAD.Vector(*v.getValue()) for v in node.point.getValues())]
+                for a, b in cut.line:
+                    for end in (a, b):
+                        self.assertTrue(any((end - p).Length <= lift for p in points), end)
+                shown.add(cut.kind)
+        self.assertTrue(shown)
+        FreeCADGui.Selection.clearSelection()
+        form.slider.setValue(0)
+        pump()
+        screenshot("step-through-general")
+        panel.reject()
+        pump()
+        self.assertEqual(self.scene_nodes(), [])
+        self.assertEqual(([o.Name for o in self.doc.Objects], self.doc.UndoCount, obj.Shape.exportBrepToString()),
+                         before)
+
     def test_a_baseline_has_no_scores_and_the_panel_says_so(self):
         from AutoBlock.taskpanels import step_through
 
