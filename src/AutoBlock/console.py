@@ -190,6 +190,7 @@ class DecompositionResult:
             return json.dumps({
                 "version": 3,
                 "engine": "general",
+                "policy": self.policy,
                 "face": self._fingerprint,
                 "max_steps": self.max_steps,
                 "reward": self.reward,
@@ -308,6 +309,30 @@ def decompose(face_or_object, policy=None, reward=None, seed=0, time_limit=30.0,
     except ValueError as error:
         raise _in_frame_note(frame, error, face.BoundBox.DiagonalLength) from None
     return DecompositionResult(data, face, local, frame, label)
+
+
+def replay(target, cut_sequence, sub=None):
+    """A face with edges at other angles decomposed again by replaying a stored cut sequence, without searching:
+    the same blocks, cut by OpenCASCADE, for the same face (e.g. after reopening a document).
+
+    target: as for decompose(); cut_sequence: DecompositionResult.cut_sequence() (JSON text or its parsed
+    dict; an AutoBlock object's CutSequence). Returns a DecompositionResult (its policy: the one that made the
+    sequence). Raises ValueError when the sequence is not a general face's, the face is not the one it was made
+    on (its figures differ), or an action does not belong to the face.
+    """
+    data = json.loads(cut_sequence) if isinstance(cut_sequence, str) else dict(cut_sequence)
+    if data.get("engine") != "general":
+        raise ValueError("replay takes the cut sequence of a face with edges at other angles (engine 'general'); "
+                         "decompose other faces")
+    face, local, frame, label = local_face(target, sub)
+    if not same_face(data.get("face"), local):
+        raise ValueError("{}: not the face this cut sequence was made on (its figures differ)".format(label))
+    try:
+        out = native.load().replay(local.exportBrepToString(), sequence_specs(data), int(data.get("max_steps", 0)),
+                                   sequence_reward(data), str(data.get("policy") or "replay"), label)
+    except ValueError as error:
+        raise _in_frame_note(frame, error, face.BoundBox.DiagonalLength) from None
+    return DecompositionResult(out, face, local, frame, label)
 
 
 def policy_names():

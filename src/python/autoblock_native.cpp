@@ -153,15 +153,28 @@ py::dict check_face_py(const std::string& brep, const std::string& source) {
   return d;
 }
 
-// A general decomposition for Python: the CLI's JSON report (region_decomposition_json) as data, with
-// the blocks as BREP text (and the report's block outlines as "outlines"), their merged shape, the
-// step cap asked for and the face's figures.
-py::dict general_decomposition_dict(const nlohmann::json& report, const std::vector<std::string>& blocks,
-                                    const std::string& shape, int max_steps, const InputFace& face) {
-  py::dict out = python_of(report).cast<py::dict>();
+// A decomposition's results as text (made without the GIL): its blocks and their merged shape as
+// BREP text, and a general face's JSON report (region_decomposition_json, the CLI's).
+struct Written {
+  std::vector<std::string> blocks;
+  std::string shape;
+  nlohmann::json report;
+  Written() = default;
+  Written(const FaceDecomposition& result, const std::string& source) {
+    for (const TopoDS_Face& block : result.block_faces) blocks.push_back(write_brep_text(block));
+    shape = write_brep_text(result.shape);
+    if (result.general()) report = region_decomposition_json(source, result.face, result.region);
+  }
+};
+
+// A general decomposition for Python: the CLI's JSON report as data, with the blocks as BREP text (and
+// the report's block outlines as "outlines"), their merged shape, the step cap asked for and the face's
+// figures.
+py::dict general_decomposition_dict(const Written& written, int max_steps, const InputFace& face) {
+  py::dict out = python_of(written.report).cast<py::dict>();
   out["outlines"] = out["blocks"];
-  out["blocks"] = blocks;
-  out["shape"] = shape;
+  out["blocks"] = written.blocks;
+  out["shape"] = written.shape;
   out["min_blocks"] = py::none();
   out["max_steps"] = max_steps;
   out["report_face"] = out["face"];
@@ -179,17 +192,15 @@ py::dict decompose_py(const std::string& brep, const std::string& policy, const 
   if (general_time_limit >= 0) settings.policy_settings.general_time_limit = general_time_limit;
   settings.max_steps = max_steps;
   FaceDecomposition result;
-  std::vector<std::string> blocks;
-  std::string shape;
-  nlohmann::json report;
+  Written written;
   {
     py::gil_scoped_release release;
     result = decompose_input_face(face_of(brep, source), settings);
-    for (const TopoDS_Face& block : result.block_faces) blocks.push_back(write_brep_text(block));
-    shape = write_brep_text(result.shape);
-    if (result.general()) report = region_decomposition_json(source, result.face, result.region);
+    written = Written(result, source);
   }
-  if (result.general()) return general_decomposition_dict(report, blocks, shape, max_steps, result.face);
+  if (result.general()) return general_decomposition_dict(written, max_steps, result.face);
+  const std::vector<std::string>& blocks = written.blocks;
+  const std::string& shape = written.shape;
   const Decomposition& d = result.decomposition;
   py::dict out;
   out["engine"] = "grid";
@@ -331,6 +342,27 @@ py::dict step_py(const std::string& brep, const py::object& cuts, int step, int 
     out["next"] = py::none();
   }
   return out;
+}
+
+// A general face's cut sequence replayed (no search): as decompose_py's general dict.
+py::dict replay_py(const std::string& brep, const py::object& cuts, int max_steps, const std::string& reward,
+                   const std::string& policy, const std::string& source) {
+  const RewardPreset preset = reward_preset_by_name(reward);
+  const Sequence sequence = sequence_of(cuts);
+  FaceDecomposition result;
+  Written written;
+  {
+    py::gil_scoped_release release;
+    const InputFace face = face_of(brep, source);
+    if (!face.is_general()) {
+      throw InputError(face.source + ": replay takes the cut sequence of a face with edges at other angles; this "
+                       "face's edges run along two perpendicular directions (decompose it)");
+    }
+    sequence.check_for(face);
+    result = face_replay_general(face, sequence.region, max_steps, preset, policy);
+    written = Written(result, source);
+  }
+  return general_decomposition_dict(written, max_steps, result.face);
 }
 
 py::dict policy_info_py(const std::string& spec) {
@@ -573,6 +605,12 @@ PYBIND11_MODULE(autoblock_native, m) {
         "line, reward) or None. Cuts: [(part, x, y, 'horizontal'|'vertical'), ...] on a grid face, [(part, kind, ox, "
         "oy, dx, dy, forced), ...] on a general face (kind 'full', 'partial' or 'template'; then the next cut also "
         "has kind, origin, direction (a vector) and its chords as line, chosen -1 when the origin is on an edge).");
+  m.def("replay", &replay_py, py::arg("brep"), py::arg("cuts"), py::arg("max_steps") = 0, py::arg("reward") = "paper",
+        py::arg("policy") = "replay", py::arg("source") = "face",
+        "Replay a general face's cut sequence [(part, kind, ox, oy, dx, dy, forced), ...] (as step() takes it) "
+        "without searching again: the same dict as decompose() gives for a general face (policy: the name it "
+        "reports). ValueError when an action does not belong to the face, the sequence leaves parts unfinished, "
+        "or the face is rectilinear.");
   m.def("policy_info", &policy_info_py, py::arg("policy") = "",
         "What a policy is: {'name', 'learned' (a trained policy with a value network), 'reward' (the preset it "
         "aims at: a trained policy's own)}. policy: a name or a policy file ('' for the default).");

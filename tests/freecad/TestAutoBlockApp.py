@@ -802,6 +802,54 @@ class TestGeneralFaces(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "not yet in the workbench"):
             AutoBlock.mesh(result)
 
+    def test_a_reopened_object_replays_its_cuts_instead_of_searching_again(self):
+        from AutoBlock import console
+
+        sketch = support.add_slanted_sketch(self.doc)
+        obj = AutoBlock.make_autoblock(sketch)  # auto: the general engine's search, with its time budget
+        name, areas, ret = obj.Name, sorted(f.Area for f in obj.Shape.Faces), obj.Return
+        path = os.path.join(self.folder, "replay.FCStd")
+        self.doc.saveAs(path)
+        FreeCAD.closeDocument(self.doc.Name)
+        self.doc = FreeCAD.openDocument(path)
+        obj, sketch = self.doc.getObject(name), self.doc.getObject("Slanted")
+        searched = []
+        original = console.decompose
+        console.decompose = lambda *args, **kwargs: searched.append(args) or original(*args, **kwargs)
+        self.addCleanup(setattr, console, "decompose", original)
+        obj.touch()
+        self.doc.recompute()
+        self.assertEqual(searched, [])  # replayed from CutSequence
+        self.assertIn("Up-to-date", obj.State)
+        self.assertEqual(len(obj.Shape.Faces), len(areas))
+        for a, b in zip(sorted(f.Area for f in obj.Shape.Faces), areas):
+            self.assertAlmostEqual(a, b, places=6)
+        self.assertAlmostEqual(obj.Return, ret, places=9)
+        # The console twin gives the same blocks.
+        again = AutoBlock.replay(sketch, obj.CutSequence)
+        self.assertTrue(again.general)
+        self.assertAlmostEqual(again.ret, ret, places=9)
+        # The sketch moved: the same face in its own frame, so the cuts replay and the blocks follow it.
+        sketch.Placement.Base = FreeCAD.Vector(5, 0, 0)
+        self.doc.recompute()
+        self.assertEqual(searched, [])
+        self.assertAlmostEqual(obj.Shape.BoundBox.XMin, sketch.Shape.BoundBox.XMin, delta=1e-4)  # lattice: 1e-5
+        # Other settings, or another face: decomposed again; the old cuts do not replay on another face.
+        obj.Seed = 7
+        self.doc.recompute()
+        self.assertEqual(len(searched), 1)
+        other = support.add_face(self.doc, Part.Face(Part.makePolygon([FreeCAD.Vector(*p) for p in (
+            (0, 0, 0), (30, 0, 0), (36, 9, 0), (30, 20, 0), (0, 20, 0), (0, 0, 0))])), "Other")
+        stored = obj.CutSequence
+        obj.Source = (other, [])
+        self.doc.recompute()
+        self.assertEqual(len(searched), 2)
+        self.check_blocks(obj.Shape, other.Shape)
+        with self.assertRaisesRegex(ValueError, "not the face this cut sequence was made on"):
+            AutoBlock.replay(other, stored)
+        with self.assertRaisesRegex(ValueError, "engine 'general'"):
+            AutoBlock.replay(support.l_face(), AutoBlock.decompose(support.l_face()).cut_sequence())
+
     def test_a_chamfered_pad_face_as_a_parametric_object(self):
         chamfer, top_name, top = add_chamfered_pad(self.doc)
         self.assertEqual(len(top.Vertexes), 5)  # the rectangle with one corner cut off

@@ -104,16 +104,32 @@ class AutoBlockFeature:
         obj.Return = result.ret
         obj.Status = "{}: {}".format(result.policy, result.summary())
         obj.RewardUsed = result.reward
-        obj.CutSequence = result.cut_sequence()
+        sequence = json.loads(result.cut_sequence())
+        sequence["settings"] = self.settings(obj)
+        obj.CutSequence = json.dumps(sequence)
 
     @staticmethod
-    def decompose(obj):
+    def settings(obj):
+        """What a decomposition of the object depends on besides its source face."""
+        return {"policy": obj.PolicyFile or obj.Policy, "reward": obj.RewardPreset, "seed": obj.Seed,
+                "time_limit": obj.TimeLimit}
+
+    @classmethod
+    def decompose(cls, obj):
         if not obj.Source:
             raise ValueError("{}: no source face (set Source)".format(obj.Label))
         source, subs = obj.Source
-        policy = obj.PolicyFile or obj.Policy
-        return console.decompose((source, list(subs)), policy=policy, reward=obj.RewardPreset, seed=obj.Seed,
-                                 time_limit=obj.TimeLimit)
+        # A face with edges at other angles whose stored cut sequence was made with the same settings on the same
+        # face (e.g. a reopened document) is replayed, not searched again: the general engine's search has a time
+        # budget, so searching again could give other blocks.
+        stored = json.loads(obj.CutSequence) if obj.CutSequence else {}
+        if stored.get("engine") == "general" and stored.get("settings") == cls.settings(obj):
+            try:
+                return console.replay((source, list(subs)), stored)
+            except ValueError:
+                pass  # another face (the source changed): decompose it
+        return console.decompose((source, list(subs)), policy=obj.PolicyFile or obj.Policy, reward=obj.RewardPreset,
+                                 seed=obj.Seed, time_limit=obj.TimeLimit)
 
     def __getstate__(self):
         return None

@@ -66,6 +66,13 @@ std::vector<TopoDS_Face> to_model(std::vector<TopoDS_Face> faces, const Placemen
   return faces;
 }
 
+// Sets result's block faces (blocks, cut by OpenCASCADE in the face's frame) and their conformal merge.
+void set_block_faces(FaceDecomposition& result, std::vector<TopoDS_Face> blocks) {
+  const InputFace& face = result.face;
+  result.block_faces = to_model(std::move(blocks), face.frame);
+  result.shape = conformal_merge(result.block_faces, face.is_general() ? face.region.quantum() : 0.0).compound;
+}
+
 }  // namespace
 
 FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSettings& settings) {
@@ -97,10 +104,7 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
     result.decomposition = decompose_face(face.grid, *policy, options);
     if (settings.occt_blocks) blocks = replay_cuts_occt(face.occt, face.grid, result.decomposition.cuts, options);
   }
-  if (settings.occt_blocks) {
-    result.block_faces = to_model(blocks, face.frame);
-    result.shape = conformal_merge(result.block_faces, face.is_general() ? face.region.quantum() : 0.0).compound;
-  }
+  if (settings.occt_blocks) set_block_faces(result, std::move(blocks));
   return result;
 }
 
@@ -120,11 +124,19 @@ RegionSnapshot face_step_general(const InputFace& face, const std::vector<Region
   return region_snapshot(face.region, actions, step, options);
 }
 
-RegionDecomposition face_replay_general(const InputFace& face, const std::vector<RegionActionSpec>& actions,
-                                        int max_steps, RewardPreset reward, const std::string& policy) {
+FaceDecomposition face_replay_general(const InputFace& face, const std::vector<RegionActionSpec>& actions,
+                                      int max_steps, RewardPreset reward, const std::string& policy, bool occt_blocks) {
   const RegionEpisodeOptions options = general_options(face, "replaying a general sequence", max_steps, reward);
-  const std::lock_guard<std::mutex> lock(general_engine());
-  return replay_region_decomposition(face.region, actions, options, policy);
+  FaceDecomposition result;
+  result.face = face;
+  std::vector<TopoDS_Face> blocks;
+  {
+    const std::lock_guard<std::mutex> lock(general_engine());
+    result.region = replay_region_decomposition(face.region, actions, options, policy);
+    if (occt_blocks) blocks = replay_region_cuts_occt(face.occt, face.region, result.region, options);
+  }
+  if (occt_blocks) set_block_faces(result, std::move(blocks));
+  return result;
 }
 
 std::vector<double> face_vertex_scores(const InputFace& face, const std::vector<CutSpec>& cuts, int step,

@@ -81,11 +81,14 @@ RegionSnapshot face_step_general(const InputFace& face, const std::vector<Region
                                  int max_steps = 0, RewardPreset reward = RewardPreset::Paper);
 
 // Inputs:  face, a general face; actions, a whole sequence of it (as a report or a saved document
-//          holds it); max_steps and reward as it was made; policy, the name the result reports.
-// Outputs: the decomposition the sequence makes. Throws InputError as face_step does, or when the
-//          sequence leaves parts unfinished.
-RegionDecomposition face_replay_general(const InputFace& face, const std::vector<RegionActionSpec>& actions,
-                                        int max_steps, RewardPreset reward, const std::string& policy = "replay");
+//          holds it); max_steps and reward as it was made; policy, the name the result reports;
+//          occt_blocks, as DecomposeSettings::occt_blocks.
+// Outputs: the decomposition the sequence makes (region; block_faces and shape as decompose_input_face
+//          gives them), without searching again. Throws InputError as face_step_general does, or when
+//          the sequence leaves parts unfinished.
+FaceDecomposition face_replay_general(const InputFace& face, const std::vector<RegionActionSpec>& actions,
+                                      int max_steps, RewardPreset reward, const std::string& policy = "replay",
+                                      bool occt_blocks = true);
 
 // Inputs:  face, cuts, step, max_steps and reward as for face_step; policy, a name of policy_names()
 //          or a policy file (empty: the default).

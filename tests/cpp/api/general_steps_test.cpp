@@ -9,6 +9,7 @@
 #include "core/common/error.h"
 #include "core/data/general_generator.h"
 #include "core/geometry/occt_face.h"
+#include "core/geometry/occt_properties.h"
 #include "support/test_shapes.h"
 
 using namespace autoblock;
@@ -40,7 +41,7 @@ TEST_CASE("a general sequence replays to the same decomposition, and every step 
   int sequences = 0;
   for (const GeneralKind kind : {GeneralKind::Polygon, GeneralKind::Chamfered}) {
     for (const bool holes : {false, true}) {
-      for (const std::string policy : {"greedy", "search", "random"}) {
+      for (const char* policy : {"greedy", "search", "random"}) {
         const InputFace face = generated_face(holes ? 31 : 17, kind, holes);
         REQUIRE(face.is_general());
         const RegionDecomposition d = decomposed(face, policy);
@@ -48,7 +49,7 @@ TEST_CASE("a general sequence replays to the same decomposition, and every step 
         INFO(general_kind_name(kind) << " holes " << holes << " " << policy << ", " << d.cuts.size() << " actions");
         const std::vector<RegionActionSpec> actions = region_action_specs(d.cuts);
 
-        const RegionDecomposition again = face_replay_general(face, actions, 0, d.reward);
+        const RegionDecomposition again = face_replay_general(face, actions, 0, d.reward, "replay", false).region;
         CHECK(again.complete());
         CHECK(again.total_return == Approx(d.total_return).margin(1e-12));
         CHECK(again.blocks == d.blocks);
@@ -96,6 +97,23 @@ TEST_CASE("a general sequence replays to the same decomposition, and every step 
     }
   }
   CHECK(sequences == 12);
+}
+
+TEST_CASE("a replayed general sequence gives its blocks as faces, without searching again", "[api][general][steps]") {
+  const InputFace face = generated_face(31, GeneralKind::Polygon, true);
+  DecomposeSettings settings;
+  settings.policy = "search";
+  const FaceDecomposition searched = decompose_input_face(face, settings);
+  const FaceDecomposition replayed =
+      face_replay_general(face, region_action_specs(searched.region.cuts), 0, searched.region.reward, "search");
+  CHECK(replayed.region.policy == "search");
+  CHECK(replayed.region.total_return == Approx(searched.region.total_return).margin(1e-12));
+  REQUIRE(replayed.block_faces.size() == searched.block_faces.size());
+  for (size_t i = 0; i < replayed.block_faces.size(); ++i) {
+    CHECK(occt_area(replayed.block_faces[i]) == Approx(occt_area(searched.block_faces[i])).epsilon(1e-9));
+  }
+  CHECK(occt_area(replayed.shape) == Approx(occt_area(face.model)).epsilon(1e-6));
+  CHECK(occt_shape_valid(replayed.shape));
 }
 
 TEST_CASE("a general sequence that does not belong to the face is an input error", "[api][general][steps][errors]") {
