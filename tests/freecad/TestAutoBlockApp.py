@@ -802,6 +802,27 @@ class TestGeneralFaces(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "not yet in the workbench"):
             AutoBlock.mesh(result)
 
+    def test_a_chamfered_box_gets_its_top_face_split_into_the_blocks_in_place(self):
+        # Part's chamfer on a box (a plain Part feature holding the solid): write-back "replace" splits its top face.
+        box = Part.makeBox(30, 20, 6)
+        edge = next(e for e in box.Edges if e.BoundBox.ZLength > 1 and e.BoundBox.XMin > 29 and e.BoundBox.YMin > 19)
+        solid = box.makeChamfer(7.0, [edge])
+        holder = support.add_face(self.doc, solid, "ChamferedBox")
+        number, top = max(enumerate(solid.Faces, 1), key=lambda f: f[1].CenterOfMass.z)
+        self.assertEqual(len(top.Vertexes), 5)
+        obj = AutoBlock.make_autoblock(holder, "Face{}".format(number), policy="greedy")
+        self.check_blocks(obj.Shape, top)
+        blocks = len(obj.Shape.Faces)
+        self.assertGreater(blocks, 1)
+        AutoBlock.write_back(obj, "replace")
+        self.assertEqual(len(holder.Shape.Solids), 1)
+        self.assertTrue(holder.Shape.isValid())
+        # The blocks' corners lie on the face's lattice (within its tolerance): the volume agrees to that.
+        self.assertAlmostEqual(holder.Shape.Volume, solid.Volume, delta=1e-8 * solid.Volume)
+        self.assertEqual(len(holder.Shape.Faces), len(solid.Faces) - 1 + blocks)
+        self.doc.undo()
+        self.assertEqual(len(holder.Shape.Faces), len(solid.Faces))
+
     def test_a_reopened_object_replays_its_cuts_instead_of_searching_again(self):
         from AutoBlock import console
 
