@@ -24,6 +24,8 @@
 #include "core/baselines/min_rectangles.h"
 #include "core/common/error.h"
 #include "core/common/format.h"
+#include "core/geometry/occt_face.h"
+#include "core/io/face_selection.h"
 #include "core/io/decomposition_json.h"
 #include "core/io/shape_file.h"
 #include "core/io/svg_picture.h"
@@ -137,6 +139,24 @@ py::dict face_dict(const InputFace& face) {
   for (const Ring& hole : hole_rings) holes.append(ring_list(hole));
   d["hole_rings"] = holes;
   return d;
+}
+
+// The core's frame (occt_face.h, face_frame) of the face held by BREP text, as 12 numbers: the row-major
+// rotation, then the translation (a point p of the frame is the model's rotation p + translation). The
+// identity when the text holds no single face (check_face then says what is wrong).
+std::vector<double> face_frame_py(const std::string& brep) {
+  Placement frame;
+  {
+    py::gil_scoped_release release;
+    try {
+      frame = face_frame(select_face(read_brep_text(brep), "face", 0));
+    } catch (const InputError&) {
+      frame = Placement{};
+    }
+  }
+  std::vector<double> numbers(frame.rotation.begin(), frame.rotation.end());
+  numbers.insert(numbers.end(), frame.translation.begin(), frame.translation.end());
+  return numbers;
 }
 
 py::dict check_face_py(const std::string& brep, const std::string& source) {
@@ -586,6 +606,10 @@ PYBIND11_MODULE(autoblock_native, m) {
         py::arg("value"), py::arg("tolerance") = 0.0,
         "A number as messages print it: a plain decimal ('80', '2.5') rounded to `tolerance` (noise below it reads "
         "'0'; 0: exact), scientific notation only beyond 1e15 or below 1e-4.");
+  m.def("face_frame", &face_frame_py, py::arg("brep"),
+        "The face's own frame by the core's rule (the one the CLI uses) as 12 numbers: row-major rotation, then "
+        "translation; the identity for a face parallel to XY that is rectilinear there or general, or for text "
+        "holding no single face.");
   m.def("check_face", &check_face_py, py::arg("brep"), py::arg("source") = "face",
         "Validate the single planar face held by BREP text. Returns its figures; raises ValueError saying what is "
         "wrong and where.");

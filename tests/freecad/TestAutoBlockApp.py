@@ -742,6 +742,28 @@ class TestGeneralFaces(unittest.TestCase):
         self.assertEqual(len(direct.blocks), len(again.blocks))
         self.assertAlmostEqual(direct.ret, again.ret, places=9)
 
+    def test_same_blocks_as_the_cli(self):
+        # The workbench and the CLI put a face in the same frame (the core's rule), so they make the same cuts.
+        cli = os.environ.get("AUTOBLOCK_CLI")
+        if not cli:
+            self.skipTest("AUTOBLOCK_CLI not set")
+        samples = os.path.join(AutoBlock.paths.MODELS, "data", "general-test-holes")
+        for name in ("shape_0000.brep", "shape_0001.brep", "shape_0002.brep"):
+            with self.subTest(name=name):
+                path = os.path.join(samples, name)
+                report = os.path.join(self.folder, name + ".json")
+                subprocess.run([cli, "decompose", path, "--policy", "greedy", "--json", report], check=True,
+                               capture_output=True)
+                with open(report) as f:
+                    expected = json.load(f)
+                result = AutoBlock.decompose(support.read_face(path), policy="greedy")
+                self.assertTrue(result.general)
+                self.assertEqual(result.n_blocks, expected["n_blocks"])
+                self.assertEqual(result.n_templates, expected["n_templates"])
+                self.assertAlmostEqual(result.ret, expected["return"], places=9)
+                self.assertEqual([(c.kind, c.local) for c in result.cuts],
+                                 [(c["kind"], tuple(c["origin"]) if "origin" in c else None) for c in expected["cuts"]])
+
     def test_stepping_through_angled_and_partial_cuts(self):
         sketch = support.add_slanted_sketch(self.doc)
         result = AutoBlock.decompose(sketch, policy="greedy")
@@ -850,21 +872,24 @@ class TestGeneralFaces(unittest.TestCase):
         again = AutoBlock.replay(sketch, obj.CutSequence)
         self.assertTrue(again.general)
         self.assertAlmostEqual(again.ret, ret, places=9)
-        # The sketch moved: the same face in its own frame, so the cuts replay and the blocks follow it.
+        # Another face (the sketch moved: a general face in the XY plane keeps the model's coordinates), other
+        # settings: decomposed again; the old cuts do not replay on another face.
         sketch.Placement.Base = FreeCAD.Vector(5, 0, 0)
         self.doc.recompute()
-        self.assertEqual(searched, [])
+        self.assertEqual(len(searched), 1)
         self.assertAlmostEqual(obj.Shape.BoundBox.XMin, sketch.Shape.BoundBox.XMin, delta=1e-4)  # lattice: 1e-5
-        # Other settings, or another face: decomposed again; the old cuts do not replay on another face.
+        obj.touch()
+        self.doc.recompute()
+        self.assertEqual(len(searched), 1)  # replayed again
         obj.Seed = 7
         self.doc.recompute()
-        self.assertEqual(len(searched), 1)
+        self.assertEqual(len(searched), 2)
         other = support.add_face(self.doc, Part.Face(Part.makePolygon([FreeCAD.Vector(*p) for p in (
             (0, 0, 0), (30, 0, 0), (36, 9, 0), (30, 20, 0), (0, 20, 0), (0, 0, 0))])), "Other")
         stored = obj.CutSequence
         obj.Source = (other, [])
         self.doc.recompute()
-        self.assertEqual(len(searched), 2)
+        self.assertEqual(len(searched), 3)
         self.check_blocks(obj.Shape, other.Shape)
         with self.assertRaisesRegex(ValueError, "not the face this cut sequence was made on"):
             AutoBlock.replay(other, stored)
