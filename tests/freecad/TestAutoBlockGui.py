@@ -394,6 +394,22 @@ class TestExportMeshCommand(GuiTestCase):
             self.assertEqual(len(dialogs.seen), 1)
             self.assertIn(".msh, .vtu or .inp", dialogs.seen[0][1])
             self.assertFalse(os.path.exists(bad))
+            # A face with edges at other angles: no mesher in the workbench yet; a dialog says so before any
+            # file name is asked for.
+            general = self.auto_block(support.add_slanted_sketch(self.doc))[-1]
+            FreeCADGui.Selection.clearSelection()
+            FreeCADGui.Selection.addSelection(general)
+            asked = []
+            ExportMeshCommand.choose_path = staticmethod(lambda obj: asked.append(obj) or bad)
+            try:
+                with DialogCatcher() as dialogs:
+                    FreeCADGui.runCommand("AutoBlock_ExportMesh")
+                    pump(0.5)
+            finally:
+                ExportMeshCommand.choose_path = original
+            self.assertEqual(asked, [])
+            self.assertEqual(len(dialogs.seen), 1)
+            self.assertIn("not yet in the workbench", dialogs.seen[0][1])
         finally:
             support.remove_folder(folder)
 

@@ -22,6 +22,16 @@ def is_autoblock(obj):
     return getattr(getattr(obj, "Proxy", None), "Type", None) == TYPE
 
 
+def is_general(obj):
+    """True for an AutoBlock object whose last decomposition was of a face with edges at other angles."""
+    if not is_autoblock(obj) or not obj.CutSequence:
+        return False
+    try:
+        return json.loads(obj.CutSequence).get("engine") == "general"
+    except ValueError:
+        return False
+
+
 class AutoBlockFeature:
     Type = TYPE
 
