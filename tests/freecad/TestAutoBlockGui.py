@@ -356,6 +356,21 @@ class TestAutoBlockCommand(GuiTestCase):
 
 
 class TestExportMeshCommand(GuiTestCase):
+    @staticmethod
+    def export_answering(choose_path):
+        """Run Export mesh with `choose_path` answering the file dialog; returns the DialogCatcher (its .seen)."""
+        from AutoBlock.commands.export_mesh import ExportMeshCommand
+
+        original = ExportMeshCommand.choose_path
+        ExportMeshCommand.choose_path = staticmethod(choose_path)
+        try:
+            with DialogCatcher() as dialogs:
+                FreeCADGui.runCommand("AutoBlock_ExportMesh")
+                pump(0.5)
+        finally:
+            ExportMeshCommand.choose_path = original
+        return dialogs
+
     def test_export_mesh_command(self):
         from AutoBlock.commands.export_mesh import ExportMeshCommand
 
@@ -384,13 +399,7 @@ class TestExportMeshCommand(GuiTestCase):
             self.assertEqual(self.doc.UndoCount, undo_count)  # exporting changes nothing in the document
             # A bad file name: a dialog says why, nothing is written.
             bad = os.path.join(folder, "sample.stl")
-            ExportMeshCommand.choose_path = staticmethod(lambda obj: bad)
-            try:
-                with DialogCatcher() as dialogs:
-                    FreeCADGui.runCommand("AutoBlock_ExportMesh")
-                    pump(0.5)
-            finally:
-                ExportMeshCommand.choose_path = original
+            dialogs = self.export_answering(lambda obj: bad)
             self.assertEqual(len(dialogs.seen), 1)
             self.assertIn(".msh, .vtu or .inp", dialogs.seen[0][1])
             self.assertFalse(os.path.exists(bad))
@@ -400,13 +409,7 @@ class TestExportMeshCommand(GuiTestCase):
             FreeCADGui.Selection.clearSelection()
             FreeCADGui.Selection.addSelection(general)
             asked = []
-            ExportMeshCommand.choose_path = staticmethod(lambda obj: asked.append(obj) or bad)
-            try:
-                with DialogCatcher() as dialogs:
-                    FreeCADGui.runCommand("AutoBlock_ExportMesh")
-                    pump(0.5)
-            finally:
-                ExportMeshCommand.choose_path = original
+            dialogs = self.export_answering(lambda obj: asked.append(obj) or bad)
             self.assertEqual(asked, [])
             self.assertEqual(len(dialogs.seen), 1)
             self.assertIn("not yet in the workbench", dialogs.seen[0][1])
