@@ -143,7 +143,8 @@ py::dict face_dict(const InputFace& face) {
 
 // The core's frame (occt_face.h, face_frame) of the face held by BREP text, as 12 numbers: the row-major
 // rotation, then the translation (a point p of the frame is the model's rotation p + translation). The
-// identity when the text holds no single face (check_face then says what is wrong).
+// identity when the text holds no single face or OpenCASCADE cannot evaluate it: the checks that follow
+// (check_face, decompose) then say what is wrong, with the face in the model's coordinates.
 std::vector<double> face_frame_py(const std::string& brep) {
   Placement frame;
   {
@@ -151,6 +152,8 @@ std::vector<double> face_frame_py(const std::string& brep) {
     try {
       frame = face_frame(select_face(read_brep_text(brep), "face", 0));
     } catch (const InputError&) {
+      frame = Placement{};
+    } catch (const Standard_Failure&) {
       frame = Placement{};
     }
   }
