@@ -1,4 +1,6 @@
-"""AutoBlock for FreeCAD: cut planar rectilinear faces into rectangular blocks and mesh them with quads.
+"""AutoBlock for FreeCAD: cut planar faces bounded by straight edges into blocks (rectangles on rectilinear faces,
+convex quadrilaterals and templates on faces with edges at other angles) and mesh them with quads (rectilinear
+faces for now).
 
 Console API (freecadcmd or FreeCAD's Python console):
 
@@ -15,6 +17,7 @@ Console API (freecadcmd or FreeCAD's Python console):
     AutoBlock.export_mesh(obj, "face.msh")                      # or .vtu, .inp
     AutoBlock.write_back(obj, mode="new")                       # or "replace"
     AutoBlock.stepper_of(obj).step(2)                           # the decomposition after 2 cuts, with scores
+    AutoBlock.replay(face_or_object, obj.CutSequence)           # a general face's stored cuts, not searched again
     AutoBlock.train(AutoBlock.TrainingRequest("p.pt", train_folder=..., test_folder=...))
     AutoBlock.start_training(request)                           # the same in the background: a TrainingRun
     AutoBlock.policy_names(), AutoBlock.default_policy(), AutoBlock.policy_info("sac-mesh"),
@@ -29,6 +32,7 @@ __version__ = "0.1.0"
 _LAZY = {
     "decompose": ("console", "decompose"),
     "check_face": ("console", "check_face"),
+    "replay": ("console", "replay"),
     "policy_names": ("console", "policy_names"),
     "reward_presets": ("console", "reward_presets"),
     "capabilities": ("console", "capabilities"),
@@ -40,6 +44,7 @@ _LAZY = {
     "train": ("console", "train"),
     "start_training": ("training", "start"),
     "Cut": ("console", "Cut"),
+    "GeneralCut": ("console", "GeneralCut"),
     "DecompositionResult": ("console", "DecompositionResult"),
     "Stepper": ("stepping", "Stepper"),
     "make_autoblock": ("objects.autoblock_feature", "make_autoblock"),

@@ -3,6 +3,7 @@
     import AutoBlock
     result = AutoBlock.decompose(face_or_object)            # or (object, "Face3")
     result.blocks, result.shape, result.cuts, result.ret, result.n_blocks
+    result.general                                          # edges at other angles: the general engine
     mesh = AutoBlock.mesh(result)                           # or a face, or an AutoBlock object
     mesh.nodes, mesh.quads, mesh.quality, mesh.export("face.msh")
 
@@ -43,6 +44,54 @@ class Cut:
             self.reward)
 
 
+class GeneralCut:
+    """One action of a general face's decomposition (edges at any angle: the general engine).
+
+    part: id of the part it cut; kind: "full" (the whole line through origin, clipped to the part), "partial"
+    (the ray from origin to the first boundary it meets) or "template" (a convex part finished as quads around
+    an interior point: no origin, no direction); origin: the cut's start on the part's boundary (FreeCAD.Vector,
+    global; None for a template); local: the same (x, y) in the face's frame; direction: (dx, dy) in that frame;
+    angle: its angle in degrees in that frame; forced: taken by the engine's last resort; chords: the segments cut
+    [(start, end)] (global); n_parts, reward, children as for Cut.
+    """
+
+    __slots__ = ("part", "kind", "origin", "local", "direction", "angle", "forced", "chords", "n_parts", "reward",
+                 "children")
+
+    def __init__(self, data, z, frame):
+        to_global = lambda xy: faces.point_out_of_frame(xy[0], xy[1], z, frame)  # noqa: E731
+        self.part = data["part"]
+        self.kind = data["kind"]
+        cut = self.kind != "template"
+        self.local = tuple(data["origin"]) if cut else None
+        self.origin = to_global(self.local) if cut else None
+        self.direction = tuple(data["direction"]) if cut else None
+        self.angle = data["angle_degrees"] if cut else None
+        self.forced = bool(data.get("forced", False))
+        self.chords = [(to_global(a), to_global(b)) for a, b in data.get("chords", [])]
+        self.n_parts = data["n_parts"]
+        self.reward = data["reward"]
+        self.children = list(data.get("children", []))
+
+    @property
+    def vertex(self):
+        """The cut's origin (as Cut.vertex); None for a template."""
+        return self.origin
+
+    def spec(self):
+        """The action as the native module's step takes it: (part, kind, ox, oy, dx, dy, forced)."""
+        if self.kind == "template":
+            return (self.part, "template", 0.0, 0.0, 0.0, 0.0, False)
+        return (self.part, self.kind, self.local[0], self.local[1], self.direction[0], self.direction[1], self.forced)
+
+    def __repr__(self):
+        if self.kind == "template":
+            return "GeneralCut(part {}, template, reward {:.3f})".format(self.part, self.reward)
+        return "GeneralCut(part {}, {} at {} towards {:.1f} degrees, {}, reward {:.3f})".format(
+            self.part, self.kind, text.point(self.local[0], self.local[1]), self.angle,
+            text.counted(self.n_parts, "piece"), self.reward)
+
+
 class DecompositionResult:
     """The result of AutoBlock.decompose.
 
@@ -52,16 +101,23 @@ class DecompositionResult:
     lower bound); status: "complete" or "truncated"; complete, truncated, time_capped; policy; reward (the
     preset the cuts were scored with); seconds; face: the input face; frame: the placement of the face's own
     frame; label: the input's name.
+
+    A face with edges at other angles (general True, the general engine): blocks are convex quadrilaterals
+    and templates (n_templates: convex parts finished as quads around an interior point; blocks holds both,
+    n_blocks counts the quadrilaterals), cuts are GeneralCut, min_blocks is None (no known minimum), and
+    report is the core's JSON report (as `autoblock decompose --json` writes it, in the face's frame).
     """
 
     def __init__(self, data, face, local_face, frame, label):
         self.face = face
         self.frame = frame
         self.label = label
+        self.general = data.get("engine") == "general"
         self.policy = data["policy"]
         self.reward = data["reward"]
         self.ret = data["return"]
         self.n_blocks = data["n_blocks"]
+        self.n_templates = data.get("n_templates", 0)
         self.min_blocks = data["min_blocks"]
         self.status = data["status"]
         self.complete = data["complete"]
@@ -74,17 +130,26 @@ class DecompositionResult:
         self._fingerprint = face_fingerprint(data["face"])
         self.blocks = [faces.out_of_frame(_shape_from_brep(text), frame).Faces[0] for text in data["blocks"]]
         self.shape = faces.out_of_frame(_shape_from_brep(data["shape"]), frame)
-        self.cuts = [
-            Cut(c["part"], faces.point_out_of_frame(c["vertex"][0], c["vertex"][1], self._z, frame),
-                tuple(c["vertex"]), c["direction"], c["n_parts"], c["reward"], list(c["children"]))
-            for c in data["cuts"]
-        ]
+        self.report = {k: v for k, v in data.items() if k not in ("blocks", "shape")} if self.general else None
+        if self.general:
+            self.cuts = [GeneralCut(c, self._z, frame) for c in data["cuts"]]
+        else:
+            self.cuts = [
+                Cut(c["part"], faces.point_out_of_frame(c["vertex"][0], c["vertex"][1], self._z, frame),
+                    tuple(c["vertex"]), c["direction"], c["n_parts"], c["reward"], list(c["children"]))
+                for c in data["cuts"]
+            ]
 
     def summary(self):
-        """'6 blocks (minimum 5), 5 cuts, return 30.593 (paper reward), complete'"""
-        return "{} (minimum {}), {}, return {:.3f} ({} reward), {}{}".format(
-            text.counted(self.n_blocks, "block"), self.min_blocks, text.counted(len(self.cuts), "cut"), self.ret,
-            self.reward, self.status,
+        """'6 blocks (minimum 5), 5 cuts, return 30.593 (paper reward), complete'; a general face: '5 blocks and
+        1 template, 5 cuts, ...'"""
+        if self.general:
+            pieces = text.counted(self.n_blocks, "block") + (
+                " and " + text.counted(self.n_templates, "template") if self.n_templates else "")
+        else:
+            pieces = "{} (minimum {})".format(text.counted(self.n_blocks, "block"), self.min_blocks)
+        return "{}, {}, return {:.3f} ({} reward), {}{}".format(
+            pieces, text.counted(len(self.cuts), "cut"), self.ret, self.reward, self.status,
             " (search time limit hit)" if self.time_capped else "")
 
     def __repr__(self):
@@ -92,6 +157,16 @@ class DecompositionResult:
 
     def to_dict(self):
         """The result as JSON-able data (blocks as corner lists in global coordinates)."""
+        if self.general:
+            vector = lambda v: None if v is None else list(v)  # noqa: E731
+            return {
+                "input": self.label, "engine": "general", "policy": self.policy, "reward_preset": self.reward,
+                "return": self.ret, "n_blocks": self.n_blocks, "n_templates": self.n_templates, "status": self.status,
+                "time_capped": self.time_capped, "seconds": self.seconds,
+                "cuts": [{"part": c.part, "kind": c.kind, "origin": vector(c.origin), "direction": vector(c.direction),
+                          "n_parts": c.n_parts, "reward": c.reward} for c in self.cuts],
+                "blocks": [[list(v.Point) for v in b.OuterWire.OrderedVertexes] for b in self.blocks],
+            }
         return {
             "input": self.label,
             "policy": self.policy,
@@ -108,7 +183,19 @@ class DecompositionResult:
         }
 
     def cut_sequence(self):
-        """The cut sequence as stored in an AutoBlock object (JSON text, the face's frame)."""
+        """The cut sequence as stored in an AutoBlock object (JSON text, the face's frame). A general face's
+        (version 3, "engine": "general"): [part, kind, origin x, origin y, direction x, direction y, forced,
+        reward, n_parts] per action."""
+        if self.general:
+            return json.dumps({
+                "version": 3,
+                "engine": "general",
+                "policy": self.policy,
+                "face": self._fingerprint,
+                "max_steps": self.max_steps,
+                "reward": self.reward,
+                "cuts": [list(c.spec()) + [c.reward, c.n_parts] for c in self.cuts],
+            })
         return json.dumps({
             "version": 2,
             "face": self._fingerprint,
@@ -121,12 +208,16 @@ class DecompositionResult:
         """A Stepper over this decomposition's cuts (see stepping.py)."""
         from .stepping import Stepper
 
-        return Stepper(self._local_brep, self.frame, _specs(self.cut_sequence()), self.max_steps, self.label,
-                       self.policy, self.reward)
+        return Stepper(self._local_brep, self.frame, sequence_specs(json.loads(self.cut_sequence())),
+                       self.max_steps, self.label, self.policy, self.reward)
 
 
-def _specs(cut_sequence):
-    data = json.loads(cut_sequence)
+def sequence_specs(data):
+    """The cuts of a stored cut sequence (parsed JSON, see DecompositionResult.cut_sequence) as the native module
+    takes them: (part, x, y, direction) on a grid face, (part, kind, ox, oy, dx, dy, forced) on a general one."""
+    if data.get("engine") == "general":
+        return [(int(c[0]), str(c[1]), float(c[2]), float(c[3]), float(c[4]), float(c[5]), bool(c[6]))
+                for c in data["cuts"]]
     return [(int(c[0]), float(c[1]), float(c[2]), str(c[3])) for c in data["cuts"]]
 
 
@@ -191,8 +282,11 @@ def check_face(target, sub=None):
         raise _in_frame_note(frame, error, face.BoundBox.DiagonalLength) from None
 
 
-def decompose(face_or_object, policy=None, reward=None, seed=0, time_limit=30.0, max_steps=0, sub=None):
-    """Cut one planar rectilinear face into rectangular blocks.
+def decompose(face_or_object, policy=None, reward=None, seed=0, time_limit=30.0, max_steps=0, sub=None,
+              general_time_limit=None):
+    """Cut one planar face bounded by straight edges into blocks: rectangles when its edges run along two
+    perpendicular directions (the grid engine), convex quadrilaterals and templates when they run at other
+    angles (the general engine: policies auto, search, greedy, random; result.general is True).
 
     face_or_object: a Part.Face, a shape holding one face (or closed wires, as a sketch), a document
         object, or (object, "FaceN").
@@ -201,7 +295,8 @@ def decompose(face_or_object, policy=None, reward=None, seed=0, time_limit=30.0,
     reward: a reward preset (AutoBlock.reward_presets()) to score the cuts with; "": the policy's own (a
         trained policy's, "paper" for the baselines); None: the preferred one ("" unless set).
     seed: for the random policies; time_limit: seconds per face before greedy finishes (optimal, auto, learned);
-    max_steps: step cap (0: 10 x corners + 10).
+    max_steps: step cap (0: 10 x corners + 10); general_time_limit: the general engine's search budget in
+    seconds (None: the core's default).
     Returns a DecompositionResult. Raises ValueError for an unsupported face or a bad option.
     """
     face, local, frame, label = local_face(face_or_object, sub)
@@ -209,10 +304,35 @@ def decompose(face_or_object, policy=None, reward=None, seed=0, time_limit=30.0,
     try:
         data = module.decompose(local.exportBrepToString(), policy or preferences.default_policy(),
                                 preferences.reward_preset() if reward is None else reward, int(seed),
-                                float(time_limit), int(max_steps), label)
+                                float(time_limit), int(max_steps), label,
+                                -1.0 if general_time_limit is None else float(general_time_limit))
     except ValueError as error:
         raise _in_frame_note(frame, error, face.BoundBox.DiagonalLength) from None
     return DecompositionResult(data, face, local, frame, label)
+
+
+def replay(target, cut_sequence, sub=None):
+    """A face with edges at other angles decomposed again by replaying a stored cut sequence, without searching:
+    the same blocks, cut by OpenCASCADE, for the same face (e.g. after reopening a document).
+
+    target: as for decompose(); cut_sequence: DecompositionResult.cut_sequence() (JSON text or its parsed
+    dict; an AutoBlock object's CutSequence). Returns a DecompositionResult (its policy: the one that made the
+    sequence). Raises ValueError when the sequence is not a general face's, the face is not the one it was made
+    on (its figures differ), or an action does not belong to the face.
+    """
+    data = json.loads(cut_sequence) if isinstance(cut_sequence, str) else dict(cut_sequence)
+    if data.get("engine") != "general":
+        raise ValueError("replay takes the cut sequence of a face with edges at other angles (engine 'general'); "
+                         "decompose other faces")
+    face, local, frame, label = local_face(target, sub)
+    if not same_face(data.get("face"), local):
+        raise ValueError("{}: not the face this cut sequence was made on (its figures differ)".format(label))
+    try:
+        out = native.load().replay(local.exportBrepToString(), sequence_specs(data), int(data.get("max_steps", 0)),
+                                   sequence_reward(data), str(data.get("policy") or "replay"), label)
+    except ValueError as error:
+        raise _in_frame_note(frame, error, face.BoundBox.DiagonalLength) from None
+    return DecompositionResult(out, face, local, frame, label)
 
 
 def policy_names():

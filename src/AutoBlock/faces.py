@@ -2,9 +2,12 @@
 
 A face can be given as a Part.Face, any Part.Shape holding one face (or closed planar wires, as a
 sketch holds), a document object with such a shape, or an object with a sub-element name
-((obj, "Face3")). The core cuts faces parallel to the XY plane with edges along X and Y; a face in
-any other plane (a sketch on XZ, the side of a box) or turned within its plane is carried into its
-own frame first (face_frame), cut there, and the blocks carried back.
+((obj, "Face3")). The core cuts faces parallel to the XY plane; a face in any other plane (a sketch on
+XZ, the side of a box) or turned within its plane is carried into its own frame first (face_frame,
+computed by the core, src/core/geometry/occt_face.h), cut there, and the blocks carried back. In that
+frame a face whose edges run along two perpendicular directions has them along X and Y (the grid
+engine); a face with edges at other angles (the general engine) keeps the model's coordinates when
+it is parallel to XY, as in the CLI.
 """
 
 import FreeCAD
@@ -104,37 +107,17 @@ def _single_face(shape, label):
     return made.Faces[0]
 
 
-def _line_edges(face):
-    return [e for e in face.Edges if isinstance(e.Curve, Part.Line) and e.Length > 0]
-
-
 def face_frame(face):
-    """The placement of the face's own frame: identity when the face lies parallel to XY with an edge
-    along X or Y (coordinates stay the model's); otherwise origin at the start of its longest straight
-    edge, X along that edge, Z along the face's normal. Faces that are not planar or have no straight
-    edge keep the identity (the core then says what is wrong)."""
-    surface = face.Surface
-    if not isinstance(surface, Part.Plane):
-        return FreeCAD.Placement()
-    lines = _line_edges(face)
-    if not lines:
-        return FreeCAD.Placement()
-    normal = FreeCAD.Vector(surface.Axis)
-    normal.normalize()
-    size = max(face.BoundBox.XLength, face.BoundBox.YLength, face.BoundBox.ZLength, 1e-300)
-    tolerance = text.tolerance_of(size)
-    if abs(abs(normal.z) - 1.0) < 1e-12:
-        for edge in lines:
-            d = edge.Vertexes[-1].Point - edge.Vertexes[0].Point
-            if abs(d.x) <= tolerance or abs(d.y) <= tolerance:
-                return FreeCAD.Placement()
-    longest = max(lines, key=lambda e: e.Length)
-    u = longest.Vertexes[-1].Point - longest.Vertexes[0].Point
-    u = u - normal * u.dot(normal)
-    u.normalize()
-    v = normal.cross(u)
-    rotation = FreeCAD.Rotation(u, v, normal, "ZXY")
-    return FreeCAD.Placement(longest.Vertexes[0].Point, rotation)
+    """The placement of the face's own frame, by the core's rule (src/core/geometry/occt_face.h, face_frame, the
+    one the CLI uses): identity when the face lies parallel to XY with an edge along X or Y, or with no frame
+    in which its edges run along two perpendicular directions (coordinates stay the model's); otherwise origin
+    at the start of its longest straight edge, X along that edge, Z along the face's normal. Faces the core
+    cannot read keep the identity (the core then says what is wrong)."""
+    from . import native
+
+    m = native.load().face_frame(face.exportBrepToString())
+    return FreeCAD.Placement(FreeCAD.Matrix(m[0], m[1], m[2], m[9], m[3], m[4], m[5], m[10], m[6], m[7], m[8], m[11],
+                                            0, 0, 0, 1))
 
 
 def is_identity(placement):

@@ -12,32 +12,40 @@ import math
 
 import FreeCAD
 
-from . import faces, native
+from . import faces, native, text
 
 
 class Piece:
-    """A piece of the face at a step: id, block (a rectangle set aside; else a part still to cut),
+    """A piece of the face at a step: id, block (set aside: a rectangle, or on a general face a block or a
+    template; else a part still to cut), template (a general face's part finished as quads around its centre),
     index (for blocks: its place in the order set aside, which is also its colour's index), face."""
 
-    __slots__ = ("id", "block", "index", "face", "outer", "holes")
+    __slots__ = ("id", "block", "index", "face", "outer", "holes", "template")
 
-    def __init__(self, id, block, index, face, outer, holes):
+    def __init__(self, id, block, index, face, outer, holes, template=False):
         self.id = id
         self.block = block
         self.index = index
         self.face = face
         self.outer = outer
         self.holes = holes
+        self.template = template
 
 
 class NextCut:
     """The cut chosen at a step: part (id), vertices (the part's model vertices, global), chosen (index),
     vertex (global), direction, line (list of (start, end) global points where it crosses the part),
     reward, n_parts, scores (per-vertex value-network scores of a learned policy, the better of the cuts
-    through each vertex; None for a baseline) and scores_note (why there are none)."""
+    through each vertex; None for a baseline) and scores_note (why there are none).
+
+    On a general face: kind ("full", "partial" or "template"; "axis" on a grid face), vertex is the cut's origin
+    (None for a template), chosen is -1 when the origin lies on an edge (or for a template), direction reads
+    e.g. "partial cut at 30.0 degrees" (the angle in the model's XY plane for a face parallel to it, else in the
+    face's own plane), vector is the direction (dx, dy) in the face's frame, and line holds the chords the cut
+    makes (angled, and for a partial cut ending at the boundary it meets)."""
 
     __slots__ = ("part", "vertices", "chosen", "vertex", "direction", "line", "reward", "n_parts", "scores",
-                 "scores_note", "local_vertices")
+                 "scores_note", "local_vertices", "kind", "vector")
 
     def __init__(self, **values):
         for key, value in values.items():
@@ -47,7 +55,8 @@ class NextCut:
 class StepView:
     """The episode after `step` of `steps` cuts: pieces, blocks (count), ret (return so far), status,
     next (NextCut, or None after the last cut), frame, z (in the frame), normal (the face's, global), size
-    (the face's longer side)."""
+    (the face's longer side), tolerance (what coordinates are printed to: the face's tolerance, or on a
+    general face the lattice its corners are snapped to)."""
 
     def __init__(self, **values):
         for key, value in values.items():
@@ -68,6 +77,11 @@ class Stepper:
         self.policy = policy
         self.reward = reward or "paper"
         self._cache = {}
+
+    @property
+    def general(self):
+        """True for a general face's sequence (actions (part, kind, ox, oy, dx, dy, forced))."""
+        return any(len(c) > 1 and isinstance(c[1], str) for c in self.cuts)
 
     @property
     def steps(self):
@@ -99,7 +113,8 @@ class Stepper:
             ys = [y for _, y in p["outer"]]
             size = max(size, max(xs) - min(xs), max(ys) - min(ys))
             pieces.append(Piece(p["id"], p["block"], block_index if p["block"] else -1,
-                                faces.out_of_frame(local, self.frame), p["outer"], p["holes"]))
+                                faces.out_of_frame(local, self.frame), p["outer"], p["holes"],
+                                p.get("template", False)))
             if p["block"]:
                 block_index += 1
         nxt = None
@@ -107,22 +122,44 @@ class Stepper:
             n = data["next"]
             to_global = lambda xy: faces.point_out_of_frame(xy[0], xy[1], z, self.frame)  # noqa: E731
             scores, note = self._scores(module, k)
+            kind = n.get("kind", "axis")
+            if kind == "axis":
+                vertex, direction, vector = to_global(n["vertex"]), n["direction"], None
+            else:
+                vertex = to_global(n["origin"]) if n["origin"] is not None else None
+                vector = tuple(n["direction"]) if n["direction"] is not None else None
+                direction = self._direction_text(kind, vector)
             nxt = NextCut(
                 part=n["part"], vertices=[to_global(v) for v in n["vertices"]], local_vertices=list(n["vertices"]),
-                chosen=n["chosen"], vertex=to_global(n["vertex"]), direction=n["direction"],
+                chosen=n["chosen"], vertex=vertex, direction=direction, kind=kind, vector=vector,
                 line=[(to_global(a), to_global(b)) for a, b in n["line"]], reward=n["reward"],
                 n_parts=n["n_parts"], scores=scores, scores_note=note)
         normal = self.frame.Rotation.multVec(FreeCAD.Vector(0, 0, 1 if data["normal_up"] else -1))
         view = StepView(step=data["step"], steps=data["steps"], pieces=pieces, blocks=data["blocks"],
                         ret=data["return"], status=data["status"], next=nxt, frame=self.frame, z=z,
-                        normal=normal, size=size, label=self.label)
+                        normal=normal, size=size, label=self.label,
+                        # A general face's corners are snapped to its lattice in the frame (by up to q / 2 per
+                        # axis) and turned back to the model: printed to 2 q, they read as the user drew them.
+                        tolerance=max(text.tolerance_of(size), 2.0 * data.get("quantum", 0.0)))
         self._cache[k] = view
         return view
+
+    def _direction_text(self, kind, vector):
+        """A general action's direction as it reads in the panel: the angle in the model's XY plane for a face
+        parallel to it (as the user sees the model from the top), else in the face's own plane."""
+        if vector is None:
+            return text.cut_direction(kind, vector)
+        along = self.frame.Rotation.multVec(FreeCAD.Vector(vector[0], vector[1], 0))
+        if abs(along.z) <= 1e-9 * along.Length:
+            return text.cut_direction(kind, (along.x, along.y))
+        return text.cut_direction(kind, vector) + " in the face's plane"
 
     def _scores(self, module, k):
         """Per-vertex value scores at step k (a vertex no cut can use scores None), or (None, why not)."""
         if not native.has("vertex_scores"):
             return None, "value scores need a learned policy, which this build does not have"
+        if self.general:
+            return None, "value scores need a learned policy, and none works on faces with edges at other angles yet"
         try:
             # One score per vertex of the next cut's part, in the order of step()["next"]["vertices"];
             # ValueError when the policy has no value network (a baseline) or its file is gone.

@@ -47,3 +47,11 @@ def significant(value, digits=4):
 def tolerance_of(size):
     """The tolerance of a face whose bounding box's longer side is `size` (the core's 1e-7 relative rule)."""
     return 1e-7 * abs(size)
+
+
+def cut_direction(kind, direction):
+    """How a general face's action reads: 'full cut at 30.0 degrees' (direction: (dx, dy) in the face's frame),
+    'template (quads around its centre)'."""
+    if kind == "template":
+        return "template (quads around its centre)"
+    return "{} cut at {:.1f} degrees".format(kind, math.degrees(math.atan2(direction[1], direction[0])))

@@ -24,6 +24,9 @@
 #include "core/baselines/min_rectangles.h"
 #include "core/common/error.h"
 #include "core/common/format.h"
+#include "core/geometry/occt_face.h"
+#include "core/io/face_selection.h"
+#include "core/io/decomposition_json.h"
 #include "core/io/shape_file.h"
 #include "core/io/svg_picture.h"
 #include "core/mesh/mesh_export.h"
@@ -34,14 +37,9 @@ using namespace autoblock;
 namespace {
 
 // The face held by BREP text (exactly one face), checked; read and checked first in a child
-// process (shape_file.h), so malformed text cannot hang or crash FreeCAD.
-// Faces with edges at other angles (the general engine) reach the workbench in a later step: until
-// then the binding refuses them with a clear message (the CLI takes them).
-InputFace face_of(const std::string& brep, const std::string& source) {
-  InputFace face = input_face_from_brep_text(brep, source);
-  require_rectilinear(face, "the FreeCAD workbench", "`autoblock decompose` takes it; the workbench will soon");
-  return face;
-}
+// process (shape_file.h), so malformed text cannot hang or crash FreeCAD. A face whose edges run
+// along two perpendicular directions goes to the grid engine, any other to the general engine.
+InputFace face_of(const std::string& brep, const std::string& source) { return input_face_from_brep_text(brep, source); }
 
 CutDirection direction_of(const std::string& name) {
   if (name == "horizontal") return CutDirection::Horizontal;
@@ -49,14 +47,57 @@ CutDirection direction_of(const std::string& name) {
   throw InputError("unknown cut direction '" + name + "' (expected horizontal or vertical)");
 }
 
-// A cut sequence as Python passes it: [(part, x, y, 'horizontal'|'vertical'), ...].
-using CutTuples = std::vector<std::tuple<int, double, double, std::string>>;
+// A cut sequence as Python passes it, either kind (converted with the GIL held):
+//   grid faces:    [(part, x, y, 'horizontal'|'vertical'), ...]  (a vertex and an axis);
+//   general faces: [(part, kind, ox, oy, dx, dy, forced), ...]   (kind 'full' or 'partial': origin and
+//                  direction; 'template': (part, 'template') is enough; forced optional, False).
+struct Sequence {
+  bool general = false;
+  std::vector<CutSpec> grid;
+  std::vector<RegionActionSpec> region;
+  void check_for(const InputFace& face) const {
+    if (face.is_general() && !general && !grid.empty()) {
+      throw InputError(face.source + ": this face has edges at other angles: its cuts are (part, kind, origin x, "
+                       "origin y, direction x, direction y, forced), not (part, x, y, direction)");
+    }
+    if (!face.is_general() && general && !region.empty()) {
+      throw InputError(face.source + ": this face's edges run along two perpendicular directions: its cuts are "
+                       "(part, x, y, 'horizontal' or 'vertical'), not (part, kind, origin, direction)");
+    }
+  }
+};
 
-std::vector<CutSpec> specs_of(const CutTuples& cuts) {
-  std::vector<CutSpec> specs;
-  for (const auto& [part, x, y, direction] : cuts) specs.push_back(CutSpec{part, Point2{x, y}, direction_of(direction)});
-  return specs;
+Sequence sequence_of(const py::object& cuts) {
+  Sequence out;
+  for (const py::handle item : cuts) {
+    const py::tuple t = py::reinterpret_borrow<py::object>(item).cast<py::tuple>();
+    if (t.size() >= 2 && py::isinstance<py::str>(t[1])) {
+      out.general = true;
+      RegionActionSpec spec;
+      spec.part_id = t[0].cast<int>();
+      spec.action = region_action_of_kind(t[1].cast<std::string>());
+      if (spec.action.kind == RegionAction::Kind::Cut) {
+        if (t.size() != 6 && t.size() != 7) {
+          throw InputError("a general cut is (part, kind, origin x, origin y, direction x, direction y[, forced]), got " +
+                           std::to_string(t.size()) + " values");
+        }
+        spec.action.cut.origin = {t[2].cast<double>(), t[3].cast<double>()};
+        spec.action.cut.direction = {t[4].cast<double>(), t[5].cast<double>()};
+        spec.action.cut.forced = t.size() == 7 && t[6].cast<bool>();
+      }
+      out.region.push_back(spec);
+    } else {
+      if (t.size() != 4) throw InputError("a cut is (part, x, y, 'horizontal' or 'vertical'), got " + std::to_string(t.size()) + " values");
+      out.grid.push_back(CutSpec{t[0].cast<int>(), Point2{t[1].cast<double>(), t[2].cast<double>()},
+                                 direction_of(t[3].cast<std::string>())});
+    }
+  }
+  if (out.general && !out.grid.empty()) throw InputError("a cut sequence mixes grid cuts and general cuts");
+  return out;
 }
+
+// JSON (core/io's serialisers) as Python data.
+py::object python_of(const nlohmann::json& value) { return py::module_::import("json").attr("loads")(value.dump()); }
 
 py::tuple xy(const Point2& p) { return py::make_tuple(p.x, p.y); }
 
@@ -78,22 +119,47 @@ py::dict capabilities_dict() {
 
 py::dict face_dict(const InputFace& face) {
   py::dict d;
-  const RectilinearPolygon& polygon = face.planar.polygon;
-  size_t corners = polygon.outer.size();
-  for (const Ring& hole : polygon.holes) corners += hole.size();
-  const Box box = ring_bbox(polygon.outer);
+  // A general face's loops are its region's (on the face's lattice), a rectilinear face's its polygon's.
+  const bool general = face.is_general();
+  const Ring& outer = general ? face.region.outer() : face.planar.polygon.outer;
+  const std::vector<Ring>& hole_rings = general ? face.region.holes() : face.planar.polygon.holes;
+  size_t corners = outer.size();
+  for (const Ring& hole : hole_rings) corners += hole.size();
+  const Box box = ring_bbox(outer);
   d["source"] = face.source;
+  d["general"] = general;
   d["z"] = face.planar.z;
   d["normal_up"] = face.planar.normal_up;
   d["corners"] = corners;
-  d["holes"] = polygon.holes.size();
-  d["area"] = polygon_area(polygon);
+  d["holes"] = hole_rings.size();
+  d["area"] = general ? face.region.area() : polygon_area(face.planar.polygon);
   d["bbox"] = py::make_tuple(box.xmin, box.ymin, box.xmax, box.ymax);
-  d["outer"] = ring_list(polygon.outer);
+  d["outer"] = ring_list(outer);
   py::list holes;
-  for (const Ring& hole : polygon.holes) holes.append(ring_list(hole));
+  for (const Ring& hole : hole_rings) holes.append(ring_list(hole));
   d["hole_rings"] = holes;
   return d;
+}
+
+// The core's frame (occt_face.h, face_frame) of the face held by BREP text, as 12 numbers: the row-major
+// rotation, then the translation (a point p of the frame is the model's rotation p + translation). The
+// identity when the text holds no single face or OpenCASCADE cannot evaluate it: the checks that follow
+// (check_face, decompose) then say what is wrong, with the face in the model's coordinates.
+std::vector<double> face_frame_py(const std::string& brep) {
+  Placement frame;
+  {
+    py::gil_scoped_release release;
+    try {
+      frame = face_frame(select_face(read_brep_text(brep), "face", 0));
+    } catch (const InputError&) {
+      frame = Placement{};
+    } catch (const Standard_Failure&) {
+      frame = Placement{};
+    }
+  }
+  std::vector<double> numbers(frame.rotation.begin(), frame.rotation.end());
+  numbers.insert(numbers.end(), frame.translation.begin(), frame.translation.end());
+  return numbers;
 }
 
 py::dict check_face_py(const std::string& brep, const std::string& source) {
@@ -102,32 +168,65 @@ py::dict check_face_py(const std::string& brep, const std::string& source) {
   {
     py::gil_scoped_release release;
     face = face_of(brep, source);
-    minimum = min_rectangles(face.grid.whole);
+    if (!face.is_general()) minimum = min_rectangles(face.grid.whole);
   }
   py::dict d = face_dict(face);
-  d["min_blocks"] = minimum;
+  // No known minimum for a general face (the exact search is the grid engine's).
+  d["min_blocks"] = face.is_general() ? py::object(py::none()) : py::object(py::int_(minimum));
   return d;
 }
 
+// A decomposition's results as text (made without the GIL): its blocks and their merged shape as
+// BREP text, and a general face's JSON report (region_decomposition_json, the CLI's).
+struct Written {
+  std::vector<std::string> blocks;
+  std::string shape;
+  nlohmann::json report;
+  Written() = default;
+  Written(const FaceDecomposition& result, const std::string& source) {
+    for (const TopoDS_Face& block : result.block_faces) blocks.push_back(write_brep_text(block));
+    shape = write_brep_text(result.shape);
+    if (result.general()) report = region_decomposition_json(source, result.face, result.region);
+  }
+};
+
+// A general decomposition for Python: the CLI's JSON report as data, with the blocks as BREP text (and
+// the report's block outlines as "outlines"), their merged shape, the step cap asked for and the face's
+// figures.
+py::dict general_decomposition_dict(const Written& written, int max_steps, const InputFace& face) {
+  py::dict out = python_of(written.report).cast<py::dict>();
+  out["outlines"] = out["blocks"];
+  out["blocks"] = written.blocks;
+  out["shape"] = written.shape;
+  out["min_blocks"] = py::none();
+  out["max_steps"] = max_steps;
+  out["report_face"] = out["face"];
+  out["face"] = face_dict(face);
+  return out;
+}
+
 py::dict decompose_py(const std::string& brep, const std::string& policy, const std::string& reward, std::uint64_t seed,
-                      double time_limit, int max_steps, const std::string& source) {
+                      double time_limit, int max_steps, const std::string& source, double general_time_limit) {
   DecomposeSettings settings;
   if (!policy.empty()) settings.policy = policy;
   if (!reward.empty()) settings.reward = reward;
   settings.policy_settings.seed = seed;
   settings.policy_settings.time_limit = time_limit;
+  if (general_time_limit >= 0) settings.policy_settings.general_time_limit = general_time_limit;
   settings.max_steps = max_steps;
   FaceDecomposition result;
-  std::vector<std::string> blocks;
-  std::string shape;
+  Written written;
   {
     py::gil_scoped_release release;
     result = decompose_input_face(face_of(brep, source), settings);
-    for (const TopoDS_Face& block : result.block_faces) blocks.push_back(write_brep_text(block));
-    shape = write_brep_text(result.shape);
+    written = Written(result, source);
   }
+  if (result.general()) return general_decomposition_dict(written, max_steps, result.face);
+  const std::vector<std::string>& blocks = written.blocks;
+  const std::string& shape = written.shape;
   const Decomposition& d = result.decomposition;
   py::dict out;
+  out["engine"] = "grid";
   out["policy"] = d.policy;
   out["reward"] = reward_preset_name(result.decomposition.reward);
   out["blocks"] = blocks;
@@ -161,56 +260,132 @@ py::dict decompose_py(const std::string& brep, const std::string& policy, const 
   return out;
 }
 
-py::dict step_py(const std::string& brep, const CutTuples& cuts, int step, int max_steps, const std::string& reward,
+// What every step dict starts with (either engine).
+py::dict step_head(const char* engine, int step, int steps, int blocks, double ret, EpisodeStatus status,
+                   const InputFace& face) {
+  py::dict out;
+  out["engine"] = engine;
+  out["step"] = step;
+  out["steps"] = steps;
+  out["blocks"] = blocks;
+  out["return"] = ret;
+  out["status"] = status_name(status);
+  out["z"] = face.planar.z;
+  out["normal_up"] = face.planar.normal_up;
+  return out;
+}
+
+py::dict piece_dict(int id, bool block, const Ring& outer, const std::vector<Ring>& hole_rings) {
+  py::dict p;
+  p["id"] = id;
+  p["block"] = block;
+  p["outer"] = ring_list(outer);
+  py::list holes;
+  for (const Ring& hole : hole_rings) holes.append(ring_list(hole));
+  p["holes"] = holes;
+  return p;
+}
+
+// The next cut's line (segments with ends a, b: Segment or Chord), reward and pieces left.
+template <class SegmentT>
+void finish_next(py::dict& next, const std::vector<SegmentT>& segments, double reward, int n_parts) {
+  py::list line;
+  for (const SegmentT& segment : segments) line.append(py::make_tuple(xy(segment.a), xy(segment.b)));
+  next["line"] = line;
+  next["reward"] = reward;
+  next["n_parts"] = n_parts;
+}
+
+// A general face's step (region_snapshot.h) for Python: as step_py's, with the next action's kind,
+// origin, direction (a vector) and chords as its line; "chosen" is -1 when the origin lies on an edge
+// or the action is a template.
+py::dict general_step_dict(const RegionSnapshot& s, const InputFace& face) {
+  py::dict out = step_head("general", s.step, s.steps, s.blocks, s.return_so_far, s.status, face);
+  out["templates"] = s.templates;
+  out["quantum"] = face.region.quantum();  // the lattice the pieces' corners lie on (region.h)
+  py::list pieces;
+  for (const RegionSnapshotPiece& piece : s.pieces) {
+    py::dict p = piece_dict(piece.id, piece.finished, piece.region.outer(), piece.region.holes());
+    p["template"] = piece.is_template;
+    pieces.append(p);
+  }
+  out["pieces"] = pieces;
+  if (!s.has_next) {
+    out["next"] = py::none();
+    return out;
+  }
+  py::dict next;
+  next["part"] = s.current_part_id;
+  next["kind"] = action_kind_name(s.action);
+  next["vertices"] = ring_list(s.vertices);
+  next["chosen"] = s.chosen_vertex;
+  const bool cut = s.action.kind == RegionAction::Kind::Cut;
+  next["origin"] = cut ? py::object(xy(s.action.cut.origin)) : py::object(py::none());
+  next["direction"] = cut ? py::object(xy(s.action.cut.direction)) : py::object(py::none());
+  next["forced"] = cut && s.action.cut.forced;
+  finish_next(next, s.chords, s.reward, s.n_parts);
+  out["next"] = next;
+  return out;
+}
+
+py::dict step_py(const std::string& brep, const py::object& cuts, int step, int max_steps, const std::string& reward,
                  const std::string& source) {
   const RewardPreset preset = reward_preset_by_name(reward);
-  const std::vector<CutSpec> specs = specs_of(cuts);
+  const Sequence sequence = sequence_of(cuts);
   InputFace face;
   EpisodeSnapshot s;
+  RegionSnapshot general;
   {
     py::gil_scoped_release release;
     face = face_of(brep, source);
-    s = face_step(face, specs, step, max_steps, preset);
+    sequence.check_for(face);
+    if (face.is_general()) {
+      general = face_step_general(face, sequence.region, step, max_steps, preset);
+    } else {
+      s = face_step(face, sequence.grid, step, max_steps, preset);
+    }
   }
-  py::dict out;
-  out["step"] = s.step;
-  out["steps"] = s.steps;
-  out["blocks"] = s.blocks;
-  out["return"] = s.return_so_far;
-  out["status"] = status_name(s.status);
-  out["z"] = face.planar.z;
-  out["normal_up"] = face.planar.normal_up;
+  if (face.is_general()) return general_step_dict(general, face);
+  py::dict out = step_head("grid", s.step, s.steps, s.blocks, s.return_so_far, s.status, face);
   py::list pieces;
   for (const SnapshotPiece& piece : s.pieces) {
-    py::dict p;
-    p["id"] = piece.id;
-    p["block"] = piece.block;
-    p["outer"] = ring_list(piece.polygon.outer);
-    py::list holes;
-    for (const Ring& hole : piece.polygon.holes) holes.append(ring_list(hole));
-    p["holes"] = holes;
-    pieces.append(p);
+    pieces.append(piece_dict(piece.id, piece.block, piece.polygon.outer, piece.polygon.holes));
   }
   out["pieces"] = pieces;
   if (s.has_next) {
     py::dict next;
     next["part"] = s.current_part_id;
-    py::list vertices;
-    for (const Point2& v : s.vertices) vertices.append(xy(v));
-    next["vertices"] = vertices;
+    next["vertices"] = ring_list(s.vertices);
     next["chosen"] = s.chosen_vertex;
     next["vertex"] = xy(s.vertices[static_cast<size_t>(s.chosen_vertex)]);
     next["direction"] = direction_name(s.direction);
-    py::list line;
-    for (const Segment& segment : s.line) line.append(py::make_tuple(xy(segment.a), xy(segment.b)));
-    next["line"] = line;
-    next["reward"] = s.reward;
-    next["n_parts"] = s.n_parts;
+    finish_next(next, s.line, s.reward, s.n_parts);
     out["next"] = next;
   } else {
     out["next"] = py::none();
   }
   return out;
+}
+
+// A general face's cut sequence replayed (no search): as decompose_py's general dict.
+py::dict replay_py(const std::string& brep, const py::object& cuts, int max_steps, const std::string& reward,
+                   const std::string& policy, const std::string& source) {
+  const RewardPreset preset = reward_preset_by_name(reward);
+  const Sequence sequence = sequence_of(cuts);
+  FaceDecomposition result;
+  Written written;
+  {
+    py::gil_scoped_release release;
+    const InputFace face = face_of(brep, source);
+    if (!face.is_general()) {
+      throw InputError(face.source + ": replay takes the cut sequence of a face with edges at other angles; this "
+                       "face's edges run along two perpendicular directions (decompose it)");
+    }
+    sequence.check_for(face);
+    result = face_replay_general(face, sequence.region, max_steps, preset, policy);
+    written = Written(result, source);
+  }
+  return general_decomposition_dict(written, max_steps, result.face);
 }
 
 py::dict policy_info_py(const std::string& spec) {
@@ -229,12 +404,18 @@ py::dict policy_info_py(const std::string& spec) {
   return d;
 }
 
-std::vector<double> vertex_scores_py(const std::string& brep, const CutTuples& cuts, int step, const std::string& policy,
+std::vector<double> vertex_scores_py(const std::string& brep, const py::object& cuts, int step, const std::string& policy,
                                      int max_steps, const std::string& reward, const std::string& source) {
   const RewardPreset preset = reward_preset_by_name(reward);
-  const std::vector<CutSpec> specs = specs_of(cuts);
+  const Sequence sequence = sequence_of(cuts);
   py::gil_scoped_release release;
-  return face_vertex_scores(face_of(brep, source), specs, step, policy, max_steps, preset);
+  const InputFace face = face_of(brep, source);
+  if (face.is_general()) {
+    throw InputError(face.source + ": vertex scores come from a learned policy's value network, and no learned policy "
+                     "works on faces with edges at other angles yet");
+  }
+  sequence.check_for(face);
+  return face_vertex_scores(face, sequence.grid, step, policy, max_steps, preset);
 }
 
 MeshPlacement placement_of(const std::vector<double>& values) {
@@ -249,10 +430,10 @@ MeshPlacement placement_of(const std::vector<double>& values) {
   return placement;
 }
 
-py::dict mesh_py(const std::string& brep, const CutTuples& cuts, double size, int max_steps, const std::string& reward,
+py::dict mesh_py(const std::string& brep, const py::object& cuts, double size, int max_steps, const std::string& reward,
                  const std::string& out, const std::vector<double>& placement, const std::string& source) {
   const RewardPreset preset = reward_preset_by_name(reward);
-  const std::vector<CutSpec> specs = specs_of(cuts);
+  const Sequence sequence = sequence_of(cuts);
   const MeshPlacement where = placement_of(placement);
   if (!out.empty() && !is_mesh_file_name(out)) throw InputError(out + ": expected a .msh, .vtu or .inp file");
   FaceMesh result;
@@ -260,7 +441,13 @@ py::dict mesh_py(const std::string& brep, const CutTuples& cuts, double size, in
     py::gil_scoped_release release;
     MeshOptions options;
     options.size = size;
-    result = face_mesh(face_of(brep, source), specs, max_steps, preset, options);
+    const InputFace face = face_of(brep, source);
+    if (face.is_general()) {
+      throw InputError(face.source + ": meshing faces with edges at other angles is not yet in the workbench "
+                       "(decomposing them is)");
+    }
+    sequence.check_for(face);
+    result = face_mesh(face, sequence.grid, max_steps, preset, options);
     if (!out.empty()) write_mesh_file(out, result.result.mesh, where);
   }
   const QuadMesh& mesh = result.result.mesh;
@@ -390,7 +577,8 @@ std::vector<std::tuple<double, double, double>> block_colours(int count) {
 }  // namespace
 
 PYBIND11_MODULE(autoblock_native, m) {
-  m.doc() = "The AutoBlock core (block decomposition of planar rectilinear faces); used by the AutoBlock workbench.";
+  m.doc() = "The AutoBlock core (block decomposition of planar faces: rectilinear ones by the grid engine, any other "
+            "bounded by straight edges by the general engine); used by the AutoBlock workbench.";
 
   py::register_local_exception_translator([](std::exception_ptr pointer) {
     try {
@@ -421,19 +609,35 @@ PYBIND11_MODULE(autoblock_native, m) {
         py::arg("value"), py::arg("tolerance") = 0.0,
         "A number as messages print it: a plain decimal ('80', '2.5') rounded to `tolerance` (noise below it reads "
         "'0'; 0: exact), scientific notation only beyond 1e15 or below 1e-4.");
+  m.def("face_frame", &face_frame_py, py::arg("brep"),
+        "The face's own frame by the core's rule (the one the CLI uses) as 12 numbers: row-major rotation, then "
+        "translation; the identity for a face parallel to XY that is rectilinear there or general, or for text "
+        "holding no single face.");
   m.def("check_face", &check_face_py, py::arg("brep"), py::arg("source") = "face",
         "Validate the single planar face held by BREP text. Returns its figures; raises ValueError saying what is "
         "wrong and where.");
   m.def("decompose", &decompose_py, py::arg("brep"), py::arg("policy") = "", py::arg("reward") = "",
         py::arg("seed") = 0, py::arg("time_limit") = 30.0, py::arg("max_steps") = 0, py::arg("source") = "face",
-        "Decompose the face held by BREP text into rectangular blocks. policy: a name of policy_names() ('' for the "
-        "default); reward: a preset ('' for the default). Returns a dict: blocks (BREP text each), shape (BREP text "
-        "of their compound), boxes, cuts, return, n_blocks, min_blocks, status, ...");
+        py::arg("general_time_limit") = -1.0,
+        "Decompose the face held by BREP text into blocks. policy: a name of policy_names() ('' for the default); "
+        "reward: a preset ('' for the default); time_limit: the grid engine's search budget; general_time_limit: the "
+        "general engine's (< 0: the core's default). Returns a dict: engine ('grid' or 'general'), blocks (BREP "
+        "text each), shape (BREP text of their compound), cuts, return, n_blocks, min_blocks, status, ...; a grid "
+        "face's cuts are {part, vertex, direction, ...} with boxes; a general face's dict is the CLI's JSON report "
+        "(cuts {part, kind, origin, direction, forced, chords, ...}, outlines, n_templates, min_blocks None).");
   m.def("step", &step_py, py::arg("brep"), py::arg("cuts"), py::arg("step"), py::arg("max_steps") = 0,
         py::arg("reward") = "paper", py::arg("source") = "face",
-        "The episode of a cut sequence [(part, x, y, 'horizontal'|'vertical'), ...] on the face after `step` cuts, "
-        "rewards under the preset `reward` (the decomposition's 'reward'): "
-        "pieces (polygons), blocks, return, and the next cut (part, vertices, chosen vertex, line, reward) or None.");
+        "The episode of a cut sequence on the face after `step` cuts, rewards under the preset `reward` (the "
+        "decomposition's 'reward'): pieces (polygons), blocks, return, and the next cut (part, vertices, chosen vertex, "
+        "line, reward) or None. Cuts: [(part, x, y, 'horizontal'|'vertical'), ...] on a grid face, [(part, kind, ox, "
+        "oy, dx, dy, forced), ...] on a general face (kind 'full', 'partial' or 'template'; then the next cut also "
+        "has kind, origin, direction (a vector) and its chords as line, chosen -1 when the origin is on an edge).");
+  m.def("replay", &replay_py, py::arg("brep"), py::arg("cuts"), py::arg("max_steps") = 0, py::arg("reward") = "paper",
+        py::arg("policy") = "replay", py::arg("source") = "face",
+        "Replay a general face's cut sequence [(part, kind, ox, oy, dx, dy, forced), ...] (as step() takes it) "
+        "without searching again: the same dict as decompose() gives for a general face (policy: the name it "
+        "reports). ValueError when an action does not belong to the face, the sequence leaves parts unfinished, "
+        "or the face is rectilinear.");
   m.def("policy_info", &policy_info_py, py::arg("policy") = "",
         "What a policy is: {'name', 'learned' (a trained policy with a value network), 'reward' (the preset it "
         "aims at: a trained policy's own)}. policy: a name or a policy file ('' for the default).");

@@ -126,15 +126,14 @@ class TestText(unittest.TestCase):
         self.assertNotIn("e+", message)
         self.assertNotIn("e-", message)
 
-    def test_a_chamfered_face_is_sent_to_the_cli_for_now(self):
-        # Faces with edges at other angles: the core's general engine takes them (autoblock decompose); the
-        # workbench says so clearly until it shows them.
-        face = Part.makePolygon([FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(80, 0, 0), FreeCAD.Vector(83, 3, 0),
-                                 FreeCAD.Vector(83, 40, 0), FreeCAD.Vector(0, 40, 0), FreeCAD.Vector(0, 0, 0)])
+    def test_a_too_sharp_corner_is_named_with_its_place(self):
+        # Faces with edges at other angles go to the general engine; a corner sharper than it takes is named.
+        V = FreeCAD.Vector
+        sliver = Part.Face(Part.makePolygon([V(0, 0, 0), V(40, 0, 0), V(0, 2, 0), V(0, 0, 0)]))
         with self.assertRaises(ValueError) as caught:
-            AutoBlock.decompose(Part.Face(face))
-        self.assertIn("edges at other angles", str(caught.exception))
-        self.assertIn("autoblock decompose", str(caught.exception))
+            AutoBlock.decompose(sliver)
+        self.assertIn("sharper than the smallest supported 5 degrees", str(caught.exception))
+        self.assertIn("at (40, 0)", str(caught.exception))
 
 
 class TestDecompose(unittest.TestCase):
@@ -323,13 +322,13 @@ class TestDecompose(unittest.TestCase):
             box = doc.addObject("Part::Box", "Box")
             doc.recompute()
             V = FreeCAD.Vector
-            triangle = Part.Face(Part.makePolygon([V(0, 0, 0), V(4, 0, 0), V(0, 3, 0), V(0, 0, 0)]))
+            sliver = Part.Face(Part.makePolygon([V(0, 0, 0), V(40, 0, 0), V(0, 2, 0), V(0, 0, 0)]))
             disc = Part.Face(Part.Wire(Part.makeCircle(2.0)))
             cases = [
                 (sphere, "not planar"),
                 (box, "6 faces"),
                 ((box, "Edge1"), "not a face"),
-                (triangle, "edges at other angles"),
+                (sliver, "sharper than the smallest supported"),
                 (disc, "only straight edges"),
                 (Part.makeCompound([support.l_face(), support.l_face().translate(V(10, 0, 0))]), "2 faces"),
                 (Part.makePolygon([V(0, 0, 0), V(1, 0, 0), V(1, 1, 0)]), "its wire is not closed"),
@@ -667,6 +666,310 @@ class TestAutoBlockObject(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "recomputed from its own inputs"):
             AutoBlock.write_back(obj, "replace")
         self.assertIsNotNone(self.doc.getObject(obj.Name))
+
+
+def add_chamfered_pad(doc):
+    """A PartDesign Pad of a 40 x 25 rectangle, 5 high, one vertical edge chamfered by 8: returns (chamfer,
+    name of its top face, the top face)."""
+    import Sketcher  # noqa: F401
+
+    V = FreeCAD.Vector
+    body = doc.addObject("PartDesign::Body", "Body")
+    sketch = body.newObject("Sketcher::SketchObject", "PadSketch")
+    corners = [V(0, 0, 0), V(40, 0, 0), V(40, 25, 0), V(0, 25, 0)]
+    for a, b in zip(corners, corners[1:] + corners[:1]):
+        sketch.addGeometry(Part.LineSegment(a, b))
+    pad = body.newObject("PartDesign::Pad", "Pad")
+    pad.Profile = sketch
+    pad.Length = 5.0
+    doc.recompute()
+    edge = next("Edge{}".format(i) for i, e in enumerate(pad.Shape.Edges, 1)
+                if all(abs(v.X - 40) < 1e-9 and abs(v.Y - 25) < 1e-9 for v in e.Vertexes))
+    chamfer = body.newObject("PartDesign::Chamfer", "Chamfer")
+    chamfer.Base = (pad, [edge])
+    chamfer.Size = 8.0
+    doc.recompute()
+    number, top = max(enumerate(chamfer.Shape.Faces, 1), key=lambda f: f[1].CenterOfMass.z)
+    return chamfer, "Face{}".format(number), top
+
+
+class TestGeneralFaces(unittest.TestCase):
+    """Faces with edges at any angle (the core's general engine) in the workbench: decompose, step through,
+    the parametric object (undo, save and reopen), write-back; meshing them says it is not there yet."""
+
+    def setUp(self):
+        self.doc = support.new_document("general")
+        self.folder = support.temporary_folder()
+
+    def tearDown(self):
+        support.close_document(self.doc)
+        support.remove_folder(self.folder)
+
+    def check_blocks(self, shape, face):
+        """The blocks tile the face: areas sum to its area, every block a convex quadrilateral or a template."""
+        self.assertAlmostEqual(sum(f.Area for f in shape.Faces), face.Area, delta=1e-6 * face.Area)
+        self.assertAlmostEqual(shape.Area, face.Area, delta=1e-6 * face.Area)
+        self.assertTrue(shape.isValid())
+        box, blocks = face.BoundBox, shape.BoundBox
+        for a, b in ((box.XMin, blocks.XMin), (box.XMax, blocks.XMax), (box.YMin, blocks.YMin), (box.YMax, blocks.YMax),
+                     (box.ZMin, blocks.ZMin), (box.ZMax, blocks.ZMax)):
+            self.assertAlmostEqual(a, b, delta=1e-6 * box.DiagonalLength)
+
+    def test_a_sketch_with_slanted_lines_decomposes_into_blocks(self):
+        sketch = support.add_slanted_sketch(self.doc)
+        face = self.doc.addObject("Part::Face", "SlantedFace")
+        face.Sources = [sketch]
+        self.doc.recompute()
+        self.assertEqual(len(face.Shape.Faces), 1)
+        self.assertEqual(len(face.Shape.Faces[0].Wires), 2)  # the outer wire and the hole
+        figures = AutoBlock.check_face(face)
+        self.assertTrue(figures["general"])
+        self.assertIsNone(figures["min_blocks"])
+        for policy in ("auto", "greedy", "random"):
+            with self.subTest(policy=policy):
+                result = AutoBlock.decompose(face, policy=policy)
+                self.assertTrue(result.general)
+                self.assertTrue(result.complete)
+                self.assertEqual(len(result.blocks), result.n_blocks + result.n_templates)
+                self.check_blocks(Part.makeCompound(result.blocks), face.Shape)
+                self.check_blocks(result.shape, face.Shape)
+                self.assertGreater(len(result.cuts), 0)
+                self.assertIn(" cut", result.summary())
+                self.assertEqual(json.loads(json.dumps(result.to_dict()))["engine"], "general")
+        # The sketch itself (closed wires) is taken as well, and gives the same blocks.
+        direct = AutoBlock.decompose(sketch, policy="greedy")
+        again = AutoBlock.decompose(face, policy="greedy")
+        self.assertEqual(len(direct.blocks), len(again.blocks))
+        self.assertAlmostEqual(direct.ret, again.ret, places=9)
+
+    def test_same_blocks_as_the_cli(self):
+        # The workbench and the CLI put a face in the same frame (the core's rule), so they make the same cuts.
+        cli = os.environ.get("AUTOBLOCK_CLI")
+        if not cli:
+            self.skipTest("AUTOBLOCK_CLI not set")
+        samples = os.path.join(AutoBlock.paths.MODELS, "data", "general-test-holes")
+        for name in ("shape_0000.brep", "shape_0001.brep", "shape_0002.brep"):
+            with self.subTest(name=name):
+                path = os.path.join(samples, name)
+                report = os.path.join(self.folder, name + ".json")
+                subprocess.run([cli, "decompose", path, "--policy", "greedy", "--json", report], check=True,
+                               capture_output=True)
+                with open(report) as f:
+                    expected = json.load(f)
+                result = AutoBlock.decompose(support.read_face(path), policy="greedy")
+                self.assertTrue(result.general)
+                self.assertEqual(result.n_blocks, expected["n_blocks"])
+                self.assertEqual(result.n_templates, expected["n_templates"])
+                self.assertAlmostEqual(result.ret, expected["return"], places=9)
+                self.assertEqual([(c.kind, c.local) for c in result.cuts],
+                                 [(c["kind"], tuple(c["origin"]) if "origin" in c else None) for c in expected["cuts"]])
+
+    def test_stepping_through_angled_and_partial_cuts(self):
+        sketch = support.add_slanted_sketch(self.doc)
+        result = AutoBlock.decompose(sketch, policy="greedy")
+        stepper = result.stepper()
+        self.assertTrue(stepper.general)
+        self.assertEqual(stepper.steps, len(result.cuts))
+        whole = sum(b.Area for b in result.blocks)
+        size = result.face.BoundBox.DiagonalLength
+        running, angled, kinds = 0.0, 0, set()
+        for k in range(stepper.steps + 1):
+            view = stepper.step(k)
+            self.assertAlmostEqual(sum(p.face.Area for p in view.pieces), whole, delta=1e-6 * whole)
+            self.assertAlmostEqual(view.ret, running, places=9)
+            if k == stepper.steps:
+                self.assertIsNone(view.next)
+                self.assertTrue(all(p.block for p in view.pieces))
+                self.assertEqual(len(view.pieces), len(result.blocks))
+                break
+            cut, step = result.cuts[k], view.next
+            self.assertEqual(step.part, cut.part)
+            self.assertEqual(step.kind, cut.kind)
+            self.assertAlmostEqual(step.reward, cut.reward, places=9)
+            running += cut.reward
+            self.assertIsNone(step.scores)
+            self.assertIn("faces with edges at other angles", step.scores_note)
+            kinds.add(step.kind)
+            if cut.kind == "template":
+                self.assertIsNone(step.vertex)
+                self.assertEqual(step.line, [])
+                continue
+            self.assertTrue(step.vertex.isEqual(cut.origin, 1e-9))
+            self.assertIn("cut at", step.direction)
+            if step.chosen >= 0:
+                self.assertTrue(step.vertices[step.chosen].isEqual(step.vertex, 1e-6))
+            if step.n_parts > 1:
+                self.assertGreater(len(step.line), 0)
+                # Every chord runs along the cut's direction (given in the face's frame: carried to the model's).
+                along = view.frame.Rotation.multVec(FreeCAD.Vector(step.vector[0], step.vector[1], 0))
+                along.normalize()
+                for a, b in step.line:
+                    d = b - a
+                    self.assertLess(d.cross(along).Length, 1e-6 * size)  # ends rounded to the face's lattice
+                    if abs(along.x) > 1e-6 and abs(along.y) > 1e-6:
+                        angled += 1
+        self.assertGreater(angled, 0, "no cut at an angle other than the axes")
+        self.assertTrue(kinds & {"full", "partial"})
+        # A cut that does not belong to the face is a ValueError, not a wrong picture.
+        spec = list(result.cuts[0].spec())
+        spec[2] += 1000.0
+        from AutoBlock.stepping import Stepper
+
+        bad = Stepper(stepper.local_brep, stepper.frame, [tuple(spec)], stepper.max_steps, "bad", "greedy")
+        with self.assertRaisesRegex(ValueError, "does not belong to this face"):
+            bad.step(1)
+        # No learned policy on general faces yet, and no mesher in the workbench yet: clear ValueErrors.
+        with self.assertRaisesRegex(ValueError, "edges at other angles"):
+            AutoBlock.decompose(sketch, policy="sac-mesh")
+        with self.assertRaisesRegex(ValueError, "not yet in the workbench"):
+            AutoBlock.mesh(result)
+
+    def test_a_chamfered_box_gets_its_top_face_split_into_the_blocks_in_place(self):
+        # Part's chamfer on a box (a plain Part feature holding the solid): write-back "replace" splits its top face.
+        box = Part.makeBox(30, 20, 6)
+        edge = next(e for e in box.Edges if e.BoundBox.ZLength > 1 and e.BoundBox.XMin > 29 and e.BoundBox.YMin > 19)
+        solid = box.makeChamfer(7.0, [edge])
+        holder = support.add_face(self.doc, solid, "ChamferedBox")
+        number, top = max(enumerate(solid.Faces, 1), key=lambda f: f[1].CenterOfMass.z)
+        self.assertEqual(len(top.Vertexes), 5)
+        obj = AutoBlock.make_autoblock(holder, "Face{}".format(number), policy="greedy")
+        self.check_blocks(obj.Shape, top)
+        blocks = len(obj.Shape.Faces)
+        self.assertGreater(blocks, 1)
+        AutoBlock.write_back(obj, "replace")
+        self.assertEqual(len(holder.Shape.Solids), 1)
+        self.assertTrue(holder.Shape.isValid())
+        # The blocks' corners lie on the face's lattice (within its tolerance): the volume agrees to that.
+        self.assertAlmostEqual(holder.Shape.Volume, solid.Volume, delta=1e-8 * solid.Volume)
+        self.assertEqual(len(holder.Shape.Faces), len(solid.Faces) - 1 + blocks)
+        self.doc.undo()
+        self.assertEqual(len(holder.Shape.Faces), len(solid.Faces))
+
+    def test_a_reopened_object_replays_its_cuts_instead_of_searching_again(self):
+        from AutoBlock import console
+
+        sketch = support.add_slanted_sketch(self.doc)
+        obj = AutoBlock.make_autoblock(sketch)  # auto: the general engine's search, with its time budget
+        name, areas, ret = obj.Name, sorted(f.Area for f in obj.Shape.Faces), obj.Return
+        path = os.path.join(self.folder, "replay.FCStd")
+        self.doc.saveAs(path)
+        FreeCAD.closeDocument(self.doc.Name)
+        self.doc = FreeCAD.openDocument(path)
+        obj, sketch = self.doc.getObject(name), self.doc.getObject("Slanted")
+        searched = []
+        original = console.decompose
+        console.decompose = lambda *args, **kwargs: searched.append(args) or original(*args, **kwargs)
+        self.addCleanup(setattr, console, "decompose", original)
+        obj.touch()
+        self.doc.recompute()
+        self.assertEqual(searched, [])  # replayed from CutSequence
+        self.assertIn("Up-to-date", obj.State)
+        self.assertEqual(len(obj.Shape.Faces), len(areas))
+        for a, b in zip(sorted(f.Area for f in obj.Shape.Faces), areas):
+            self.assertAlmostEqual(a, b, places=6)
+        self.assertAlmostEqual(obj.Return, ret, places=9)
+        # The console twin gives the same blocks.
+        again = AutoBlock.replay(sketch, obj.CutSequence)
+        self.assertTrue(again.general)
+        self.assertAlmostEqual(again.ret, ret, places=9)
+        # Another face (the sketch moved: a general face in the XY plane keeps the model's coordinates), other
+        # settings: decomposed again; the old cuts do not replay on another face.
+        sketch.Placement.Base = FreeCAD.Vector(5, 0, 0)
+        self.doc.recompute()
+        self.assertEqual(len(searched), 1)
+        self.assertAlmostEqual(obj.Shape.BoundBox.XMin, sketch.Shape.BoundBox.XMin, delta=1e-4)  # lattice: 1e-5
+        obj.touch()
+        self.doc.recompute()
+        self.assertEqual(len(searched), 1)  # replayed again
+        obj.Seed = 7
+        self.doc.recompute()
+        self.assertEqual(len(searched), 2)
+        other = support.add_face(self.doc, Part.Face(Part.makePolygon([FreeCAD.Vector(*p) for p in (
+            (0, 0, 0), (30, 0, 0), (36, 9, 0), (30, 20, 0), (0, 20, 0), (0, 0, 0))])), "Other")
+        stored = obj.CutSequence
+        obj.Source = (other, [])
+        self.doc.recompute()
+        self.assertEqual(len(searched), 3)
+        self.check_blocks(obj.Shape, other.Shape)
+        with self.assertRaisesRegex(ValueError, "not the face this cut sequence was made on"):
+            AutoBlock.replay(other, stored)
+        with self.assertRaisesRegex(ValueError, "engine 'general'"):
+            AutoBlock.replay(support.l_face(), AutoBlock.decompose(support.l_face()).cut_sequence())
+
+    def test_a_chamfered_pad_face_as_a_parametric_object(self):
+        chamfer, top_name, top = add_chamfered_pad(self.doc)
+        self.assertEqual(len(top.Vertexes), 5)  # the rectangle with one corner cut off
+        self.assertAlmostEqual(top.Area, 40 * 25 - 32.0, places=6)
+        from AutoBlock.objects.fem_mesh import is_autoblock_mesh
+
+        count = len(self.doc.Objects)
+        undo_count = self.doc.UndoCount
+        # Through its Body, as Auto-Block on a selected face does (the link stays within the Body's scope).
+        body = self.doc.getObject("Body")
+        obj = AutoBlock.make_autoblock(body, "Chamfer." + top_name, policy="greedy")
+        self.assertEqual(self.doc.UndoCount, undo_count + 1)
+        self.assertEqual(self.doc.UndoNames[0], "Auto-Block")
+        self.assertIn("Up-to-date", obj.State)
+        self.check_blocks(obj.Shape, top)
+        self.assertEqual(len(obj.Shape.Faces), obj.NumberOfBlocks)
+        self.assertEqual(obj.MinimumBlocks, 0)
+        self.assertGreater(obj.NumberOfCuts, 0)
+        self.assertIn("greedy: ", obj.Status)
+        self.assertEqual(json.loads(obj.CutSequence)["engine"], "general")
+        # No FEM mesh object for a general face (the mesher is not in the workbench yet), and asking is a ValueError
+        # that leaves the document unchanged.
+        self.assertFalse([o for o in self.doc.Objects if is_autoblock_mesh(o)])
+        names = [o.Name for o in self.doc.Objects]
+        with self.assertRaisesRegex(ValueError, "not yet in the workbench"):
+            AutoBlock.mesh(obj)
+        self.assertEqual([o.Name for o in self.doc.Objects], names)
+        with self.assertRaisesRegex(ValueError, "not yet in the workbench"):
+            AutoBlock.make_autoblock(body, "Chamfer." + top_name, mesh=True)
+        self.assertEqual([o.Name for o in self.doc.Objects], names)
+        # Undo and redo.
+        name = obj.Name
+        self.doc.undo()
+        self.assertIsNone(self.doc.getObject(name))
+        self.assertEqual(len(self.doc.Objects), count)
+        self.doc.redo()
+        obj = self.doc.getObject(name)
+        self.doc.recompute()
+        self.check_blocks(obj.Shape, top)
+        # The chamfer grows: the object follows.
+        chamfer.Size = 12.0
+        self.doc.recompute()
+        top = chamfer.Shape.getElement(top_name)
+        self.assertAlmostEqual(top.Area, 40 * 25 - 72.0, places=6)
+        self.check_blocks(obj.Shape, top)
+        blocks, ret, cuts = obj.NumberOfBlocks, obj.Return, obj.NumberOfCuts
+        # Save, reopen, step through the stored sequence, recompute, write back.
+        path = os.path.join(self.folder, "general.FCStd")
+        self.doc.saveAs(path)
+        FreeCAD.closeDocument(self.doc.Name)
+        self.doc = FreeCAD.openDocument(path)
+        self.doc.UndoMode = 1  # a reopened document starts without undo
+        obj, chamfer = self.doc.getObject(name), self.doc.getObject("Chamfer")
+        self.assertTrue(AutoBlock.is_autoblock(obj))
+        stepper = AutoBlock.stepper_of(obj)
+        self.assertTrue(stepper.general)
+        self.assertEqual(stepper.steps, cuts)
+        last = stepper.step(stepper.steps)
+        self.assertEqual(len(last.pieces), blocks)
+        self.assertAlmostEqual(last.ret, ret, places=9)
+        obj.touch()
+        self.doc.recompute()
+        self.assertIn("Up-to-date", obj.State)
+        self.assertEqual(obj.NumberOfBlocks, blocks)
+        self.assertAlmostEqual(obj.Return, ret, places=9)
+        self.check_blocks(obj.Shape, chamfer.Shape.getElement(top_name))
+        undo_count = self.doc.UndoCount
+        feature = AutoBlock.write_back(obj, mode="new")
+        self.assertEqual(self.doc.UndoCount, undo_count + 1)
+        self.assertEqual(len(feature.Shape.Faces), blocks)
+        self.check_blocks(feature.Shape, chamfer.Shape.getElement(top_name))
+        feature_name = feature.Name
+        self.doc.undo()
+        self.assertIsNone(self.doc.getObject(feature_name))
 
 
 class TestFemMesh(unittest.TestCase):

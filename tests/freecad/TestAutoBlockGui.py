@@ -356,6 +356,21 @@ class TestAutoBlockCommand(GuiTestCase):
 
 
 class TestExportMeshCommand(GuiTestCase):
+    @staticmethod
+    def export_answering(choose_path):
+        """Run Export mesh with `choose_path` answering the file dialog; returns the DialogCatcher (its .seen)."""
+        from AutoBlock.commands.export_mesh import ExportMeshCommand
+
+        original = ExportMeshCommand.choose_path
+        ExportMeshCommand.choose_path = staticmethod(choose_path)
+        try:
+            with DialogCatcher() as dialogs:
+                FreeCADGui.runCommand("AutoBlock_ExportMesh")
+                pump(0.5)
+        finally:
+            ExportMeshCommand.choose_path = original
+        return dialogs
+
     def test_export_mesh_command(self):
         from AutoBlock.commands.export_mesh import ExportMeshCommand
 
@@ -384,16 +399,20 @@ class TestExportMeshCommand(GuiTestCase):
             self.assertEqual(self.doc.UndoCount, undo_count)  # exporting changes nothing in the document
             # A bad file name: a dialog says why, nothing is written.
             bad = os.path.join(folder, "sample.stl")
-            ExportMeshCommand.choose_path = staticmethod(lambda obj: bad)
-            try:
-                with DialogCatcher() as dialogs:
-                    FreeCADGui.runCommand("AutoBlock_ExportMesh")
-                    pump(0.5)
-            finally:
-                ExportMeshCommand.choose_path = original
+            dialogs = self.export_answering(lambda obj: bad)
             self.assertEqual(len(dialogs.seen), 1)
             self.assertIn(".msh, .vtu or .inp", dialogs.seen[0][1])
             self.assertFalse(os.path.exists(bad))
+            # A face with edges at other angles: no mesher in the workbench yet; a dialog says so before any
+            # file name is asked for.
+            general = self.auto_block(support.add_slanted_sketch(self.doc))[-1]
+            FreeCADGui.Selection.clearSelection()
+            FreeCADGui.Selection.addSelection(general)
+            asked = []
+            dialogs = self.export_answering(lambda obj: asked.append(obj) or bad)
+            self.assertEqual(asked, [])
+            self.assertEqual(len(dialogs.seen), 1)
+            self.assertIn("not yet in the workbench", dialogs.seen[0][1])
         finally:
             support.remove_folder(folder)
 
@@ -547,6 +566,62 @@ class TestStepThroughPanel(GuiTestCase):
         # A fixed size in pixels: no model size enters the marks (SoImage draws them in screen space).
         self.assertLess(width, 120)
         self.assertLess(height, 40)
+
+    def test_angled_and_partial_cuts_of_a_slanted_sketch_are_drawn(self):
+        from AutoBlock.objects.fem_mesh import mesh_objects_of
+        from AutoBlock.taskpanels import step_through
+        from AutoBlock.taskpanels.step_scene import CUT_COLOUR
+
+        sketch = support.add_slanted_sketch(self.doc)
+        pump()
+        obj = self.auto_block(sketch)[0]  # a face with edges at other angles: the general engine
+        self.assertEqual(mesh_objects_of(obj), [])  # no mesher for such faces in the workbench yet
+        self.assertGreater(obj.NumberOfCuts, 1)
+        top_view()
+        before = ([o.Name for o in self.doc.Objects], self.doc.UndoCount, obj.Shape.exportBrepToString())
+        self.assertTrue(step_through.open_step_panel(obj))
+        pump()
+        panel = step_through.current_panel()
+        form = panel.form
+        lift = 1e-3 * max(panel.current.size, 1e-9) * 2 * 1.01
+        shown = set()
+        for k in range(obj.NumberOfCuts):
+            form.slider.setValue(k)
+            pump(0.1)
+            cut = panel.current.next
+            words = form.directionLabel.text()
+            if cut.kind == "template":
+                self.assertIn("template", words)
+                continue
+            self.assertIn("{} cut at".format(cut.kind), words)
+            self.assertIn("faces with edges at other angles", step_through.plain_text(form.scoresLabel.text()))
+            # The red line is the cut's chords, at their angle: one 2-point polyline per chord.
+            red = []
+            for material in self.scene_nodes_of_type(panel.scene.content, "SoMaterial"):
+                colour = material.diffuseColor[0].getValue()
+                if all(abs(a - b) < 1e-6 for a, b in zip(colour, CUT_COLOUR)):
+                    red.append(material)
+            self.assertEqual(len(red), 1 if cut.line else 0)
+            if cut.line:
+                lines = self.scene_nodes_of_type(panel.scene.content, "SoLineSet")
+                counts = [list(node.numVertices.getValues()) for node in lines]
+                self.assertIn([2] * len(cut.line), counts)
+                points = [p for node in self.scene_nodes_of_type(panel.scene.content, "SoCoordinate3")
+                          for p in (FreeCAD.Vector(*v.getValue()) for v in node.point.getValues())]
+                for a, b in cut.line:
+                    for end in (a, b):
+                        self.assertTrue(any((end - p).Length <= lift for p in points), end)
+                shown.add(cut.kind)
+        self.assertTrue(shown)
+        FreeCADGui.Selection.clearSelection()
+        form.slider.setValue(0)
+        pump()
+        screenshot("step-through-general")
+        panel.reject()
+        pump()
+        self.assertEqual(self.scene_nodes(), [])
+        self.assertEqual(([o.Name for o in self.doc.Objects], self.doc.UndoCount, obj.Shape.exportBrepToString()),
+                         before)
 
     def test_a_baseline_has_no_scores_and_the_panel_says_so(self):
         from AutoBlock.taskpanels import step_through

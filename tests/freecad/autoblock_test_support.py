@@ -83,3 +83,18 @@ def is_rectangle(face, tolerance=1e-7):
         return False
     a, b, c = (v.Point for v in face.OuterWire.OrderedVertexes[:3])
     return abs(face.Area - (a - b).Length * (c - b).Length) <= tolerance * max(face.Area, 1.0)
+
+
+def add_slanted_sketch(doc, name="Slanted"):
+    """A sketch of slanted lines: a hexagon with edges at several angles and a tilted quadrilateral hole."""
+    import Sketcher  # noqa: F401  (registers Sketcher::SketchObject)
+
+    V = FreeCAD.Vector
+    sketch = doc.addObject("Sketcher::SketchObject", name)
+    outer = [V(0, 0, 0), V(60, -8, 0), V(78, 18, 0), V(55, 47, 0), V(12, 40, 0), V(-6, 17, 0)]
+    hole = [V(22, 12, 0), V(38, 9, 0), V(42, 24, 0), V(25, 28, 0)]
+    for ring in (outer, hole):
+        for a, b in zip(ring, ring[1:] + ring[:1]):
+            sketch.addGeometry(Part.LineSegment(a, b))
+    doc.recompute()
+    return sketch

@@ -29,8 +29,8 @@ class AutoBlockCommand(BaseCommand):
     NAME = "AutoBlock_AutoBlock"
     ICON = "AutoBlock_AutoBlock"
     MENU_TEXT = "Auto-Block"
-    TOOL_TIP = ("Cut the selected planar faces into rectangular blocks: one parametric AutoBlock object per face, "
-                "with a FEM mesh of quads (select faces, a sketch, or objects holding one face)")
+    TOOL_TIP = ("Cut the selected planar faces into blocks: one parametric AutoBlock object per face, with a FEM "
+                "mesh of quads on rectilinear faces (select faces, a sketch, or objects holding one face)")
 
     def IsActive(self):
         return FreeCADGui.ActiveDocument is not None and bool(FreeCADGui.Selection.getSelection())

@@ -22,6 +22,16 @@ def is_autoblock(obj):
     return getattr(getattr(obj, "Proxy", None), "Type", None) == TYPE
 
 
+def is_general(obj):
+    """True for an AutoBlock object whose last decomposition was of a face with edges at other angles."""
+    if not is_autoblock(obj) or not obj.CutSequence:
+        return False
+    try:
+        return json.loads(obj.CutSequence).get("engine") == "general"
+    except ValueError:
+        return False
+
+
 class AutoBlockFeature:
     Type = TYPE
 
@@ -50,9 +60,10 @@ class AutoBlockFeature:
          "remaining parts (optimal, auto and learned policies).", 0),
         ("App::PropertyLength", "MeshSize", "Mesh", "Target quad size of the object's FEM mesh (0: automatic, 1/20 "
          "of the face's longer side).", 0),
-        ("App::PropertyInteger", "NumberOfBlocks", "Result", "Blocks in the partition.", 8),
+        ("App::PropertyInteger", "NumberOfBlocks", "Result", "Blocks in the partition (on a face with edges at "
+         "other angles: convex quadrilaterals and templates, see Status).", 8),
         ("App::PropertyInteger", "MinimumBlocks", "Result", "Fewest rectangles of any partition of the face (a "
-         "lower bound).", 8),
+         "lower bound; 0: unknown, a face with edges at other angles).", 8),
         ("App::PropertyInteger", "NumberOfCuts", "Result", "Cuts the policy made.", 8),
         ("App::PropertyFloat", "Return", "Result", "Sum of the cuts' rewards.", 8),
         ("App::PropertyString", "Status", "Result", "Summary of the last decomposition.", 8),
@@ -97,22 +108,38 @@ class AutoBlockFeature:
             raise
         self.last_complete = result.complete
         obj.Shape = result.shape
-        obj.NumberOfBlocks = result.n_blocks
-        obj.MinimumBlocks = result.min_blocks
+        obj.NumberOfBlocks = result.n_blocks + (result.n_templates if result.general else 0)
+        obj.MinimumBlocks = result.min_blocks or 0
         obj.NumberOfCuts = len(result.cuts)
         obj.Return = result.ret
         obj.Status = "{}: {}".format(result.policy, result.summary())
         obj.RewardUsed = result.reward
-        obj.CutSequence = result.cut_sequence()
+        sequence = json.loads(result.cut_sequence())
+        sequence["settings"] = self.settings(obj)
+        obj.CutSequence = json.dumps(sequence)
 
     @staticmethod
-    def decompose(obj):
+    def settings(obj):
+        """What a decomposition of the object depends on besides its source face."""
+        return {"policy": obj.PolicyFile or obj.Policy, "reward": obj.RewardPreset, "seed": obj.Seed,
+                "time_limit": obj.TimeLimit}
+
+    @classmethod
+    def decompose(cls, obj):
         if not obj.Source:
             raise ValueError("{}: no source face (set Source)".format(obj.Label))
         source, subs = obj.Source
-        policy = obj.PolicyFile or obj.Policy
-        return console.decompose((source, list(subs)), policy=policy, reward=obj.RewardPreset, seed=obj.Seed,
-                                 time_limit=obj.TimeLimit)
+        # A face with edges at other angles whose stored cut sequence was made with the same settings on the same
+        # face (e.g. a reopened document) is replayed, not searched again: the general engine's search has a time
+        # budget, so searching again could give other blocks.
+        stored = json.loads(obj.CutSequence) if obj.CutSequence else {}
+        if stored.get("engine") == "general" and stored.get("settings") == cls.settings(obj):
+            try:
+                return console.replay((source, list(subs)), stored)
+            except ValueError:
+                pass  # another face (the source changed): decompose it
+        return console.decompose((source, list(subs)), policy=obj.PolicyFile or obj.Policy, reward=obj.RewardPreset,
+                                 seed=obj.Seed, time_limit=obj.TimeLimit)
 
     def __getstate__(self):
         return None
@@ -129,7 +156,8 @@ def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, s
     faces) and compute it. policy: a name or policy file (None: the preferred default, auto unless set);
     reward: a preset, "" for the policy's own (None: the preferred one, "" unless set); mesh_size (None: the
     preferred one); mesh: also make its FEM mesh object (fem_mesh.py) of the blocks (None: when the
-    decomposition is complete, which meshing needs; True: required; False: no).
+    decomposition is complete, which meshing needs, and the face rectilinear: faces with edges at
+    other angles are not meshed in the workbench yet; True: required; False: no).
 
     One undoable transaction ("Auto-Block"), or part of the caller's when one is open. Raises ValueError for an
     unsupported face or a bad option, and then the document is left unchanged.
@@ -139,7 +167,10 @@ def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, s
     if not hasattr(source, "Document"):
         raise TypeError("make_autoblock needs a document object, got {}".format(type(source).__name__))
     # Check before touching the document.
-    console.check_face(source, sub)
+    figures = console.check_face(source, sub)
+    if figures.get("general") and mesh:
+        raise ValueError("{}: meshing faces with edges at other angles is not yet in the workbench (decomposing "
+                         "them is): use mesh=False".format(source.Label))
     spec = policy or preferences.default_policy()
     module = native.load()
     names = list(module.policy_names())
@@ -175,7 +206,8 @@ def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, s
                 raise error
             if not obj.isValid():
                 raise RuntimeError("{}: recompute failed ({})".format(obj.Label, ", ".join(obj.State)))
-            if mesh or (mesh is None and native.has("meshing") and obj.Proxy.last_complete):
+            meshable = native.has("meshing") and obj.Proxy.last_complete and not figures.get("general")
+            if mesh or (mesh is None and meshable):
                 from .fem_mesh import make_mesh_object
 
                 try:
@@ -208,8 +240,7 @@ def stepper_of(obj):
     # The source may have changed without a recompute yet (FreeCAD marks dependents only when recomputing).
     if not console.same_face(data.get("face"), local):
         raise out_of_date
-    cuts = [(int(c[0]), float(c[1]), float(c[2]), str(c[3])) for c in data["cuts"]]
     from ..stepping import Stepper
 
-    return Stepper(local.exportBrepToString(), frame, cuts, int(data.get("max_steps", 0)), label,
-                   obj.PolicyFile or obj.Policy, console.sequence_reward(data))
+    return Stepper(local.exportBrepToString(), frame, console.sequence_specs(data), int(data.get("max_steps", 0)),
+                   label, obj.PolicyFile or obj.Policy, console.sequence_reward(data))

@@ -2,8 +2,10 @@
 the document), removed when the panel closes.
 
 It draws the pieces at a step (blocks in their final colours, parts still to cut in grey, the part
-being cut highlighted), the outlines, the current part's vertices, the chosen vertex, the cut line,
-and, when a learned policy gives them, value scores at the vertices.
+being cut highlighted), the outlines, the current part's vertices, the chosen vertex, the cut line
+(on a face with edges at other angles: the cut's chords at any angle, a partial cut ending where it
+meets the boundary, and its origin ringed in red also when it lies on an edge), and, when a learned
+policy gives them, value scores at the vertices.
 
 The vertex marks are screen-space images (SoImage): a disc in the score's colour with a dark outline, the
 score as white text on a dark label, and a red ring around the chosen vertex. They keep their size in
@@ -210,6 +212,8 @@ class StepScene:
                 marks.addChild(self._badge(point, VERTEX_COLOUR, "", True, lift * 3))
             else:
                 marks.addChild(self._markers([point], VERTEX_COLOUR, _marker("CIRCLE_FILLED", 7), lift * 3))
+        if cut.chosen < 0 and cut.vertex is not None:  # a general cut from a point on an edge
+            marks.addChild(self._badge(cut.vertex, VERTEX_COLOUR, "", True, lift * 3))
         self.content.addChild(marks)
 
 

@@ -151,7 +151,7 @@ class StepThroughPanel:
         """What the panel says about where it is: 'Step 0 of 3: no cut made yet; in red: cut 1', ...,
         'Step 3 of 3: all 3 cuts made, complete'."""
         if steps == 0:
-            return "The face is a rectangle: no cut needed"
+            return "The face is a block already: no cut needed"
         if step < steps:
             made = "no cut made yet" if step == 0 else text.counted(step, "cut") + " made"
             return "Step {} of {}: {}; in red: cut {}".format(step, steps, made, step + 1)
@@ -161,7 +161,7 @@ class StepThroughPanel:
     def update_labels(self, view):
         f = self.form
         queued = sum(1 for p in view.pieces if not p.block)
-        tolerance = text.tolerance_of(view.size)
+        tolerance = view.tolerance
         f.positionLabel.setText(self.position_text(view.step, view.steps, view.status))
         if view.next is None:
             for label in (f.partLabel, f.vertexLabel, f.directionLabel, f.rewardLabel):
@@ -174,8 +174,15 @@ class StepThroughPanel:
             return
         cut = view.next
         f.partLabel.setText("#{} ({})".format(cut.part, text.counted(len(cut.vertices), "corner")))
-        f.vertexLabel.setText(text.vector(cut.vertex, tolerance))
-        if cut.n_parts == 1:
+        if cut.vertex is None:  # a general face's template: no cut line
+            f.vertexLabel.setText("-")
+        elif cut.kind not in ("axis", None) and cut.chosen < 0:
+            f.vertexLabel.setText("{} (on an edge)".format(text.vector(cut.vertex, tolerance)))
+        else:
+            f.vertexLabel.setText(text.vector(cut.vertex, tolerance))
+        if cut.kind == "template":
+            f.directionLabel.setText(cut.direction)
+        elif cut.n_parts == 1:
             f.directionLabel.setText("{}, along the boundary: nothing cut".format(cut.direction))
         else:
             f.directionLabel.setText("{}, leaves {}".format(cut.direction, text.counted(cut.n_parts, "piece")))

@@ -40,11 +40,29 @@ std::unique_ptr<RegionPolicy> general_policy(const std::string& name, const Poli
                    "this face has edges at other angles: use one of " + list);
 }
 
+RegionEpisodeOptions general_options(const InputFace& face, const std::string& what, int max_steps, RewardPreset reward) {
+  if (!face.is_general()) {
+    throw InputError(face.source + ": " + what + ": this face's edges run along two perpendicular directions, so its "
+                     "cuts are given by vertex and axis, not by origin and direction");
+  }
+  RegionEpisodeOptions options;
+  options.max_steps = max_steps;
+  options.reward = reward;
+  return options;
+}
+
 // The faces in the model's coordinates.
 std::vector<TopoDS_Face> to_model(std::vector<TopoDS_Face> faces, const Placement& frame) {
   if (frame.identity()) return faces;
   for (TopoDS_Face& f : faces) f = TopoDS::Face(shape_to_model(f, frame));
   return faces;
+}
+
+// Sets result's block faces (blocks, cut by OpenCASCADE in the face's frame) and their conformal merge.
+void set_block_faces(FaceDecomposition& result, std::vector<TopoDS_Face> blocks) {
+  const InputFace& face = result.face;
+  result.block_faces = to_model(std::move(blocks), face.frame);
+  result.shape = conformal_merge(result.block_faces, face.is_general() ? face.region.quantum() : 0.0).compound;
 }
 
 }  // namespace
@@ -78,10 +96,7 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
     result.decomposition = decompose_face(face.grid, *policy, options);
     if (settings.occt_blocks) blocks = replay_cuts_occt(face.occt, face.grid, result.decomposition.cuts, options);
   }
-  if (settings.occt_blocks) {
-    result.block_faces = to_model(blocks, face.frame);
-    result.shape = conformal_merge(result.block_faces, face.is_general() ? face.region.quantum() : 0.0).compound;
-  }
+  if (settings.occt_blocks) set_block_faces(result, std::move(blocks));
   return result;
 }
 
@@ -92,6 +107,28 @@ EpisodeSnapshot face_step(const InputFace& face, const std::vector<CutSpec>& cut
   options.max_steps = max_steps;
   options.reward = reward;
   return episode_snapshot(face.grid, cuts, step, options);
+}
+
+RegionSnapshot face_step_general(const InputFace& face, const std::vector<RegionActionSpec>& actions, int step,
+                                 int max_steps, RewardPreset reward) {
+  const RegionEpisodeOptions options = general_options(face, "stepping through a general sequence", max_steps, reward);
+  const auto lock = lock_general_engine();
+  return region_snapshot(face.region, actions, step, options);
+}
+
+FaceDecomposition face_replay_general(const InputFace& face, const std::vector<RegionActionSpec>& actions,
+                                      int max_steps, RewardPreset reward, const std::string& policy, bool occt_blocks) {
+  const RegionEpisodeOptions options = general_options(face, "replaying a general sequence", max_steps, reward);
+  FaceDecomposition result;
+  result.face = face;
+  std::vector<TopoDS_Face> blocks;
+  {
+    const auto lock = lock_general_engine();
+    result.region = replay_region_decomposition(face.region, actions, options, policy);
+    if (occt_blocks) blocks = replay_region_cuts_occt(face.occt, face.region, result.region, options);
+  }
+  if (occt_blocks) set_block_faces(result, std::move(blocks));
+  return result;
 }
 
 std::vector<double> face_vertex_scores(const InputFace& face, const std::vector<CutSpec>& cuts, int step,

@@ -16,6 +16,7 @@
 #include "core/io/input_face.h"
 #include "core/mesh/mesh_pipeline.h"
 #include "core/region/region_policy.h"
+#include "core/region/region_snapshot.h"
 
 namespace autoblock {
 
@@ -69,6 +70,25 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
 //          out of range or the cuts do not belong to the face.
 EpisodeSnapshot face_step(const InputFace& face, const std::vector<CutSpec>& cuts, int step, int max_steps = 0,
                           RewardPreset reward = RewardPreset::Paper);
+
+// face_step for a general face (face.is_general()): actions, its decomposition's sequence by position
+// (region_action_specs of FaceDecomposition::region.cuts, in the face's frame); reward, the preset it
+// was scored with (RegionDecomposition::reward).
+// Outputs: the episode at that step (see region_snapshot.h). Throws InputError when the face is
+//          rectilinear (its cuts are CutSpecs), the step is out of range or an action does not belong
+//          to the face.
+RegionSnapshot face_step_general(const InputFace& face, const std::vector<RegionActionSpec>& actions, int step,
+                                 int max_steps = 0, RewardPreset reward = RewardPreset::Paper);
+
+// Inputs:  face, a general face; actions, a whole sequence of it (as a report or a saved document
+//          holds it); max_steps and reward as it was made; policy, the name the result reports;
+//          occt_blocks, as DecomposeSettings::occt_blocks.
+// Outputs: the decomposition the sequence makes (region; block_faces and shape as decompose_input_face
+//          gives them), without searching again. Throws InputError as face_step_general does, or when
+//          the sequence leaves parts unfinished.
+FaceDecomposition face_replay_general(const InputFace& face, const std::vector<RegionActionSpec>& actions,
+                                      int max_steps, RewardPreset reward, const std::string& policy = "replay",
+                                      bool occt_blocks = true);
 
 // Inputs:  face, cuts, step, max_steps and reward as for face_step; policy, a name of policy_names()
 //          or a policy file (empty: the default).

@@ -99,12 +99,14 @@ nlohmann::json region_decomposition_json(const std::string& input, const InputFa
   }
   report["cuts"] = nlohmann::json::array();
   for (const RegionCutRecord& c : d.cuts) {
-    nlohmann::json cut{{"part", c.part_id}, {"kind", action_kind_name(c.action)}, {"n_parts", c.n_parts}, {"reward", c.reward}};
+    nlohmann::json cut{{"part", c.part_id}, {"kind", action_kind_name(c.action)}, {"n_parts", c.n_parts}, {"reward", c.reward},
+                       {"children", c.children}};
     if (c.action.kind == RegionAction::Kind::Cut) {
       const RegionCut& rc = c.action.cut;
       cut["origin"] = point_json(rc.origin.x, rc.origin.y);
       cut["direction"] = point_json(rc.direction.x, rc.direction.y);
       cut["angle_degrees"] = std::atan2(rc.direction.y, rc.direction.x) * 180.0 / M_PI;
+      cut["forced"] = rc.forced;  // taken by the engine's last resort (region_cut.h): a replay needs it
       cut["chords"] = nlohmann::json::array();
       for (const Chord& chord : c.chords) cut["chords"].push_back({point_json(chord.a.x, chord.a.y), point_json(chord.b.x, chord.b.y)});
     }

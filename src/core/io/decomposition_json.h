@@ -23,10 +23,11 @@ nlohmann::json decomposition_json(const std::string& input, const PlanarFace& fa
 // Inputs:  input, the file name; face, the checked face; decomposition, the general engine's.
 // Outputs: {"input", "engine": "general", "policy", "reward", "blocks": [{"outline": [[x,y], ...]
 //          counter-clockwise, "corners": [i,j,k,l] (indices into outline; empty for a template),
-//          "template": bool}, ...], "cuts": [{"part", "kind" (full, partial, template), "origin":
-//          [x,y], "direction": [dx,dy], "angle_degrees", "n_parts", "reward", "chords": [[[x,y],[x,y]],
-//          ...]}], "return", "n_blocks", "n_templates", "complete", "truncated", "status", "time_capped",
-//          "steps", "policy_steps", "seconds", "unfinished" (loops of parts left), "face"}.
+//          "template": bool}, ...], "cuts": [{"part", "kind" (full, partial, template), "n_parts",
+//          "reward", "children" (the pieces' ids), and for a cut "origin": [x,y], "direction": [dx,dy],
+//          "angle_degrees", "forced", "chords": [[[x,y],[x,y]], ...]}], "return", "n_blocks",
+//          "n_templates", "complete", "truncated", "status", "time_capped", "steps", "policy_steps",
+//          "seconds", "unfinished" (loops of parts left), "face"}.
 //          Coordinates are the face's frame's (see "frame").
 nlohmann::json region_decomposition_json(const std::string& input, const InputFace& face,
                                          const RegionDecomposition& decomposition);

@@ -10,7 +10,6 @@
 #include <gp_Trsf.hxx>
 
 #include <cmath>
-#include <random>
 #include <vector>
 
 #include "core/api/face_actions.h"
@@ -54,12 +53,7 @@ double box_distance(const TopoDS_Shape& a, const TopoDS_Shape& b) {
 }
 
 TopoDS_Face general_face(std::uint64_t seed, GeneralKind kind, bool holes) {
-  std::mt19937_64 rng(seed);
-  GeneralOptions options;
-  options.kind = kind;
-  options.holes = holes;
-  const GeneralShape shape = generate_general_shape(rng, options);
-  return occt_face_from_polygon(RectilinearPolygon{shape.outer, shape.holes}, 0.0, true);
+  return occt_face_from_polygon(test::general_polygon(seed, kind, holes), 0.0, true);
 }
 
 }  // namespace

@@ -28,6 +28,15 @@ std::vector<GeneratedShape> generated_shapes(int count, std::uint64_t seed, cons
   return shapes;
 }
 
+RectilinearPolygon general_polygon(std::uint64_t seed, GeneralKind kind, bool holes) {
+  std::mt19937_64 rng(seed);
+  GeneralOptions options;
+  options.kind = kind;
+  options.holes = holes;
+  const GeneralShape shape = generate_general_shape(rng, options);
+  return RectilinearPolygon{shape.outer, shape.holes};
+}
+
 std::string temporary_folder(const std::string& name) {
   namespace fs = std::filesystem;
   std::random_device random;

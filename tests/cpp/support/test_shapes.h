@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/data/general_generator.h"
 #include "core/data/shape_generator.h"
 #include "core/geometry/grid_face.h"
 #include "core/geometry/rectilinear_polygon.h"
@@ -23,6 +24,9 @@ Ring centre_hole();
 
 // Inputs: count, seed, options. Output: that many generated shapes.
 std::vector<GeneratedShape> generated_shapes(int count, std::uint64_t seed, const GeneratorOptions& options);
+
+// Inputs: seed, kind, holes. Output: one generated general shape (general_generator.h) as a polygon.
+RectilinearPolygon general_polygon(std::uint64_t seed, GeneralKind kind, bool holes);
 
 // A fresh empty temporary folder, removed by nobody (the system's temp cleaner does it).
 std::string temporary_folder(const std::string& name);
