@@ -374,7 +374,8 @@ class MeshResult:
     nodes: list of FreeCAD.Vector (global coordinates); quads: list of (a, b, c, d), 0-based node indices,
     counter-clockwise seen from +Z of the face's own frame; quad_block: the block (0-based, in the order set aside) of every
     quad; n_blocks; target_size: the element size aimed at; quality: dict (min_scaled_jacobian,
-    mean_scaled_jacobian, max_aspect_ratio, max_skew, min_angle, max_angle, irregular_interior_vertices);
+    mean_scaled_jacobian, max_aspect_ratio, max_skew, min_angle, max_angle, irregular_interior_vertices, bound: the
+    best minimum scaled Jacobian any all-quad mesh of the face can have, 1 for a rectilinear face);
     conformal (the core's independent check); decomposition: the DecompositionResult meshed.
     """
 

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/api/face_actions.h"
+#include "core/api/face_meshing.h"
 #include "core/api/training_job.h"
 #include "core/baselines/min_rectangles.h"
 #include "core/common/error.h"
@@ -436,22 +437,19 @@ py::dict mesh_py(const std::string& brep, const py::object& cuts, double size, i
   const Sequence sequence = sequence_of(cuts);
   const MeshPlacement where = placement_of(placement);
   if (!out.empty() && !is_mesh_file_name(out)) throw InputError(out + ": expected a .msh, .vtu or .inp file");
-  FaceMesh result;
+  MeshResult result;
   {
     py::gil_scoped_release release;
     MeshOptions options;
     options.size = size;
     const InputFace face = face_of(brep, source);
-    if (face.is_general()) {
-      throw InputError(face.source + ": meshing faces with edges at other angles is not yet in the workbench "
-                       "(decomposing them is)");
-    }
     sequence.check_for(face);
-    result = face_mesh(face, sequence.grid, max_steps, preset, options);
-    if (!out.empty()) write_mesh_file(out, result.result.mesh, where);
+    result = face.is_general() ? face_mesh_general(face, sequence.region, max_steps, preset, options).result
+                               : face_mesh(face, sequence.grid, max_steps, preset, options).result;
+    if (!out.empty()) write_mesh_file(out, result.mesh, where);
   }
-  const QuadMesh& mesh = result.result.mesh;
-  const MeshQuality& q = result.result.quality;
+  const QuadMesh& mesh = result.mesh;
+  const MeshQuality& q = result.quality;
   py::dict d;
   py::list nodes;
   for (const Point2& p : mesh.nodes) nodes.append(py::make_tuple(p.x, p.y, mesh.z));
@@ -461,9 +459,9 @@ py::dict mesh_py(const std::string& brep, const py::object& cuts, double size, i
   d["quads"] = quads;
   d["quad_block"] = mesh.quad_block;
   d["blocks"] = mesh.blocks;
-  d["target_size"] = result.result.intervals.target_size;
-  d["default_size"] = result.result.default_size;
-  d["max_relative_deviation"] = result.result.intervals.max_relative_deviation;
+  d["target_size"] = result.intervals.target_size;
+  d["default_size"] = result.default_size;
+  d["max_relative_deviation"] = result.intervals.max_relative_deviation;
   py::dict quality;
   quality["min_scaled_jacobian"] = q.min_scaled_jacobian;
   quality["mean_scaled_jacobian"] = q.mean_scaled_jacobian;
@@ -472,8 +470,9 @@ py::dict mesh_py(const std::string& brep, const py::object& cuts, double size, i
   quality["min_angle"] = q.min_angle;
   quality["max_angle"] = q.max_angle;
   quality["irregular_interior_vertices"] = q.irregular_interior_nodes;
+  quality["bound"] = result.bound;  // the face's scaled-Jacobian bound (1 for a rectilinear face)
   d["quality"] = quality;
-  d["conformal"] = result.result.conformity.conformal;
+  d["conformal"] = result.conformity.conformal;
   d["file"] = out;
   return d;
 }

@@ -695,7 +695,7 @@ def add_chamfered_pad(doc):
 
 class TestGeneralFaces(unittest.TestCase):
     """Faces with edges at any angle (the core's general engine) in the workbench: decompose, step through,
-    the parametric object (undo, save and reopen), write-back; meshing them says it is not there yet."""
+    the parametric object (undo, save and reopen), write-back, and their quad meshes."""
 
     def setUp(self):
         self.doc = support.new_document("general")
@@ -818,11 +818,18 @@ class TestGeneralFaces(unittest.TestCase):
         bad = Stepper(stepper.local_brep, stepper.frame, [tuple(spec)], stepper.max_steps, "bad", "greedy")
         with self.assertRaisesRegex(ValueError, "does not belong to this face"):
             bad.step(1)
-        # No learned policy on general faces yet, and no mesher in the workbench yet: clear ValueErrors.
+        # No learned policy on general faces yet: a clear ValueError.
         with self.assertRaisesRegex(ValueError, "edges at other angles"):
             AutoBlock.decompose(sketch, policy="sac-mesh")
-        with self.assertRaisesRegex(ValueError, "not yet in the workbench"):
-            AutoBlock.mesh(result)
+        # The blocks meshed with quads (the general mesher: block model, intervals, transfinite, smoothing):
+        # conformal by the core's check, every quad counter-clockwise in the face's plane, areas adding up.
+        mesh = AutoBlock.mesh(result)
+        self.assertTrue(mesh.conformal)
+        self.assertGreater(len(mesh.quads), len(result.blocks))
+        self.assertGreater(mesh.quality["min_scaled_jacobian"], 0.0)
+        self.assertLessEqual(mesh.quality["bound"], 1.0)
+        area = sum(Part.Face(Part.makePolygon([mesh.nodes[i] for i in q] + [mesh.nodes[q[0]]])).Area for q in mesh.quads)
+        self.assertAlmostEqual(area, whole, delta=1e-6 * whole)
 
     def test_a_chamfered_box_gets_its_top_face_split_into_the_blocks_in_place(self):
         # Part's chamfer on a box (a plain Part feature holding the solid): write-back "replace" splits its top face.
@@ -916,16 +923,12 @@ class TestGeneralFaces(unittest.TestCase):
         self.assertGreater(obj.NumberOfCuts, 0)
         self.assertIn("greedy: ", obj.Status)
         self.assertEqual(json.loads(obj.CutSequence)["engine"], "general")
-        # No FEM mesh object for a general face (the mesher is not in the workbench yet), and asking is a ValueError
-        # that leaves the document unchanged.
-        self.assertFalse([o for o in self.doc.Objects if is_autoblock_mesh(o)])
-        names = [o.Name for o in self.doc.Objects]
-        with self.assertRaisesRegex(ValueError, "not yet in the workbench"):
-            AutoBlock.mesh(obj)
-        self.assertEqual([o.Name for o in self.doc.Objects], names)
-        with self.assertRaisesRegex(ValueError, "not yet in the workbench"):
-            AutoBlock.make_autoblock(body, "Chamfer." + top_name, mesh=True)
-        self.assertEqual([o.Name for o in self.doc.Objects], names)
+        # Its FEM mesh object, made with it in the same transaction: the general mesher's quads cover the face.
+        meshes = [o for o in self.doc.Objects if is_autoblock_mesh(o)]
+        self.assertEqual(len(meshes), 1)
+        self.assertIs(AutoBlock.mesh(obj), meshes[0])
+        self.assertGreater(meshes[0].FemMesh.QuadrangleCount, obj.NumberOfBlocks)
+        self.assertEqual(meshes[0].FemMesh.TriangleCount, 0)
         # Undo and redo.
         name = obj.Name
         self.doc.undo()

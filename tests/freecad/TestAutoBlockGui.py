@@ -403,16 +403,15 @@ class TestExportMeshCommand(GuiTestCase):
             self.assertEqual(len(dialogs.seen), 1)
             self.assertIn(".msh, .vtu or .inp", dialogs.seen[0][1])
             self.assertFalse(os.path.exists(bad))
-            # A face with edges at other angles: no mesher in the workbench yet; a dialog says so before any
-            # file name is asked for.
+            # A face with edges at other angles: meshed by the general mesher and exported the same way.
             general = self.auto_block(support.add_slanted_sketch(self.doc))[-1]
             FreeCADGui.Selection.clearSelection()
             FreeCADGui.Selection.addSelection(general)
-            asked = []
-            dialogs = self.export_answering(lambda obj: asked.append(obj) or bad)
-            self.assertEqual(asked, [])
-            self.assertEqual(len(dialogs.seen), 1)
-            self.assertIn("not yet in the workbench", dialogs.seen[0][1])
+            slanted = os.path.join(folder, "slanted.vtu")
+            dialogs = self.export_answering(lambda obj: slanted)
+            self.assertEqual(dialogs.seen, [])
+            with open(slanted) as f:
+                self.assertIn("VTKFile", f.read())
         finally:
             support.remove_folder(folder)
 
@@ -575,7 +574,7 @@ class TestStepThroughPanel(GuiTestCase):
         sketch = support.add_slanted_sketch(self.doc)
         pump()
         obj = self.auto_block(sketch)[0]  # a face with edges at other angles: the general engine
-        self.assertEqual(mesh_objects_of(obj), [])  # no mesher for such faces in the workbench yet
+        self.assertEqual(len(mesh_objects_of(obj)), 1)  # its quad mesh, as for any face
         self.assertGreater(obj.NumberOfCuts, 1)
         top_view()
         before = ([o.Name for o in self.doc.Objects], self.doc.UndoCount, obj.Shape.exportBrepToString())

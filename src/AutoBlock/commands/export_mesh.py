@@ -53,11 +53,6 @@ class ExportMeshCommand(BaseCommand):
         from ..gui_utils import echo, object_ref
 
         obj = selected_meshables()[0]
-        from ..objects.autoblock_feature import is_general
-
-        if is_general(obj):  # say so before asking for a file name
-            raise ValueError("{}: meshing faces with edges at other angles is not yet in the workbench (decomposing "
-                             "them is; Write back gives their blocks)".format(obj.Label))
         path = self.choose_path(obj)
         if not path:
             return

@@ -22,16 +22,6 @@ def is_autoblock(obj):
     return getattr(getattr(obj, "Proxy", None), "Type", None) == TYPE
 
 
-def is_general(obj):
-    """True for an AutoBlock object whose last decomposition was of a face with edges at other angles."""
-    if not is_autoblock(obj) or not obj.CutSequence:
-        return False
-    try:
-        return json.loads(obj.CutSequence).get("engine") == "general"
-    except ValueError:
-        return False
-
-
 class AutoBlockFeature:
     Type = TYPE
 
@@ -156,8 +146,7 @@ def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, s
     faces) and compute it. policy: a name or policy file (None: the preferred default, auto unless set);
     reward: a preset, "" for the policy's own (None: the preferred one, "" unless set); mesh_size (None: the
     preferred one); mesh: also make its FEM mesh object (fem_mesh.py) of the blocks (None: when the
-    decomposition is complete, which meshing needs, and the face rectilinear: faces with edges at
-    other angles are not meshed in the workbench yet; True: required; False: no).
+    decomposition is complete, which meshing needs; True: required; False: no).
 
     One undoable transaction ("Auto-Block"), or part of the caller's when one is open. Raises ValueError for an
     unsupported face or a bad option, and then the document is left unchanged.
@@ -167,10 +156,7 @@ def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, s
     if not hasattr(source, "Document"):
         raise TypeError("make_autoblock needs a document object, got {}".format(type(source).__name__))
     # Check before touching the document.
-    figures = console.check_face(source, sub)
-    if figures.get("general") and mesh:
-        raise ValueError("{}: meshing faces with edges at other angles is not yet in the workbench (decomposing "
-                         "them is): use mesh=False".format(source.Label))
+    console.check_face(source, sub)
     spec = policy or preferences.default_policy()
     module = native.load()
     names = list(module.policy_names())
@@ -206,7 +192,7 @@ def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, s
                 raise error
             if not obj.isValid():
                 raise RuntimeError("{}: recompute failed ({})".format(obj.Label, ", ".join(obj.State)))
-            meshable = native.has("meshing") and obj.Proxy.last_complete and not figures.get("general")
+            meshable = native.has("meshing") and obj.Proxy.last_complete
             if mesh or (mesh is None and meshable):
                 from .fem_mesh import make_mesh_object
 

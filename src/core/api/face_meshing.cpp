@@ -1,6 +1,8 @@
 #include "core/api/face_meshing.h"
 
 #include <chrono>
+#include <stdexcept>
+#include <cstdlib>
 
 #include "core/mesh/mesh_picture.h"
 #include "core/mesh/mesh_report.h"
@@ -24,6 +26,21 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
     options.episode.max_steps = settings.max_steps;
     options.episode.reward = d.reward;
     out.result = mesh_decomposition(face, d, options);
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+FaceMeshing face_mesh_general(const InputFace& face, const std::vector<RegionActionSpec>& actions, int max_steps,
+                              RewardPreset reward, MeshOptions options) {
+  const auto start = std::chrono::steady_clock::now();
+  FaceMeshing out;
+  out.decomposition = face_replay_general(face, actions, max_steps, reward, "replay", false);
+  options.general.max_steps = max_steps;
+  options.general.reward = reward;
+  out.result = mesh_region_decomposition(face, out.decomposition.region, options);
+  if (!out.result.conformity.conformal) {
+    throw std::runtime_error("the mesh failed the conformity check: " + out.result.conformity.problem);
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -31,6 +32,15 @@ struct FaceMeshing {
 //          reports it: FaceMeshing::result.conformity).
 // Throws InputError for a bad policy, reward or request (see decompose_input_face, mesh_decomposition).
 FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& settings, MeshOptions options);
+
+// Inputs:  face, a general face; actions, a whole cut sequence of it (as the workbench stores it, see
+//          face_replay_general); max_steps and reward as it was made; options (size, fixed intervals,
+//          smoothing).
+// Outputs: its decomposition (replayed, not searched again) and mesh. Throws InputError as
+//          face_replay_general does or when the request is infeasible; std::runtime_error when the
+//          mesh fails the conformity check.
+FaceMeshing face_mesh_general(const InputFace& face, const std::vector<RegionActionSpec>& actions, int max_steps,
+                              RewardPreset reward, MeshOptions options);
 
 // Inputs: input, the file name; meshing. Output: the JSON report (mesh_report.h).
 nlohmann::json face_meshing_json(const std::string& input, const FaceMeshing& meshing);
