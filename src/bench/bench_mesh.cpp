@@ -47,6 +47,7 @@
 #include "core/io/input_face.h"
 #include "core/io/shape_file.h"
 #include "core/io/text_file.h"
+#include "core/mesh/block_model.h"
 #include "core/mesh/mesh_conformity.h"
 #include "core/mesh/mesh_pipeline.h"
 #include "core/mesh/mesh_quality.h"
@@ -290,13 +291,23 @@ void run_set(const std::string& title, int count, int min_rects, int max_rects, 
 // `autoblock mesh` on a general face, as a user runs it (the whole process), its figures from --json.
 Sample cli_sample(const Face& f, const std::string& autoblock, const std::string& folder, int k) {
   const std::string json = folder + "/report" + std::to_string(k) + ".json";
-  const std::string command = "'" + autoblock + "' mesh '" + f.brep + "' --json '" + json + "' > /dev/null 2>&1";
+  const std::string err = folder + "/error" + std::to_string(k) + ".txt";
+  const std::string command = "'" + autoblock + "' mesh '" + f.brep + "' --json '" + json + "' > /dev/null 2> '" + err + "'";
   const auto start = std::chrono::steady_clock::now();
   const int status = std::system(command.c_str());
   Sample s;
   s.process_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (status != 0) {
     s.quads = -1;
+    // Kept for whoever reads the table: the face and what autoblock said.
+    const std::string kept = (std::filesystem::temp_directory_path() / "autoblock-bench-failures").string();
+    std::filesystem::create_directories(kept);
+    const std::string name = std::filesystem::path(f.brep).stem().string() + "-" + std::to_string(std::random_device{}());
+    std::filesystem::copy_file(f.brep, kept + "/" + name + ".brep", std::filesystem::copy_options::overwrite_existing);
+    std::ifstream said(err);
+    std::stringstream text;
+    text << said.rdbuf();
+    std::printf("<!-- autoblock mesh failed on %s/%s.brep: %s -->\n", kept.c_str(), name.c_str(), text.str().c_str());
     return s;
   }
   std::ifstream in(json);
@@ -359,7 +370,7 @@ void run_general_set(const std::string& title, const std::vector<GeneralOptions>
     if (f.face.is_general()) {
       f.loops.push_back(f.face.region.outer());
       f.loops.insert(f.loops.end(), f.face.region.holes().begin(), f.face.region.holes().end());
-      f.tolerance = 2.0 * f.face.region.quantum();
+      f.tolerance = kModelToleranceQuanta * f.face.region.quantum();
     }
     faces.push_back(std::move(f));
   }

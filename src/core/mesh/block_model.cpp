@@ -69,8 +69,8 @@ BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, do
   if (!(quantum > 0.0)) throw std::logic_error("block_model: the quantum must be positive");
   BlockModel model;
   model.parts = static_cast<int>(d.finished.size());
-  const double tolerance = 1.5 * quantum;
-  VertexIndex index(&model.vertices, tolerance);
+  VertexIndex index(&model.vertices, 1.5 * quantum);
+  const double tolerance = kModelToleranceQuanta * quantum;
 
   // The pieces, their loops as vertex ids.
   std::vector<LoopPiece> pieces;

@@ -4,7 +4,8 @@
 // one piece per corner around its centroid). The model joins them: every piece's corners and side
 // vertices, the template midpoints and centroids, are model vertices, shared by position (within
 // 1.5 times the face's quantum, the tolerance of the general engine's lattice); a vertex of one
-// piece on the side of another (a T-junction) is imprinted into that side. Between consecutive
+// piece within kModelToleranceQuanta quanta of the side of another (a T-junction) is imprinted into
+// that side. Between consecutive
 // vertices of a piece's loop lies a model edge, a straight segment shared by the one or two pieces
 // it bounds. Each piece's four logical sides are the chains of model edges between its corners.
 // Interval assignment gives every model edge a count (edge_intervals.h); the mesh puts that many
@@ -20,6 +21,12 @@
 #include "core/region/region_policy.h"
 
 namespace autoblock {
+
+// How far, in quanta of the face's lattice, a model vertex may lie off a piece's side and still be on
+// it: cut ends are rounded to the lattice (half a quantum in each coordinate), and so are the side's
+// own ends, so a point of a side may sit about two quanta off the chord of its rounded ends (measured:
+// 2.2 quanta on a face with a hole). The mesh's conformity is checked to the same tolerance.
+constexpr double kModelToleranceQuanta = 3.0;
 
 struct ModelEdge {
   int a = 0, b = 0;  // vertex ids; the edge runs from a to b

@@ -119,7 +119,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   result.default_size = !(options.size > 0);
   const double h = target_size_for(face, options.size);
   const double q = face.region.quantum();
-  const double tolerance = std::max({face.planar.tolerance, 2.0 * q, 1e-9 * face.region.bbox().longer_side()});
+  const double tolerance = std::max({face.planar.tolerance, kModelToleranceQuanta * q, 1e-9 * face.region.bbox().longer_side()});
   std::vector<Ring> loops{face.region.outer()};
   loops.insert(loops.end(), face.region.holes().begin(), face.region.holes().end());
   result.bound = scaled_jacobian_bound(loops);

@@ -67,7 +67,7 @@ MeshResult mesh_decomposition(const InputFace& face, const Decomposition& decomp
 // Inputs:  face, a general face; decomposition of face.region (complete), made with options.general;
 //          options.
 // Outputs: everything above (layout empty; block_model, and fixed counts over its edges). Nodes lie
-//          on the face's lattice (within its quantum), and conformity is checked to that tolerance.
+//          on the face's lattice (within its quantum), and conformity is checked to kModelToleranceQuanta quanta.
 // Throws as mesh_decomposition.
 MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecomposition& decomposition,
                                      const MeshOptions& options = {});

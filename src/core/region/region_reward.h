@@ -21,7 +21,7 @@
 
 namespace autoblock {
 
-constexpr double kMeshShapeWeight = 2.0;
+constexpr double kMeshShapeWeight = 6.0;
 constexpr double kTemplatePenalty = 2.0;
 
 // Inputs:  preset; outcome, what the cut left (the part itself when N = 1) and its chords;

@@ -39,7 +39,7 @@ TEST_CASE("block mesh: a parallelogram block gives equal parallelograms of its a
   CHECK(q.min_scaled_jacobian == Approx(std::sin(M_PI / 3.0)));
   CHECK(q.mean_scaled_jacobian == Approx(std::sin(M_PI / 3.0)));
   CHECK(q.irregular_interior_nodes == 0);
-  const Conformity c = check_conformity(mesh, std::vector<Ring>{f.region.outer()}, 2 * kQ);
+  const Conformity c = check_conformity(mesh, std::vector<Ring>{f.region.outer()}, kModelToleranceQuanta * kQ);
   CHECK(c.conformal);
   CHECK(c.quad_area == Approx(4.0 * h));
 }
@@ -63,7 +63,7 @@ TEST_CASE("block mesh: general decompositions with holes mesh conformally, templ
     const QuadMesh mesh = block_model_mesh(m, a.intervals, 0.0);
     std::vector<Ring> loops{face.outer()};
     loops.insert(loops.end(), face.holes().begin(), face.holes().end());
-    const Conformity c = check_conformity(mesh, loops, 2 * kQ);
+    const Conformity c = check_conformity(mesh, loops, kModelToleranceQuanta * kQ);
     INFO(c.problem);
     CHECK(c.conformal);
     CHECK(c.quad_area == Approx(face.area()));
@@ -101,7 +101,7 @@ TEST_CASE("block mesh: every generated general face meshes all-quad and conforma
     smooth_quad_mesh(mesh, kDefaultSmoothingSweeps);  // as the mesh pipeline does
     std::vector<Ring> loops{face.outer()};
     loops.insert(loops.end(), face.holes().begin(), face.holes().end());
-    const Conformity c = check_conformity(mesh, loops, 2 * q);
+    const Conformity c = check_conformity(mesh, loops, kModelToleranceQuanta * q);
     INFO(c.problem);
     CHECK(c.conformal);
     CHECK(c.inverted_quads == 0);
