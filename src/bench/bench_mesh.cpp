@@ -368,8 +368,7 @@ void run_general_set(const std::string& title, const std::vector<GeneralOptions>
     f.brep = folder + "/face" + std::to_string(k) + ".brep";
     write_shape_file(f.brep, f.face.model);
     if (f.face.is_general()) {
-      f.loops.push_back(f.face.region.outer());
-      f.loops.insert(f.loops.end(), f.face.region.holes().begin(), f.face.region.holes().end());
+      f.loops = f.face.region.loops();
       f.tolerance = kModelToleranceQuanta * f.face.region.quantum();
     }
     faces.push_back(std::move(f));

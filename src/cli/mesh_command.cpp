@@ -147,7 +147,7 @@ void add_mesh_command(CLI::App& app) {
     const std::string report = args->json.empty() ? "" : face_meshing_json(args->file, meshing).dump(2) + "\n";
     if (!result.conformity.conformal) {
       if (!args->json.empty()) write_text_file(args->json, report);
-      throw std::runtime_error("the mesh failed the conformity check: " + result.conformity.problem);
+      require_conformal(result);
     }
     const std::string mesh_text = args->out.empty() ? "" : mesh_file_text(args->out, result.mesh, face.frame);
     const std::string title = std::filesystem::path(args->file).filename().string() + " - policy " + meshing.policy() +

@@ -159,9 +159,7 @@ FaceMesh face_mesh(const InputFace& face, const std::vector<CutSpec>& cuts, int 
   FaceMesh out;
   out.decomposition = replay_decomposition(face.grid, cuts, options.episode, "replay");
   out.result = mesh_decomposition(face, out.decomposition, options);
-  if (!out.result.conformity.conformal) {
-    throw std::runtime_error("the mesh failed the conformity check: " + out.result.conformity.problem);
-  }
+  require_conformal(out.result);
   return out;
 }
 

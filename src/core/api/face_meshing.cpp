@@ -1,12 +1,9 @@
 #include "core/api/face_meshing.h"
 
 #include <chrono>
-#include <stdexcept>
-#include <cstdlib>
 
 #include "core/mesh/mesh_picture.h"
 #include "core/mesh/mesh_report.h"
-#include "core/region/block.h"
 
 namespace autoblock {
 
@@ -39,9 +36,7 @@ FaceMeshing face_mesh_general(const InputFace& face, const std::vector<RegionAct
   options.general.max_steps = max_steps;
   options.general.reward = reward;
   out.result = mesh_region_decomposition(face, out.decomposition.region, options);
-  if (!out.result.conformity.conformal) {
-    throw std::runtime_error("the mesh failed the conformity check: " + out.result.conformity.problem);
-  }
+  require_conformal(out.result);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
@@ -54,10 +49,9 @@ nlohmann::json face_meshing_json(const std::string& input, const FaceMeshing& m)
 std::string face_meshing_svg(const FaceMeshing& m, const std::string& title) {
   const InputFace& face = m.decomposition.face;
   if (!m.general()) return mesh_svg(face.planar.polygon, m.decomposition.decomposition.blocks, m.result.mesh, title);
-  std::vector<Ring> loops{face.region.outer()}, parts;
-  loops.insert(loops.end(), face.region.holes().begin(), face.region.holes().end());
+  std::vector<Ring> parts;
   for (const FinishedRegion& f : m.decomposition.region.finished) parts.push_back(f.region.outer());
-  return mesh_svg(loops, parts, m.result.mesh, title);
+  return mesh_svg(face.region.loops(), parts, m.result.mesh, title);
 }
 
 }  // namespace autoblock

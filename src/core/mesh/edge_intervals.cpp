@@ -10,6 +10,7 @@
 
 #include "core/common/error.h"
 #include "core/common/format.h"
+#include "core/region/region.h"
 
 namespace autoblock {
 namespace {
@@ -24,16 +25,9 @@ double size_factor(double g, double n) { return std::max(g / n, n / g) - 1.0; }
 // The largest count the program may give an edge (guards int overflow).
 constexpr double kMaxEdgeIntervals = 1e7;
 
-double distance_to_segment(Point2 p, Point2 a, Point2 b) {
-  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
-  const double t = l2 > 0.0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
-  return std::hypot(a.x + t * dx - p.x, a.y + t * dy - p.y);
-}
-
 }  // namespace
 
-int side_intervals(const BlockModel& model, const ModelSide& side, const std::vector<int>& intervals) {
-  (void)model;
+int side_intervals(const ModelSide& side, const std::vector<int>& intervals) {
   int total = 0;
   for (int e : side.edges) total += intervals[static_cast<size_t>(e)];
   return total;
@@ -42,7 +36,7 @@ int side_intervals(const BlockModel& model, const ModelSide& side, const std::ve
 long quad_count(const BlockModel& model, const std::vector<int>& intervals) {
   long quads = 0;
   for (const ModelBlock& b : model.blocks) {
-    quads += static_cast<long>(side_intervals(model, b.sides[0], intervals)) * side_intervals(model, b.sides[1], intervals);
+    quads += static_cast<long>(side_intervals(b.sides[0], intervals)) * side_intervals(b.sides[1], intervals);
   }
   return quads;
 }
@@ -63,7 +57,7 @@ FixedIntervals fixed_edge_intervals(const BlockModel& model, Point2 a, Point2 b,
   for (size_t e = 0; e < model.edges.size(); ++e) {
     const ModelEdge& edge = model.edges[e];
     const Point2 p = model.vertices[static_cast<size_t>(edge.a)], q = model.vertices[static_cast<size_t>(edge.b)];
-    if (distance_to_segment(p, a, b) <= tolerance && distance_to_segment(q, a, b) <= tolerance) {
+    if (segment_distance(p, a, b) <= tolerance && segment_distance(q, a, b) <= tolerance) {
       fixed.strips.push_back(static_cast<int>(e));
       covered += edge.length;
     }
@@ -207,8 +201,8 @@ IntervalAssignment assign_edge_intervals(const BlockModel& model, const Interval
   }
   result.max_deviation = result.max_relative_deviation * h;
   for (const ModelBlock& b : model.blocks) {  // the solution must give a structured grid in every block
-    if (side_intervals(model, b.sides[0], result.intervals) != side_intervals(model, b.sides[2], result.intervals) ||
-        side_intervals(model, b.sides[1], result.intervals) != side_intervals(model, b.sides[3], result.intervals)) {
+    if (side_intervals(b.sides[0], result.intervals) != side_intervals(b.sides[2], result.intervals) ||
+        side_intervals(b.sides[1], result.intervals) != side_intervals(b.sides[3], result.intervals)) {
       throw std::runtime_error("GLPK's solution gives a block unequal opposite sides");
     }
   }

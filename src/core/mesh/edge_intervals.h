@@ -43,7 +43,7 @@ IntervalAssignment assign_edge_intervals(const BlockModel& model, const Interval
 // Inputs: model; intervals per edge. Output: the number of quadrilaterals they give.
 long quad_count(const BlockModel& model, const std::vector<int>& intervals);
 
-// Inputs: model; side; intervals per edge. Output: the side's interval total.
-int side_intervals(const BlockModel& model, const ModelSide& side, const std::vector<int>& intervals);
+// Inputs: side; intervals per edge. Output: the side's interval total.
+int side_intervals(const ModelSide& side, const std::vector<int>& intervals);
 
 }  // namespace autoblock

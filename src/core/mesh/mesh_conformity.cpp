@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "core/common/format.h"
+#include "core/mesh/mesh_quality.h"
+#include "core/region/region.h"
 
 namespace autoblock {
 namespace {
@@ -12,19 +14,6 @@ namespace {
 struct Segment {
   Point2 a, b;
 };
-
-// The distance from p to segment s.
-double distance(const Point2& p, const Segment& s) {
-  const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y, l2 = dx * dx + dy * dy;
-  const double t = l2 > 0.0 ? std::clamp(((p.x - s.a.x) * dx + (p.y - s.a.y) * dy) / l2, 0.0, 1.0) : 0.0;
-  return std::hypot(s.a.x + t * dx - p.x, s.a.y + t * dy - p.y);
-}
-
-double ring_area(const Ring& ring) {
-  double twice = 0.0;
-  for (size_t k = 0; k < ring.size(); ++k) twice += ring[k].x * ring[(k + 1) % ring.size()].y - ring[(k + 1) % ring.size()].x * ring[k].y;
-  return 0.5 * twice;
-}
 
 }  // namespace
 
@@ -45,20 +34,15 @@ Conformity check_conformity(const QuadMesh& mesh, const std::vector<Ring>& loops
       rings.push_back(s);
     }
     // The outer loop adds its area, holes take theirs away, whatever their orientation.
-    c.face_area += (l == 0 ? 1.0 : -1.0) * std::fabs(ring_area(ring));
+    c.face_area += (l == 0 ? 1.0 : -1.0) * std::fabs(signed_area(ring));
   }
   for (size_t q = 0; q < mesh.quads.size(); ++q) {
     const auto p = mesh.corners(q);
     double twice = 0;
     for (size_t k = 0; k < 4; ++k) twice += p[k].x * p[(k + 1) % 4].y - p[(k + 1) % 4].x * p[k].y;
     c.quad_area += 0.5 * twice;
-    // Inverted: a corner whose edges turn clockwise (a negative Jacobian there), or no area at all.
-    bool corner_inverted = false;
-    for (size_t k = 0; k < 4; ++k) {
-      const Point2 a = p[(k + 3) % 4], v = p[k], b = p[(k + 1) % 4];
-      corner_inverted = corner_inverted || (b.x - v.x) * (a.y - v.y) - (b.y - v.y) * (a.x - v.x) <= 0.0;
-    }
-    c.inverted_quads += twice <= 0 || corner_inverted;
+    // Inverted: a corner whose edges turn clockwise or run straight (a Jacobian <= 0 there), or no area.
+    c.inverted_quads += twice <= 0 || quad_scaled_jacobian(p) <= 0.0;
   }
   for (const MeshEdge& e : mesh_edges(mesh)) {
     if (e.uses == 2) {
@@ -72,7 +56,7 @@ Conformity check_conformity(const QuadMesh& mesh, const std::vector<Ring>& loops
       const Point2& b = mesh.nodes[static_cast<size_t>(e.b)];
       c.boundary_length += std::hypot(b.x - a.x, b.y - a.y);
       const bool on_boundary = std::any_of(rings.begin(), rings.end(), [&](const Segment& s) {
-        return distance(a, s) <= tolerance && distance(b, s) <= tolerance;
+        return segment_distance(a, s.a, s.b) <= tolerance && segment_distance(b, s.a, s.b) <= tolerance;
       });
       c.stray_boundary_edges += !on_boundary;
     }

@@ -42,6 +42,13 @@ Box vertex_box(const TopoDS_Face& face) {
   return box;
 }
 
+// The target size h for options.size (checked), noting in result whether it is the default.
+double checked_target_size(const InputFace& face, const MeshOptions& options, MeshResult& result) {
+  if (!std::isfinite(options.size) || options.size < 0) throw InputError("the element size must be a positive number");
+  result.default_size = !(options.size > 0);
+  return target_size_for(face, options.size);
+}
+
 // The user's fixed counts made by fix (per stretch), then the assignment by assign, into result.
 template <class Fix, class Assign>
 void assign_with_fixed(MeshResult& result, const MeshOptions& options, double h, Fix fix, Assign assign) {
@@ -54,6 +61,12 @@ void assign_with_fixed(MeshResult& result, const MeshOptions& options, double h,
 }
 
 }  // namespace
+
+void require_conformal(const MeshResult& result) {
+  if (!result.conformity.conformal) {
+    throw std::runtime_error("the mesh failed the conformity check: " + result.conformity.problem);
+  }
+}
 
 double target_size_for(const InputFace& face, double size) {
   if (size > 0) return size;
@@ -68,10 +81,8 @@ MeshResult mesh_decomposition(const InputFace& face, const Decomposition& d, con
                      (left == 1 ? " is not a rectangle" : " are not rectangles") + " after " +
                      counted(static_cast<long long>(d.cuts.size()), "cut") + "); meshing needs rectangles only: raise --max-steps or use another policy");
   }
-  if (!std::isfinite(options.size) || options.size < 0) throw InputError("the element size must be a positive number");
   MeshResult result;
-  result.default_size = !(options.size > 0);
-  const double h = target_size_for(face, options.size);
+  const double h = checked_target_size(face, options, result);
 
   // Intervals first: an infeasible request fails before the slower CAD work.
   auto start = std::chrono::steady_clock::now();
@@ -114,14 +125,11 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     throw InputError("the decomposition is incomplete (" + counted(static_cast<long long>(left), "part") + " left after " +
                      counted(static_cast<long long>(d.cuts.size()), "cut") + "); meshing needs blocks only: raise --max-steps or use another policy");
   }
-  if (!std::isfinite(options.size) || options.size < 0) throw InputError("the element size must be a positive number");
   MeshResult result;
-  result.default_size = !(options.size > 0);
-  const double h = target_size_for(face, options.size);
+  const double h = checked_target_size(face, options, result);
   const double q = face.region.quantum();
   const double tolerance = std::max({face.planar.tolerance, kModelToleranceQuanta * q, 1e-9 * face.region.bbox().longer_side()});
-  std::vector<Ring> loops{face.region.outer()};
-  loops.insert(loops.end(), face.region.holes().begin(), face.region.holes().end());
+  const std::vector<Ring> loops = face.region.loops();
   result.bound = scaled_jacobian_bound(loops);
 
   // Intervals first: an infeasible request fails before the slower CAD work.

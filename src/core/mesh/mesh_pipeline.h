@@ -72,6 +72,10 @@ MeshResult mesh_decomposition(const InputFace& face, const Decomposition& decomp
 MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecomposition& decomposition,
                                      const MeshOptions& options = {});
 
+// Inputs: result. Throws std::runtime_error ("the mesh failed the conformity check: ...") when the
+// independent check failed.
+void require_conformal(const MeshResult& result);
+
 // Inputs: face; size as given (<= 0: none). Output: the target size h used.
 double target_size_for(const InputFace& face, double size);
 

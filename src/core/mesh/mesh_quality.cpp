@@ -7,10 +7,23 @@
 
 namespace autoblock {
 
+double quad_scaled_jacobian(const std::array<Point2, 4>& p) {
+  double worst = 1e300;
+  for (size_t k = 0; k < 4; ++k) {
+    const Point2& c = p[k];
+    const Point2& next = p[(k + 1) % 4];
+    const Point2& prev = p[(k + 3) % 4];
+    const double e1x = next.x - c.x, e1y = next.y - c.y, e2x = prev.x - c.x, e2y = prev.y - c.y;
+    const double l1 = std::sqrt(e1x * e1x + e1y * e1y), l2 = std::sqrt(e2x * e2x + e2y * e2y);
+    worst = std::min(worst, l1 > 0 && l2 > 0 ? (e1x * e2y - e1y * e2x) / (l1 * l2) : 0.0);
+  }
+  return worst;
+}
+
 QuadQuality quad_quality(const std::array<Point2, 4>& p) {
   constexpr double kPi = 3.14159265358979323846;
   QuadQuality q;
-  q.scaled_jacobian = 1e300;
+  q.scaled_jacobian = quad_scaled_jacobian(p);
   q.min_angle = 1e300;
   q.max_angle = -1e300;
   double shortest = 1e300, longest = 0;
@@ -19,12 +32,10 @@ QuadQuality quad_quality(const std::array<Point2, 4>& p) {
     const Point2& next = p[static_cast<size_t>((k + 1) % 4)];
     const Point2& prev = p[static_cast<size_t>((k + 3) % 4)];
     const double e1x = next.x - c.x, e1y = next.y - c.y, e2x = prev.x - c.x, e2y = prev.y - c.y;
-    const double l1 = std::sqrt(e1x * e1x + e1y * e1y), l2 = std::sqrt(e2x * e2x + e2y * e2y);
+    const double l1 = std::sqrt(e1x * e1x + e1y * e1y);
     shortest = std::min(shortest, l1);
     longest = std::max(longest, l1);
     const double cross = e1x * e2y - e1y * e2x;
-    const double sj = l1 > 0 && l2 > 0 ? cross / (l1 * l2) : 0.0;
-    q.scaled_jacobian = std::min(q.scaled_jacobian, sj);
     double angle = std::atan2(cross, e1x * e2x + e1y * e2y) * 180.0 / kPi;  // signed, in (-180, 180]
     if (angle < 0) angle += 360.0;                                            // reflex corners exceed 180
     q.min_angle = std::min(q.min_angle, angle);

@@ -33,6 +33,10 @@ struct MeshQuality {
 // Inputs: the four corners, counter-clockwise. Output: the measures above.
 QuadQuality quad_quality(const std::array<Point2, 4>& corners);
 
+// Inputs: the four corners, counter-clockwise. Output: the scaled Jacobian alone (quad_quality's):
+// <= 0 when a corner is reflex or flat, or an edge has no length.
+double quad_scaled_jacobian(const std::array<Point2, 4>& corners);
+
 // Inputs: mesh with at least one quad. Output: the statistics over all quads and nodes.
 MeshQuality mesh_quality(const QuadMesh& mesh);
 

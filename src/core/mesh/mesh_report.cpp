@@ -6,8 +6,7 @@ namespace {
 
 // The fields every report has; the decomposition's and the counting unit's come from the callers.
 nlohmann::json common_report(const std::string& input, const std::string& policy, size_t blocks, const MeshResult& r,
-                             double seconds, const char* unit, size_t units, const char* fixed_unit,
-                             double decomposition_seconds) {
+                             double seconds, const char* unit, size_t units, double decomposition_seconds) {
   const MeshQuality& q = r.quality;
   const Conformity& c = r.conformity;
   nlohmann::json report;
@@ -25,7 +24,7 @@ nlohmann::json common_report(const std::string& input, const std::string& policy
                          {"optimal", r.intervals.optimal},
                          {"fixed", nlohmann::json::array()}};
   for (const FixedIntervals& f : r.fixed) {
-    report["intervals"]["fixed"].push_back({{"edge", f.what}, {"intervals", f.intervals}, {fixed_unit, f.strips.size()}});
+    report["intervals"]["fixed"].push_back({{"edge", f.what}, {"intervals", f.intervals}, {unit, f.strips.size()}});
   }
   report["quality"] = {{"min_scaled_jacobian", q.min_scaled_jacobian},
                        {"mean_scaled_jacobian", q.mean_scaled_jacobian},
@@ -56,7 +55,7 @@ nlohmann::json common_report(const std::string& input, const std::string& policy
 
 nlohmann::json mesh_report_json(const std::string& input, const Decomposition& d, const MeshResult& r, double seconds) {
   nlohmann::json report =
-      common_report(input, d.policy, d.blocks.size(), r, seconds, "strips", r.layout.strips.size(), "strips", d.seconds);
+      common_report(input, d.policy, d.blocks.size(), r, seconds, "strips", r.layout.strips.size(), d.seconds);
   nlohmann::json deciders = nlohmann::json::object();
   for (const std::string& who : d.decided_by) deciders[who] = deciders.value(who, 0) + 1;
   report["decomposition"] = {{"complete", d.complete()},         {"min_blocks", d.min_blocks},
@@ -68,7 +67,7 @@ nlohmann::json mesh_report_json(const std::string& input, const Decomposition& d
 nlohmann::json mesh_report_json(const std::string& input, const RegionDecomposition& d, const MeshResult& r,
                                 double seconds) {
   nlohmann::json report = common_report(input, d.policy, d.finished.size(), r, seconds, "edges",
-                                        r.block_model.edges.size(), "edges", d.seconds);
+                                        r.block_model.edges.size(), d.seconds);
   report["templates"] = d.templates;
   report["quality"]["bound"] = r.bound;
   report["quality"]["min_scaled_jacobian_over_bound"] = r.quality.min_scaled_jacobian / r.bound;

@@ -11,7 +11,7 @@ namespace {
 
 double worst_jacobian(const QuadMesh& mesh) {
   double worst = 1.0;
-  for (size_t q = 0; q < mesh.quads.size(); ++q) worst = std::min(worst, quad_quality(mesh.corners(q)).scaled_jacobian);
+  for (size_t q = 0; q < mesh.quads.size(); ++q) worst = std::min(worst, quad_scaled_jacobian(mesh.corners(q)));
   return worst;
 }
 
@@ -33,7 +33,7 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps) {
   }
   auto local_worst = [&](size_t node) {
     double worst = 1e300;
-    for (const auto& [q, k] : around[node]) worst = std::min(worst, quad_quality(mesh.corners(static_cast<size_t>(q))).scaled_jacobian);
+    for (const auto& [q, k] : around[node]) worst = std::min(worst, quad_scaled_jacobian(mesh.corners(static_cast<size_t>(q))));
     return worst;
   };
   for (int sweep = 0; sweep < max_sweeps; ++sweep) {

@@ -28,6 +28,12 @@ void hash_combine(size_t* seed, double value) {
 
 }  // namespace
 
+std::vector<Ring> Region::loops() const {
+  std::vector<Ring> all{outer_};
+  all.insert(all.end(), holes_.begin(), holes_.end());
+  return all;
+}
+
 double segment_distance(Point2 x, Point2 a, Point2 b) {
   const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
   double t = len2 > 0.0 ? ((x.x - a.x) * dx + (x.y - a.y) * dy) / len2 : 0.0;

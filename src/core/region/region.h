@@ -41,6 +41,8 @@ class Region {
   int loop_count() const { return 1 + static_cast<int>(holes_.size()); }
   // Loop 0 is the outer ring, loop k >= 1 the hole k - 1.
   const Ring& loop(int k) const { return k == 0 ? outer_ : holes_[static_cast<size_t>(k - 1)]; }
+  // All loops in that order: the outer ring, then the holes.
+  std::vector<Ring> loops() const;
   int vertex_count() const;
 
   double area() const { return area_; }

@@ -61,8 +61,7 @@ TEST_CASE("block mesh: general decompositions with holes mesh conformally, templ
     options.target_size = 0.7;
     const IntervalAssignment a = assign_edge_intervals(m, options);
     const QuadMesh mesh = block_model_mesh(m, a.intervals, 0.0);
-    std::vector<Ring> loops{face.outer()};
-    loops.insert(loops.end(), face.holes().begin(), face.holes().end());
+    const std::vector<Ring> loops = face.loops();
     const Conformity c = check_conformity(mesh, loops, kModelToleranceQuanta * kQ);
     INFO(c.problem);
     CHECK(c.conformal);
@@ -99,8 +98,7 @@ TEST_CASE("block mesh: every generated general face meshes all-quad and conforma
     const IntervalAssignment a = assign_edge_intervals(m, intervals);
     QuadMesh mesh = block_model_mesh(m, a.intervals, 0.0);
     smooth_quad_mesh(mesh, kDefaultSmoothingSweeps);  // as the mesh pipeline does
-    std::vector<Ring> loops{face.outer()};
-    loops.insert(loops.end(), face.holes().begin(), face.holes().end());
+    const std::vector<Ring> loops = face.loops();
     const Conformity c = check_conformity(mesh, loops, kModelToleranceQuanta * q);
     INFO(c.problem);
     CHECK(c.conformal);

@@ -45,10 +45,10 @@ TEST_CASE("edge intervals: a trapezoid's short side takes its long side's count"
   options.target_size = 1.0;
   const IntervalAssignment a = assign_edge_intervals(m, options);
   const ModelBlock& b = m.blocks[0];
-  CHECK(side_intervals(m, b.sides[0], a.intervals) == side_intervals(m, b.sides[2], a.intervals));
-  CHECK(side_intervals(m, b.sides[1], a.intervals) == side_intervals(m, b.sides[3], a.intervals));
+  CHECK(side_intervals(b.sides[0], a.intervals) == side_intervals(b.sides[2], a.intervals));
+  CHECK(side_intervals(b.sides[1], a.intervals) == side_intervals(b.sides[3], a.intervals));
   // 6 and 2 against h = 1: the best compromise on the largest factor max(g / n, n / g) is n = 3 or 4.
-  const int n = side_intervals(m, b.sides[0], a.intervals);
+  const int n = side_intervals(b.sides[0], a.intervals);
   CHECK((n == 3 || n == 4));
 }
 
@@ -59,8 +59,8 @@ TEST_CASE("edge intervals: fixed counts hold or are refused with a reason", "[me
   options.fixed.push_back(fixed_edge_intervals(m, {0, 0}, {4, 0}, 3, 1e-9));
   const IntervalAssignment a = assign_edge_intervals(m, options);
   const ModelBlock& b = m.blocks[0];
-  CHECK(side_intervals(m, b.sides[0], a.intervals) == 3);
-  CHECK(side_intervals(m, b.sides[2], a.intervals) == 3);  // the opposite side follows
+  CHECK(side_intervals(b.sides[0], a.intervals) == 3);
+  CHECK(side_intervals(b.sides[2], a.intervals) == 3);  // the opposite side follows
   // Opposite sides fixed differently cannot hold.
   options.fixed.push_back(fixed_edge_intervals(m, {4, 1}, {0, 1}, 5, 1e-9));
   CHECK_THROWS_WITH(assign_edge_intervals(m, options), Contains("cannot all hold"));
