@@ -34,6 +34,8 @@ std::vector<TopoDS_Face> replay_region_cuts_occt(const TopoDS_Face& face, const 
                                                  const RegionDecomposition& decomposition,
                                                  RegionEpisodeOptions options) {
   options.reward = decomposition.reward;
+  options.rules = decomposition.rules;
+  options.face_rules = false;
   options.max_steps = static_cast<int>(decomposition.cuts.size()) + 1;
   RegionEpisode episode(region, options);
   const double q = region.quantum();

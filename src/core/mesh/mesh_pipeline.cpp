@@ -134,7 +134,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
 
   // Intervals first: an infeasible request fails before the slower CAD work.
   auto start = std::chrono::steady_clock::now();
-  result.block_model = block_model(d, options.general.rules, q);
+  result.block_model = block_model(d, d.rules, q);
   assign_with_fixed(result, options, h, [&](const EdgeIntervals& e) {
     return fixed_edge_intervals(result.block_model, e.a, e.b, e.intervals, tolerance);
   }, [&](const IntervalOptions& o) { return assign_edge_intervals(result.block_model, o); });

@@ -11,6 +11,58 @@ namespace {
 
 constexpr double kDegree = M_PI / 180.0;
 
+// The centre of the largest circle inside a convex polygon (counter-clockwise): the linear program
+// max r subject to dist_k(p) >= r for every side's line, solved at its vertices (three sides' lines
+// at equal distance; a handful of sides, so every triple is tried). A degenerate polygon gives the
+// mean of its vertices.
+Point2 largest_inscribed_centre(const std::vector<Point2>& polygon) {
+  const size_t m = polygon.size();
+  struct Line {
+    double nx, ny, d;  // inward unit normal; dist(p) = n . p - d
+  };
+  std::vector<Line> lines;
+  for (size_t k = 0; k < m; ++k) {
+    const Point2 a = polygon[k], b = polygon[(k + 1) % m];
+    const double len = std::hypot(b.x - a.x, b.y - a.y);
+    if (len <= 0.0) continue;
+    const double nx = -(b.y - a.y) / len, ny = (b.x - a.x) / len;
+    lines.push_back({nx, ny, nx * a.x + ny * a.y});
+  }
+  Point2 mean{0.0, 0.0};
+  for (const Point2& p : polygon) mean = Point2{mean.x + p.x / static_cast<double>(m), mean.y + p.y / static_cast<double>(m)};
+  double extent = 0.0;
+  for (const Point2& p : polygon) extent = std::max(extent, std::hypot(p.x - mean.x, p.y - mean.y));
+  Point2 best = mean;
+  double best_r = 0.0;
+  const size_t n = lines.size();
+  for (size_t i = 0; i < n; ++i) {
+    for (size_t j = i + 1; j < n; ++j) {
+      for (size_t l = j + 1; l < n; ++l) {
+        // n_k . p - r = d_k for k = i, j, l (Cramer's rule on the 3 x 3 system in x, y, r).
+        const Line& a = lines[i];
+        const Line& b = lines[j];
+        const Line& c = lines[l];
+        auto det3 = [](double a1, double a2, double a3, double b1, double b2, double b3, double c1, double c2, double c3) {
+          return a1 * (b2 * c3 - b3 * c2) - a2 * (b1 * c3 - b3 * c1) + a3 * (b1 * c2 - b2 * c1);
+        };
+        const double det = det3(a.nx, a.ny, -1.0, b.nx, b.ny, -1.0, c.nx, c.ny, -1.0);
+        if (std::fabs(det) < 1e-12) continue;
+        const double x = det3(a.d, a.ny, -1.0, b.d, b.ny, -1.0, c.d, c.ny, -1.0) / det;
+        const double y = det3(a.nx, a.d, -1.0, b.nx, b.d, -1.0, c.nx, c.d, -1.0) / det;
+        const double r = det3(a.nx, a.ny, a.d, b.nx, b.ny, b.d, c.nx, c.ny, c.d) / det;
+        if (!(r > best_r)) continue;
+        bool inside = true;
+        for (const Line& e : lines) inside = inside && e.nx * x + e.ny * y - e.d >= r - 1e-9 * extent;
+        if (inside) {
+          best = Point2{x, y};
+          best_r = r;
+        }
+      }
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 bool is_side_vertex(const Ring& ring, size_t i, const BlockRules& rules) {
@@ -52,14 +104,17 @@ std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& r
   const size_t m = corners.size();
   auto next = [n](size_t i) { return (i + 1) % n; };
   auto length = [](Point2 a, Point2 b) { return std::hypot(b.x - a.x, b.y - a.y); };
-  // Side k (corner k to corner k + 1) split at its midpoint by length: the boundary vertices before
-  // it (from corner k), the midpoint, and the vertices after it (up to corner k + 1, exclusive).
+  // Side k (corner k to corner k + 1) split where its spoke meets it: the boundary vertices before
+  // that point (from corner k), the point, and the vertices after it (up to corner k + 1, exclusive).
   struct Split {
     std::vector<Point2> before, after;
-    Point2 midpoint;
+    Point2 foot;
   };
   std::vector<Split> splits(m);
   const double q = region.quantum();
+  std::vector<Point2> corner_polygon;
+  for (size_t k : corners) corner_polygon.push_back(ring[k]);
+  const Point2 c = largest_inscribed_centre(corner_polygon);
   for (size_t k = 0; k < m; ++k) {
     // The side's vertices, corner k to corner k + 1 inclusive, and their distances along it.
     std::vector<Point2> side{ring[corners[k]]};
@@ -68,28 +123,32 @@ std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& r
       side.push_back(ring[next(i)]);
       at.push_back(at.back() + length(ring[i], ring[next(i)]));
     }
-    const double half = 0.5 * at.back();
+    // Where the spoke meets the side: the foot of the perpendicular from the centre on the chord
+    // between the side's corners, kept within the side's middle half.
+    const Point2 a = side.front(), b = side.back();
+    const double chord2 = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
+    const double foot = chord2 > 0.0 ? ((c.x - a.x) * (b.x - a.x) + (c.y - a.y) * (b.y - a.y)) / chord2 : 0.5;
+    const double split_at = std::clamp(foot, 0.25, 0.75) * at.back();
     Split& s = splits[k];
-    // A side vertex within the quantum of the midpoint is the midpoint.
+    // A side vertex within the quantum of that point is the point.
     size_t on_vertex = 0;
     for (size_t v = 1; v + 1 < side.size(); ++v) {
-      if (std::fabs(at[v] - half) <= q) on_vertex = v;
+      if (std::fabs(at[v] - split_at) <= q) on_vertex = v;
     }
     for (size_t v = 0; v + 1 < side.size(); ++v) {
-      if (on_vertex != 0 ? v < on_vertex : at[v] < half) s.before.push_back(side[v]);
+      if (on_vertex != 0 ? v < on_vertex : at[v] < split_at) s.before.push_back(side[v]);
       else if (on_vertex != 0 ? v > on_vertex : true) s.after.push_back(side[v]);
     }
     if (on_vertex != 0) {
-      s.midpoint = side[on_vertex];
+      s.foot = side[on_vertex];
     } else {
       size_t v = 0;
-      while (v + 2 < side.size() && at[v + 1] < half) ++v;
+      while (v + 2 < side.size() && at[v + 1] < split_at) ++v;
       const double e = at[v + 1] - at[v];
-      const double t = e > 0.0 ? (half - at[v]) / e : 0.0;
-      s.midpoint = Point2{side[v].x + t * (side[v + 1].x - side[v].x), side[v].y + t * (side[v + 1].y - side[v].y)};
+      const double t = e > 0.0 ? (split_at - at[v]) / e : 0.0;
+      s.foot = Point2{side[v].x + t * (side[v + 1].x - side[v].x), side[v].y + t * (side[v + 1].y - side[v].y)};
     }
   }
-  const Point2 c = region.centroid();
   std::vector<QuadPiece> pieces;
   for (size_t k = 0; k < m; ++k) {
     const Split& out = splits[k];
@@ -97,11 +156,11 @@ std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& r
     QuadPiece piece;
     piece.ring = out.before;  // corner k first
     piece.corners[1] = static_cast<int>(piece.ring.size());
-    piece.ring.push_back(out.midpoint);
+    piece.ring.push_back(out.foot);
     piece.corners[2] = static_cast<int>(piece.ring.size());
     piece.ring.push_back(c);
     piece.corners[3] = static_cast<int>(piece.ring.size());
-    piece.ring.push_back(in.midpoint);
+    piece.ring.push_back(in.foot);
     piece.ring.insert(piece.ring.end(), in.after.begin(), in.after.end());
     piece.corners[0] = 0;
     pieces.push_back(std::move(piece));
@@ -137,6 +196,14 @@ double scaled_jacobian_bound(const std::vector<Ring>& loops) {
     }
   }
   return bound;
+}
+
+BlockRules mesh_block_rules(const std::vector<Ring>& loops, double fraction) {
+  BlockRules rules;
+  const double least = std::asin(std::clamp(fraction * scaled_jacobian_bound(loops), 0.0, 1.0)) * 180.0 / M_PI;
+  rules.min_corner_degrees = least;
+  rules.max_corner_degrees = 180.0 - least;
+  return rules;
 }
 
 OrientedRectangle min_area_rectangle(const Region& region) {

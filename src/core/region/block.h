@@ -5,9 +5,13 @@
 // part without holes, with no reflex vertex, and with exactly four corners whose angles lie in
 // [min_corner, max_corner]. A rectangle is a block under any rules. A convex part that is not a
 // block (a triangle, a pentagon, a quadrilateral with a corner out of range) may be finished with
-// the *midpoint template*: its n corners, the midpoints of its n sides and its centroid make n
-// quadrilaterals (a triangle: three quads around an interior point), whose centre node is irregular
-// unless n = 4. The template's cost shows in the rewards (reward on regions) and in the mesh.
+// the *template*: its n corners, a centre point (the centre of the largest circle inside the
+// polygon of its corners) and, on each side, the foot of the perpendicular from the centre (kept
+// within the side's middle half) make n quadrilaterals (a triangle: three quads around an interior
+// point). Where the feet fall inside their sides, each quad has right angles at the feet and the
+// angles t and 180 - t at the corner and the centre, so its scaled Jacobian is the corner's own
+// sine: the template costs no quality beyond the part's corners. Its centre node is irregular unless
+// n = 4; that cost shows in the rewards (reward on regions) and in the mesh.
 #pragma once
 
 #include <array>
@@ -37,14 +41,14 @@ inline bool is_block(const Region& region, const BlockRules& rules = {}) {
   return block_corners(region, rules).has_value();
 }
 
-// Inputs:  region; rules. Output: true when the midpoint template can finish it (convex, no holes).
+// Inputs:  region; rules. Output: true when the template can finish it (convex, no holes).
 bool template_applies(const Region& region);
 
 // Inputs:  region, convex (template_applies); rules (which vertices are side vertices).
 // Outputs: the template's quadrilaterals, one per corner of the region, each counter-clockwise
-//          starting at the corner: the corner, the midpoint (by length along the boundary) of the
-//          side it starts, the centroid, the midpoint of the side it ends. Side vertices lie on the
-//          quads' boundary sides, which the four points here give as chords.
+//          starting at the corner: the corner, the foot on the side it starts, the centre, the foot
+//          on the side it ends. Side vertices lie on the quads' boundary sides, which the four points
+//          here give as chords.
 std::vector<std::array<Point2, 4>> template_quads(const Region& region, const BlockRules& rules = {});
 
 // A four-sided piece of a finished part: its loop (counter-clockwise, side vertices included) and
@@ -58,9 +62,9 @@ struct QuadPiece {
 // Inputs:  region, convex (template_applies); rules (which vertices are side vertices).
 // Outputs: the template's pieces, one per corner of the region, in the order of template_quads:
 //          piece k runs from corner k along the region's boundary (through its side vertices) to the
-//          midpoint of that side, to the centroid, to the midpoint of the side that ends at corner k,
-//          and back along the boundary. A midpoint within the region's quantum of a side vertex is
-//          that vertex. The pieces' loops share their spokes (midpoint to centroid) exactly.
+//          foot on that side, to the centre, to the foot on the side that ends at corner k, and back
+//          along the boundary. A foot within the region's quantum of a side vertex is that vertex.
+//          The pieces' loops share their spokes (foot to centre) exactly.
 std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& rules = {});
 
 // The best minimum scaled Jacobian any all-quad mesh of a face can have, set by its corners: k quads
@@ -71,6 +75,15 @@ std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& r
 // Inputs: loops, the face's outer loop and holes (the region on each loop's left: outer
 //         counter-clockwise, holes clockwise). Output: the bound, in (0, 1].
 double scaled_jacobian_bound(const std::vector<Ring>& loops);
+
+// The mesh preset's block rules for a face: a block's corners must lie within
+// [asin(f B), 180 - asin(f B)] degrees, B the face's bound (scaled_jacobian_bound), so that no block
+// corner caps the mesh below f B. A chamfer's 135-degree corner (B = sin 67.5 = 0.924) is then no
+// block corner and must be split; a face with a 20-degree corner (B = 0.342) keeps it in a block
+// instead of a template. The flat tolerance is the default's.
+// Inputs: loops, the face's outer loop and holes; fraction f in (0, 1]. Output: the rules.
+constexpr double kMeshCornerFraction = 0.85;
+BlockRules mesh_block_rules(const std::vector<Ring>& loops, double fraction = kMeshCornerFraction);
 
 
 // The minimum-area rectangle enclosing a region (its outer loop's convex hull; rotating calipers).

@@ -10,7 +10,7 @@
 //               part, where the full cut is the partial one);
 // and from the midpoint of every edge, the partial cut along the edge's inward normal.
 // Duplicate directions (parallel within 1e-9 rad) are listed once. On a convex part that is not a
-// block, finishing it with the midpoint template is a candidate too. Every candidate a policy picks
+// block, finishing it with the template is a candidate too. Every candidate a policy picks
 // from here is a real number angle; a learned policy may choose any other.
 //
 // Progress: the complexity of a part is (holes, reflex vertices, corners), compared

@@ -3,7 +3,7 @@
 // pieces, and stop when no part is left (complete) or at the step cap (truncated).
 //
 // Actions: a cut (region_cut.h: full or partial, any angle, from any point of the part's boundary)
-// or, on a convex part, finishing it with the midpoint template (block.h).
+// or, on a convex part, finishing it with the template (block.h).
 #pragma once
 
 #include <array>
@@ -30,7 +30,8 @@ std::string action_kind_name(const RegionAction& action);
 struct RegionEpisodeOptions {
   int max_steps = 0;  // 0: automatic, 10 x (vertices of the face) + 10
   RewardPreset reward = RewardPreset::Paper;
-  BlockRules rules;
+  BlockRules rules;           // what a block is (block.h); see face_rules
+  bool face_rules = true;     // the mesh preset: rules = mesh_block_rules(the face's loops) instead
 };
 
 struct RegionPiece {

@@ -54,6 +54,20 @@ RegionAction RegionRandomPolicy::choose(const RegionEpisode& episode) {
   return progress_action(episode.current_part(), episode.options().rules);
 }
 
+RegionDecomposition episode_decomposition(const RegionEpisode& episode, const std::string& policy) {
+  RegionDecomposition result;
+  result.policy = policy;
+  result.reward = episode.options().reward;
+  result.rules = episode.options().rules;
+  result.finished = episode.finished();
+  result.cuts = episode.cuts();
+  result.total_return = episode.total_return();
+  result.status = episode.status();
+  for (const RegionPiece& piece : episode.queue()) result.unfinished.push_back(piece.region);
+  for (const FinishedRegion& f : result.finished) (f.is_template ? result.templates : result.blocks) += 1;
+  return result;
+}
+
 RegionDecomposition decompose_region(const Region& face, RegionPolicy& policy, RegionEpisodeOptions options) {
   const auto start = std::chrono::steady_clock::now();
   RegionEpisode episode(face, options);
@@ -68,18 +82,10 @@ RegionDecomposition decompose_region(const Region& face, RegionPolicy& policy, R
     int extra = 0;
     for (const RegionPiece& piece : episode.queue()) extra += 4 * piece.region.vertex_count() + 8;
     episode.extend_steps(extra);
-    while (episode.running()) episode.step(progress_action(episode.current_part(), options.rules));
+    while (episode.running()) episode.step(progress_action(episode.current_part(), episode.options().rules));
   }
-  RegionDecomposition result;
-  result.policy = policy.name();
-  result.reward = options.reward;
-  result.finished = episode.finished();
-  result.cuts = episode.cuts();
-  result.total_return = episode.total_return();
-  result.status = episode.status();
-  for (const RegionPiece& piece : episode.queue()) result.unfinished.push_back(piece.region);
+  RegionDecomposition result = episode_decomposition(episode, policy.name());
   result.policy_steps = policy_steps;
-  for (const FinishedRegion& f : result.finished) (f.is_template ? result.templates : result.blocks) += 1;
   result.time_capped = policy.time_capped();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -63,6 +63,7 @@ std::vector<ScoredAction> score_candidates(const Region& part, double face_size,
 struct RegionDecomposition {
   std::string policy;
   RewardPreset reward = RewardPreset::Paper;
+  BlockRules rules;                      // what a block was (the episode's, block.h)
   std::vector<FinishedRegion> finished;  // blocks and templates, in the order set aside
   std::vector<RegionCutRecord> cuts;
   std::vector<Region> unfinished;        // parts left when not complete
@@ -79,6 +80,11 @@ struct RegionDecomposition {
 // src/core/CMakeLists.txt), and front ends may call the general engine from several threads (eval's
 // workers). Whoever runs a decomposition, a replay or a step on regions holds this lock.
 std::unique_lock<std::mutex> lock_general_engine();
+
+// Inputs:  episode (ended or not); policy, the name to record. Outputs: its decomposition (finished
+//          parts, cuts, return, status, the parts left, the rules it ran with); the caller fills
+//          policy_steps, time_capped and seconds.
+RegionDecomposition episode_decomposition(const RegionEpisode& episode, const std::string& policy);
 
 // Inputs:  face (a region, not empty); policy; options.
 // Outputs: the decomposition, complete unless an action failed to make progress on some part.

@@ -9,7 +9,7 @@
 // pieces' corner angles at the ends of the cut's chords (side vertices, within the flat tolerance of
 // 180 degrees, do not count): 1 when the cut meets the boundary at right angles, near 0 for a
 // sliver. The face's own corners are not the cut's doing and do not count.
-// Finishing a convex part with the midpoint template (block.h) is an action too: it earns Eq. (1)
+// Finishing a convex part with the template (block.h) is an action too: it earns Eq. (1)
 // over its n quads minus kTemplatePenalty (paper), or -(n - 1) - kTemplatePenalty (mesh).
 #pragma once
 

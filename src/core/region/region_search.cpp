@@ -13,10 +13,10 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
   if (found != memo_.end()) return found->second.value;
   const bool late = options_.time_limit > 0.0 && std::chrono::steady_clock::now() > deadline_;
   if (late) capped_ = true;
-  // Past the budget, parts are finished by progress_action alone (one cut each, no scoring).
+  // Past the budget, parts are finished greedily: every candidate scored, the best immediate reward
+  // taken (no lookahead), which costs about what the greedy policy does on the parts left.
   std::vector<ScoredAction> scored =
-      late ? std::vector<ScoredAction>{}
-           : score_candidates(part, face_size, options, options_.time_limit > 0.0 ? &deadline_ : nullptr);
+      score_candidates(part, face_size, options, !late && options_.time_limit > 0.0 ? &deadline_ : nullptr);
   Entry best;
   if (scored.empty()) {
     best.action = progress_action(part, options.rules);
@@ -34,9 +34,15 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
     return best.value;
   }
   std::stable_sort(scored.begin(), scored.end(), [](const ScoredAction& a, const ScoredAction& b) { return a.reward > b.reward; });
-  const size_t width = static_cast<size_t>(std::max(1, options_.width));
+  const size_t width = late ? 1 : static_cast<size_t>(std::max(1, options_.width));
   bool have = false;
   for (size_t i = 0; i < scored.size() && i < width; ++i) {
+    // Out of time: the candidates expanded so far decide (one greedy finish per part, not one per
+    // candidate left).
+    if (have && options_.time_limit > 0.0 && std::chrono::steady_clock::now() > deadline_) {
+      capped_ = true;
+      break;
+    }
     double value = scored[i].reward;
     if (scored[i].action.kind == RegionAction::Kind::Cut) {
       for (const Region& piece : scored[i].outcome.pieces) value += solve(piece, options, face_size);

@@ -6,8 +6,9 @@
 //   reward(action) + sum over the pieces it leaves of value(piece).
 // Progress makes the recursion finite; parts are canonical values (region.h), so a part reached by
 // two orders of cuts is solved once. When the time budget runs out, parts not yet solved are finished
-// by progress_action (region_candidates.h: one cut each, nothing scored), and the policy reports
-// time_capped(). The search is then never below that fallback, but may be below greedy.
+// greedily (every candidate scored, the best immediate reward taken, no lookahead: the budget bounds
+// the lookahead, and the greedy finish costs about what the greedy policy does on the parts left),
+// and the policy reports time_capped().
 #pragma once
 
 #include <chrono>

@@ -150,15 +150,8 @@ RegionDecomposition replay_region_decomposition(const Region& face, const std::v
     throw InputError("the sequence ends after " + counted(static_cast<long long>(actions.size()), "action") + " with " +
                      counted(static_cast<long long>(episode.queue().size()), "part") + " left to cut");
   }
-  RegionDecomposition result;
-  result.policy = policy;
-  result.reward = options.reward;
-  result.finished = episode.finished();
-  result.cuts = episode.cuts();
-  result.total_return = episode.total_return();
-  result.status = episode.status();
+  RegionDecomposition result = episode_decomposition(episode, policy);
   result.policy_steps = static_cast<int>(actions.size());
-  for (const FinishedRegion& f : result.finished) (f.is_template ? result.templates : result.blocks) += 1;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

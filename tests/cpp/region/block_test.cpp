@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "core/geometry/rectilinear_polygon.h"
+
 using namespace autoblock;
 
 namespace {
@@ -35,7 +37,7 @@ TEST_CASE("blocks: four corners within the angle range, side vertices allowed", 
   CHECK_FALSE(is_block(Region(Ring{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {Ring{{1, 1}, {2, 1}, {2, 2}, {1, 2}}}, kQ)));
 }
 
-TEST_CASE("the midpoint template: n quadrilaterals that tile the convex part", "[region][block]") {
+TEST_CASE("the template: n quadrilaterals that tile the convex part", "[region][block]") {
   const Region triangle(Ring{{0, 0}, {6, 0}, {0, 6}}, {}, kQ);
   REQUIRE(template_applies(triangle));
   const auto quads = template_quads(triangle);
@@ -48,6 +50,22 @@ TEST_CASE("the midpoint template: n quadrilaterals that tile the convex part", "
     area += 0.5 * a;
   }
   CHECK(area == Approx(18.0));
+  // The centre is the incentre (the largest circle touches all three sides), and the spokes meet
+  // the sides at right angles: each quad's corners are t, 90, 180 - t, 90 for its triangle corner t.
+  const double r = (6.0 + 6.0 - std::sqrt(72.0)) / 2.0;
+  CHECK(quads[0][2].x == Approx(r));
+  CHECK(quads[0][2].y == Approx(r));
+  for (const auto& q : quads) {
+    auto angle = [&](size_t i) {
+      const Point2 a = q[(i + 3) % 4], b = q[i], c = q[(i + 1) % 4];
+      const double u = std::atan2(a.y - b.y, a.x - b.x), v = std::atan2(c.y - b.y, c.x - b.x);
+      double t = std::fabs(u - v);
+      return t > M_PI ? 2.0 * M_PI - t : t;
+    };
+    CHECK(angle(1) == Approx(M_PI / 2.0));
+    CHECK(angle(3) == Approx(M_PI / 2.0));
+    CHECK(angle(0) + angle(2) == Approx(M_PI));
+  }
   CHECK_FALSE(template_applies(Region(Ring{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, {}, kQ)));
 }
 
@@ -78,7 +96,8 @@ TEST_CASE("template pieces: four-sided loops through side vertices, sharing spok
     CHECK(p.corners[0] == 0);
     CHECK(p.corners[1] < p.corners[2]);
     CHECK(p.corners[2] < p.corners[3]);
-    CHECK(p.ring[static_cast<size_t>(p.corners[2])] == pentagon.centroid());
+    CHECK(p.ring[static_cast<size_t>(p.corners[2])] == pieces[0].ring[static_cast<size_t>(pieces[0].corners[2])]);
+    CHECK(point_in_ring(p.ring[static_cast<size_t>(p.corners[2])], pentagon.outer()));
     double a = 0.0;
     for (size_t i = 0; i < p.ring.size(); ++i) a += p.ring[i].x * p.ring[(i + 1) % p.ring.size()].y - p.ring[(i + 1) % p.ring.size()].x * p.ring[i].y;
     CHECK(a > 0.0);
