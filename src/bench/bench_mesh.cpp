@@ -403,7 +403,7 @@ void run_general_set(const std::string& title, const std::vector<GeneralOptions>
 
 int main(int argc, char** argv) {
   CLI::App app{"AutoBlock's mapped quad meshes against gmsh's all-quad meshes on generated faces."};
-  int small = 200, large = 100;
+  int small = 200, large = 100, chamfered_count = -1;
   std::uint64_t seed = 404;
   bool holes = false;
   double time_limit = 30.0;
@@ -418,7 +418,8 @@ int main(int argc, char** argv) {
   bool general = false;
   app.add_flag("--general", general,
                "general faces instead (edges at any angle): --small polygons of 5-12 vertices, --large of 13-40, a "
-               "quarter with holes, and as many chamfered unions of rectangles; AutoBlock runs as `autoblock mesh`");
+               "quarter with holes, and --chamfered chamfered unions of rectangles; AutoBlock runs as `autoblock mesh`");
+  app.add_option("--chamfered", chamfered_count, "with --general: chamfered unions of 2-6 rectangles (default: as many as --small)");
   CLI11_PARSE(app, argc, argv);
   try {
     const std::string folder =
@@ -444,8 +445,9 @@ int main(int argc, char** argv) {
       chamfered_holes.holes = true;
       if (small > 0) run_general_set("polygons of 5-12 vertices, a quarter with holes, seed " + std::to_string(seed), polygons(5, 12), small, seed, autoblock, folder);
       if (large > 0) run_general_set("polygons of 13-40 vertices, a quarter with holes, seed " + std::to_string(seed + 1), polygons(13, 40), large, seed + 1, autoblock, folder);
-      if (small > 0) run_general_set("chamfered unions of 2-6 rectangles, a quarter with holes, seed " + std::to_string(seed + 2),
-                                     {chamfered, chamfered, chamfered, chamfered_holes}, small, seed + 2, autoblock, folder);
+      if (chamfered_count < 0) chamfered_count = small;
+      if (chamfered_count > 0) run_general_set("chamfered unions of 2-6 rectangles, a quarter with holes, seed " + std::to_string(seed + 2),
+                                     {chamfered, chamfered, chamfered, chamfered_holes}, chamfered_count, seed + 2, autoblock, folder);
       std::filesystem::remove_all(folder);
       return 0;
     }

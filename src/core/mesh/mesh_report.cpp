@@ -34,7 +34,9 @@ nlohmann::json common_report(const std::string& input, const std::string& policy
                        {"min_angle", q.min_angle},
                        {"max_angle", q.max_angle},
                        {"interior_vertices", q.interior_nodes},
-                       {"irregular_interior_vertices", q.irregular_interior_nodes}};
+                       {"irregular_interior_vertices", q.irregular_interior_nodes},
+                       {"bound", r.bound},
+                       {"min_scaled_jacobian_over_bound", q.min_scaled_jacobian / r.bound}};
   report["conformal"] = c.conformal;
   report["conformity"] = {{"interior_edges", c.interior_edges},     {"boundary_edges", c.boundary_edges},
                           {"overused_edges", c.overused_edges},     {"stray_boundary_edges", c.stray_boundary_edges},
@@ -69,8 +71,6 @@ nlohmann::json mesh_report_json(const std::string& input, const RegionDecomposit
   nlohmann::json report = common_report(input, d.policy, d.finished.size(), r, seconds, "edges",
                                         r.block_model.edges.size(), d.seconds);
   report["templates"] = d.templates;
-  report["quality"]["bound"] = r.bound;
-  report["quality"]["min_scaled_jacobian_over_bound"] = r.quality.min_scaled_jacobian / r.bound;
   report["smoothing"] = {{"sweeps", r.smoothing.sweeps},
                          {"moves", r.smoothing.moves},
                          {"min_scaled_jacobian_before", r.smoothing.min_before}};

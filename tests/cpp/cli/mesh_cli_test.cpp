@@ -70,6 +70,8 @@ TEST_CASE("autoblock mesh writes meshes, pictures and a report", "[cli][mesh]") 
     CHECK(report["quality"]["min_scaled_jacobian"] == 1.0);
     CHECK(report["quality"]["mean_scaled_jacobian"] == 1.0);
     CHECK(report["quality"]["irregular_interior_vertices"] == 0);
+    CHECK(report["quality"]["bound"] == 1.0);  // a rectilinear face's corners allow right angles
+    CHECK(report["quality"]["min_scaled_jacobian_over_bound"] == 1.0);
     CHECK(report["quality"]["max_aspect_ratio"].get<double>() >= 1.0);
     CHECK(report["intervals"]["max_deviation"].get<double>() >= 0.0);
     CHECK(report["seconds"].get<double>() > 0.0);
