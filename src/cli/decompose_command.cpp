@@ -19,17 +19,6 @@
 namespace autoblock::cli {
 namespace {
 
-void require_extension(const std::string& path, const std::vector<std::string>& allowed, const std::string& option) {
-  if (path.empty()) return;
-  const std::string ext = std::filesystem::path(path).extension().string();
-  for (const std::string& a : allowed) {
-    if (ext == a) return;
-  }
-  std::string list;
-  for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
-  throw InputError(option + " " + path + ": expected a " + list + " file");
-}
-
 struct Arguments {
   std::string file, out, json, picture;
   PolicyArguments policy;
