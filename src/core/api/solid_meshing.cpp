@@ -1,6 +1,7 @@
 #include "core/api/solid_meshing.h"
 
 #include <BRepGProp.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
 #include <TopExp.hxx>
@@ -207,6 +208,18 @@ SolidMeshing mesh_swept_solid(const SweptSolid& solid, const DecomposeSettings& 
 
 PrismBlocks solid_meshing_blocks(const SolidMeshing& m) {
   return prism_blocks(m.cap.result.model, m.solid.cap.frame, m.solid.sweep);
+}
+
+PrismBlocks swept_blocks(const SweptSolid& solid, const FaceDecomposition& decomposition) {
+  if (decomposition.shape.IsNull()) throw std::logic_error("swept_blocks: the decomposition has no OpenCASCADE blocks");
+  ConformalBlocks blocks;
+  BRep_Builder builder;
+  builder.MakeCompound(blocks.compound);
+  for (TopExp_Explorer it(decomposition.shape, TopAbs_FACE); it.More(); it.Next()) {
+    blocks.faces.push_back(TopoDS::Face(it.Current()));
+    builder.Add(blocks.compound, it.Current());
+  }
+  return prism_blocks(blocks, Placement{}, solid.sweep);
 }
 
 void require_conformal(const SolidMeshing& m) {

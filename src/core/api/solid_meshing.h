@@ -63,6 +63,11 @@ SolidMeshing mesh_swept_solid(const SweptSolid& solid, const DecomposeSettings& 
 // Inputs: meshing. Output: the blocks as conformal prisms (prism_blocks.h), model coordinates.
 PrismBlocks solid_meshing_blocks(const SolidMeshing& meshing);
 
+// Inputs: solid; decomposition, of solid.cap made with occt_blocks (decompose_input_face: the merged
+// blocks in the model's coordinates).
+// Output: the blocks (and any part left unfinished) swept into prisms sharing their faces.
+PrismBlocks swept_blocks(const SweptSolid& solid, const FaceDecomposition& decomposition);
+
 // Inputs: meshing. Throws std::runtime_error ("the hexahedral mesh failed the conformity check: ...")
 // when the independent check failed.
 void require_conformal(const SolidMeshing& meshing);

@@ -94,6 +94,41 @@ TEST_CASE("autoblock mesh SOLID writes hexahedra, blocks, a report and a picture
                        Contains("*SURFACE, NAME=SFACE_12, TYPE=ELEMENT"));
 }
 
+TEST_CASE("autoblock decompose SOLID decomposes a cap and writes the blocks as prisms sharing their faces", "[cli][solid]") {
+  const std::string folder = test::temporary_folder("cli-solid-decompose");
+  const std::string part = solid_file(folder);
+  // .brep keeps the shared faces (OpenCASCADE's STEP writer writes every solid on its own).
+  const std::string out = folder + "/b.brep", json = folder + "/r.json";
+  const auto r = test::run_autoblock("decompose '" + part + "' --policy optimal --out '" + out + "' --json '" + json + "'");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.out, StartsWith(part + ": solid, caps Face") && Contains(" swept): optimal: "));
+  const nlohmann::json report = test::read_json(json);
+  CHECK(report["solid"]["volume"].get<double>() == Approx(78.0));
+  CHECK(report["solid"]["sweep"][2].get<double>() * report["solid"]["sweep"][2].get<double>() == Approx(9.0));
+  const TopoDS_Shape shape = read_shape_file(out);
+  TopTools_IndexedMapOfShape solids, faces;
+  TopExp::MapShapes(shape, TopAbs_SOLID, solids);
+  TopExp::MapShapes(shape, TopAbs_FACE, faces);
+  CHECK(solids.Extent() == report["n_blocks"].get<int>());
+  GProp_GProps volume;
+  BRepGProp::VolumeProperties(shape, volume);
+  CHECK(volume.Mass() == Approx(78.0));
+  // Shared faces: fewer distinct faces than the prisms have together.
+  int prism_faces = 0;
+  for (int k = 1; k <= solids.Extent(); ++k) {
+    TopTools_IndexedMapOfShape own;
+    TopExp::MapShapes(solids(k), TopAbs_FACE, own);
+    prism_faces += own.Extent();
+  }
+  CHECK(faces.Extent() < prism_faces);
+  const auto step = test::run_autoblock("decompose '" + part + "' --policy optimal --out '" + folder + "/b.step'");
+  REQUIRE(step.exit_code == 0);
+  GProp_GProps step_volume;
+  BRepGProp::VolumeProperties(read_shape_file(folder + "/b.step"), step_volume);
+  CHECK(step_volume.Mass() == Approx(78.0));
+}
+
 TEST_CASE("autoblock mesh SOLID: solids it cannot sweep and misplaced options are one-line errors", "[cli][mesh][solid][errors]") {
   const std::string folder = test::temporary_folder("cli-solid-bad");
   const std::string cylinder = folder + "/cylinder.brep";
