@@ -78,7 +78,7 @@ TEST_CASE("layer stations: uniform and geometric", "[mesh][hex]") {
   CHECK_THROWS_AS(layer_stations(2, std::nan("")), InputError);
 }
 
-TEST_CASE("a swept grid: nodes, hexahedra, blocks, boundary; quality 1 and no irregular edge", "[mesh][hex]") {
+TEST_CASE("a swept grid: nodes, hexahedra, blocks, boundary, quality 1 and no irregular edge", "[mesh][hex]") {
   const QuadMesh cap = grid_mesh(3, 2, 1);
   const Point3 sweep{0, 0, 2};
   const HexMesh m = sweep_quad_mesh(cap, grid_frame(3, 2, sweep), layer_stations(4, 1.0));
