@@ -10,17 +10,10 @@
 #include "core/common/error.h"
 #include "core/mesh/hex_quality.h"
 #include "core/mesh/msh41_writer.h"
+#include "core/mesh/vtu_writer.h"
 
 namespace autoblock {
 namespace {
-
-void put_point(std::string& out, const Point3& p, const char* sep) {
-  append_shortest(out, p[0]);
-  out += sep;
-  append_shortest(out, p[1]);
-  out += sep;
-  append_shortest(out, p[2]);
-}
 
 // The boundary quads per face of the solid, in face order.
 std::map<int, std::vector<BoundaryQuad>> quads_by_face(const HexMesh& mesh) {
@@ -66,33 +59,15 @@ std::string gmsh_msh41(const HexMesh& mesh) {
 }
 
 std::string vtk_vtu(const HexMesh& mesh) {
-  std::string out;
-  out.reserve(mesh.nodes.size() * 60 + mesh.hexes.size() * 100 + 1024);
-  out += "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n";
-  out += "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" + std::to_string(mesh.nodes.size()) + "\" NumberOfCells=\"" +
-         std::to_string(mesh.hexes.size()) + "\">\n";
-  out += "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (const Point3& p : mesh.nodes) {
-    put_point(out, p, " ");
-    out += '\n';
-  }
-  out += "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const auto& h : mesh.hexes) {
-    for (size_t k = 0; k < 8; ++k) out += std::to_string(h[k]) + (k == 7 ? '\n' : ' ');
-  }
-  out += "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for (size_t h = 0; h < mesh.hexes.size(); ++h) out += std::to_string(8 * (h + 1)) + '\n';
-  out += "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (size_t h = 0; h < mesh.hexes.size(); ++h) out += "12\n";
-  out += "</DataArray>\n</Cells>\n<CellData Scalars=\"block\">\n<DataArray type=\"Int32\" Name=\"block\" format=\"ascii\">\n";
-  for (int b : mesh.hex_block) out += std::to_string(b + 1) + '\n';
-  out += "</DataArray>\n<DataArray type=\"Float64\" Name=\"scaled_jacobian\" format=\"ascii\">\n";
+  VtuCells cells;
+  cells.vtk_type = 12;
+  cells.nodes_per_cell = 8;
   for (size_t h = 0; h < mesh.hexes.size(); ++h) {
-    append_shortest(out, hex_quality(mesh.corners(h)).scaled_jacobian);
-    out += '\n';
+    cells.connectivity.insert(cells.connectivity.end(), mesh.hexes[h].begin(), mesh.hexes[h].end());
+    cells.scaled_jacobian.push_back(hex_quality(mesh.corners(h)).scaled_jacobian);
   }
-  out += "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-  return out;
+  cells.block = mesh.hex_block;
+  return vtu_text(mesh.nodes, cells);
 }
 
 std::string abaqus_inp(const HexMesh& mesh, const std::string& element_type) {
@@ -106,7 +81,7 @@ std::string abaqus_inp(const HexMesh& mesh, const std::string& element_type) {
   out += "*NODE, NSET=NALL\n";
   for (size_t n = 0; n < mesh.nodes.size(); ++n) {
     out += std::to_string(n + 1) + ", ";
-    put_point(out, mesh.nodes[n], ", ");
+    append_point(out, mesh.nodes[n], ", ");
     out += '\n';
   }
   // Elements numbered block by block: element[h] is hexahedron h's number.

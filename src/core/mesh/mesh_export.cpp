@@ -10,11 +10,10 @@
 #include "core/io/text_file.h"
 #include "core/mesh/mesh_quality.h"
 #include "core/mesh/msh41_writer.h"
+#include "core/mesh/vtu_writer.h"
 
 namespace autoblock {
 namespace {
-
-void put(std::string& out, double v) { append_shortest(out, v); }
 
 void put(std::string& out, long v) { out += std::to_string(v); }
 
@@ -30,15 +29,6 @@ std::array<double, 3> node_at(const QuadMesh& mesh, size_t id, const MeshPlaceme
   return placement.apply(p.x, p.y, mesh.z);
 }
 
-// "x<sep>y<sep>z" of a node.
-void put_node(std::string& out, const QuadMesh& mesh, size_t id, const MeshPlacement& placement, const char* sep) {
-  const std::array<double, 3> p = node_at(mesh, id, placement);
-  put(out, p[0]);
-  out += sep;
-  put(out, p[1]);
-  out += sep;
-  put(out, p[2]);
-}
 
 }  // namespace
 
@@ -60,33 +50,18 @@ std::string gmsh_msh41(const QuadMesh& mesh, const MeshPlacement& placement) {
 }
 
 std::string vtk_vtu(const QuadMesh& mesh, const MeshPlacement& placement) {
-  std::string out;
-  out.reserve(mesh.nodes.size() * 48 + mesh.quads.size() * 64 + 1024);
-  out += "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n";
-  out += "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" + std::to_string(mesh.nodes.size()) + "\" NumberOfCells=\"" +
-         std::to_string(mesh.quads.size()) + "\">\n";
-  out += "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (size_t id = 0; id < mesh.nodes.size(); ++id) {
-    put_node(out, mesh, id, placement, " ");
-    out += '\n';
-  }
-  out += "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const auto& q : mesh.quads) {
-    out += std::to_string(q[0]) + ' ' + std::to_string(q[1]) + ' ' + std::to_string(q[2]) + ' ' + std::to_string(q[3]) + '\n';
-  }
-  out += "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for (size_t q = 0; q < mesh.quads.size(); ++q) out += std::to_string(4 * (q + 1)) + '\n';
-  out += "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (size_t q = 0; q < mesh.quads.size(); ++q) out += "9\n";
-  out += "</DataArray>\n</Cells>\n<CellData Scalars=\"block\">\n<DataArray type=\"Int32\" Name=\"block\" format=\"ascii\">\n";
-  for (int b : mesh.quad_block) out += std::to_string(b + 1) + '\n';
-  out += "</DataArray>\n<DataArray type=\"Float64\" Name=\"scaled_jacobian\" format=\"ascii\">\n";
+  std::vector<std::array<double, 3>> points;
+  points.reserve(mesh.nodes.size());
+  for (size_t id = 0; id < mesh.nodes.size(); ++id) points.push_back(node_at(mesh, id, placement));
+  VtuCells cells;
+  cells.vtk_type = 9;
+  cells.nodes_per_cell = 4;
   for (size_t q = 0; q < mesh.quads.size(); ++q) {
-    put(out, quad_quality(mesh.corners(q)).scaled_jacobian);
-    out += '\n';
+    cells.connectivity.insert(cells.connectivity.end(), mesh.quads[q].begin(), mesh.quads[q].end());
+    cells.scaled_jacobian.push_back(quad_quality(mesh.corners(q)).scaled_jacobian);
   }
-  out += "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-  return out;
+  cells.block = mesh.quad_block;
+  return vtu_text(points, cells);
 }
 
 std::string abaqus_inp(const QuadMesh& mesh, const MeshPlacement& placement) {
@@ -97,7 +72,7 @@ std::string abaqus_inp(const QuadMesh& mesh, const MeshPlacement& placement) {
   out += "*NODE, NSET=NALL\n";
   for (size_t n = 0; n < mesh.nodes.size(); ++n) {
     out += std::to_string(n + 1) + ", ";
-    put_node(out, mesh, n, placement, ", ");
+    append_point(out, node_at(mesh, n, placement), ", ");
     out += '\n';
   }
   std::vector<std::vector<size_t>> block_quads(static_cast<size_t>(mesh.blocks));

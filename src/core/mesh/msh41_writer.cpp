@@ -11,6 +11,14 @@ void append_shortest(std::string& out, double v) {
   out.append(buf, r.ptr);
 }
 
+void append_point(std::string& out, const std::array<double, 3>& p, const char* separator) {
+  append_shortest(out, p[0]);
+  out += separator;
+  append_shortest(out, p[1]);
+  out += separator;
+  append_shortest(out, p[2]);
+}
+
 void assign_msh_nodes(std::vector<MshEntity>& entities, size_t node_count) {
   std::vector<char> owned(node_count, 0);
   for (MshEntity& e : entities) {
@@ -67,12 +75,7 @@ std::string msh41_text(const std::vector<std::array<double, 3>>& points, const s
     out += std::to_string(e.dim) + " " + std::to_string(e.tag) + " 0 " + std::to_string(e.nodes.size()) + "\n";
     for (int id : e.nodes) out += std::to_string(id + 1) + "\n";
     for (int id : e.nodes) {
-      const auto& p = points[static_cast<size_t>(id)];
-      append_shortest(out, p[0]);
-      out += ' ';
-      append_shortest(out, p[1]);
-      out += ' ';
-      append_shortest(out, p[2]);
+      append_point(out, points[static_cast<size_t>(id)], " ");
       out += '\n';
     }
   }

@@ -27,6 +27,9 @@ struct MshEntity {
 // Inputs: out; v. Appends v's shortest text that reads back to the same double (std::to_chars).
 void append_shortest(std::string& out, double v);
 
+// Inputs: out; p; separator. Appends "x<separator>y<separator>z", each as append_shortest writes it.
+void append_point(std::string& out, const std::array<double, 3>& p, const char* separator);
+
 // Inputs: points, every node's coordinates; entities, ordered by dimension. Output: the file's text.
 std::string msh41_text(const std::vector<std::array<double, 3>>& points, const std::vector<MshEntity>& entities);
 
