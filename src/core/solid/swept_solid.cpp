@@ -201,6 +201,14 @@ SweptSolid swept_solid_from_shape(const TopoDS_Shape& shape, const std::string& 
     if (shape.IsNull()) throw InputError("the file holds no shape");
     TopTools_IndexedMapOfShape numbers;
     TopExp::MapShapes(shape, TopAbs_FACE, numbers);
+    // Numbers OpenCASCADE's algorithms would loop on (the solid classifier, properties) first.
+    for (int k = 1; k <= numbers.Extent(); ++k) {
+      try {
+        check_finite_geometry(TopoDS::Face(numbers(k)));
+      } catch (const InputError& e) {
+        throw InputError(face_name(k) + ": " + e.what());
+      }
+    }
     Bnd_Box box;
     BRepBndLib::Add(shape, box);
     if (box.IsVoid()) throw InputError("the file holds no solid");
