@@ -157,6 +157,7 @@ void mesh_solid(const Arguments& args, const SweptSolid& solid, const MeshOption
   if (!args.json.empty()) std::cout << "  report:  " << args.json << "\n";
   if (!args.picture.empty()) std::cout << "  picture: " << args.picture << "\n";
 }
+
 }  // namespace
 
 void add_mesh_command(CLI::App& app) {
