@@ -167,7 +167,8 @@ void add_mesh_command(CLI::App& app) {
   args->face.add_to(*command);
   args->policy.add_to(*command);
   command->add_option("--size", args->size,
-                      "target element size (default: 1/20 of the longer side of the face's bounding box)")
+                      "target element size (default: 1/20 of the longer side of the face's bounding box; a solid's: of the "
+                      "longest side of its bounding box)")
       ->check(CLI::PositiveNumber);
   command->add_option("--intervals", args->intervals,
                       "X0,Y0,X1,Y1=N: the stretch from (X0,Y0) to (X1,Y1) gets exactly N intervals (repeatable)");
