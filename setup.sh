@@ -26,7 +26,7 @@ PACKAGES=(
   libtorch-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libopenblas0-pthread
   qtbase5-dev libqt5svg5-dev
-  libglpk-dev gmsh
+  libglpk-dev gmsh calculix-ccx
   freecad pybind11-dev python3-dev xvfb xauth
 )
 

@@ -1,8 +1,10 @@
 #include "cli/cli_common.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <map>
 
+#include "core/common/error.h"
 #include "core/common/format.h"
 
 namespace autoblock::cli {
@@ -76,9 +78,23 @@ void FaceArguments::add_to(CLI::App& command) {
           "N >= 1"));
 }
 
-InputFace FaceArguments::load(const std::string& file) const {
-  return load_input_face(file, face, "choose one with --face N (`autoblock faces " + file + "` lists them)");
+std::string FaceArguments::how_to_choose(const std::string& file) const {
+  return "choose one with --face N (`autoblock faces " + file + "` lists them)";
 }
+
+InputFace FaceArguments::load(const std::string& file) const { return load_input_face(file, face, how_to_choose(file)); }
+
+void require_extension(const std::string& path, const std::vector<std::string>& allowed, const std::string& option) {
+  if (path.empty()) return;
+  const std::string ext = std::filesystem::path(path).extension().string();
+  for (const std::string& a : allowed) {
+    if (ext == a) return;
+  }
+  std::string list;
+  for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
+  throw InputError(option + " " + path + ": expected a " + list + " file");
+}
+
 
 std::string summary_line(const Decomposition& d) {
   char buf[256];

@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -47,7 +48,13 @@ struct FaceArguments {
   void add_to(CLI::App& command);
   // Inputs: file. Output: its chosen face, checked. Throws InputError that says how to choose.
   InputFace load(const std::string& file) const;
+  // Inputs: file. Output: what the messages say when the file holds several faces and none was chosen.
+  std::string how_to_choose(const std::string& file) const;
 };
+
+// Inputs: path (empty: nothing to check); allowed extensions (".brep", ...); option, for the message.
+// Throws InputError when path has none of them.
+void require_extension(const std::string& path, const std::vector<std::string>& allowed, const std::string& option);
 
 // "7 blocks (minimum 5), 6 cuts, return 23.41, complete, 1.2 ms"
 std::string summary_line(const Decomposition& decomposition);

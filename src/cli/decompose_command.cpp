@@ -1,5 +1,6 @@
 // autoblock decompose FILE [--face N] [--policy NAME] [--out blocks.brep] [--json report.json]
 //                          [--picture blocks.svg] [--seed S] [--max-steps N] [--time-limit T]
+// A swept solid (FILE holds one solid, no --face): its cap is decomposed, --out writes the prisms.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -8,6 +9,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "core/api/face_actions.h"
+#include "core/api/solid_meshing.h"
 #include "core/common/error.h"
 #include "core/common/format.h"
 #include "core/io/decomposition_json.h"
@@ -18,17 +20,6 @@
 
 namespace autoblock::cli {
 namespace {
-
-void require_extension(const std::string& path, const std::vector<std::string>& allowed, const std::string& option) {
-  if (path.empty()) return;
-  const std::string ext = std::filesystem::path(path).extension().string();
-  for (const std::string& a : allowed) {
-    if (ext == a) return;
-  }
-  std::string list;
-  for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
-  throw InputError(option + " " + path + ": expected a " + list + " file");
-}
 
 struct Arguments {
   std::string file, out, json, picture;
@@ -47,7 +38,8 @@ std::string general_summary(const RegionDecomposition& d) {
 
 // Every face through core/api: the grid engine for a rectilinear face, the general one otherwise.
 void decompose(const Arguments& args) {
-  const InputFace face = args.face.load(args.file);
+  const MeshInput input = load_mesh_input(args.file, args.face.face, args.face.how_to_choose(args.file));
+  const InputFace& face = input.is_solid ? input.solid.cap : input.face;
   DecomposeSettings settings = args.policy.decompose_settings();
   // The blocks as OpenCASCADE cuts them from the input face (checked against the engine at every
   // cut), merged into one conformal model: neighbours share edges and vertices.
@@ -75,11 +67,25 @@ void decompose(const Arguments& args) {
       picture = decomposition_svg(face.planar.polygon, d.blocks, d.cuts, name + " - policy " + d.policy + " | " + summary);
     }
   }
+  std::string source = face.source;
+  if (input.is_solid) {
+    const SweptSolid& solid = input.solid;
+    source = solid.source + ": solid, caps Face" + std::to_string(solid.bottom) + " and Face" + std::to_string(solid.top) +
+             " (the blocks of Face" + std::to_string(solid.bottom) + " swept)";
+    if (!report.empty()) {
+      nlohmann::json json = nlohmann::json::parse(report);
+      json["solid"] = {{"caps", {solid.bottom, solid.top}},
+                       {"sweep", {solid.sweep.X(), solid.sweep.Y(), solid.sweep.Z()}},
+                       {"volume", solid.volume}};
+      report = json.dump(2) + "\n";
+    }
+  }
   // Everything is made before anything is written.
-  if (!args.out.empty()) write_shape_file(args.out, made.shape);
+  const TopoDS_Shape blocks = args.out.empty() ? TopoDS_Shape() : input.is_solid ? TopoDS_Shape(swept_blocks(input.solid, made).compound) : made.shape;
+  if (!args.out.empty()) write_shape_file(args.out, blocks);
   if (!args.json.empty()) write_text_file(args.json, report);
   if (!args.picture.empty()) write_picture(args.picture, picture);
-  std::cout << face.source << ": " << policy << ": " << summary << "\n";
+  std::cout << source << ": " << policy << ": " << summary << "\n";
   if (!args.out.empty()) std::cout << "  blocks:  " << args.out << "\n";
   if (!args.json.empty()) std::cout << "  report:  " << args.json << "\n";
   if (!args.picture.empty()) std::cout << "  picture: " << args.picture << "\n";
@@ -90,10 +96,11 @@ void decompose(const Arguments& args) {
 void add_decompose_command(CLI::App& app) {
   auto args = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("decompose", "Cut one planar face into blocks (rectangles on faces with edges along two perpendicular directions, quadrilaterals otherwise).");
-  command->add_option("FILE", args->file, "a .brep, .step or .stp file: one planar face, or a part with --face N")->required();
+  command->add_option("FILE", args->file, "a .brep, .step or .stp file: one planar face, a part with --face N, or a swept solid")->required();
   args->face.add_to(*command);
   args->policy.add_to(*command);
-  command->add_option("--out", args->out, "write the blocks (a conformal compound of faces sharing their edges) to a .brep, .step or .stp file");
+  command->add_option("--out", args->out, "write the blocks (a conformal compound of faces sharing their edges; a swept solid's: "
+                                          "prisms sharing their faces) to a .brep, .step or .stp file");
   command->add_option("--json", args->json, "write the report as JSON");
   command->add_option("--picture", args->picture, "write a picture of the blocks (.svg or .png)");
   command->callback([args] {

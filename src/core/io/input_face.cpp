@@ -36,6 +36,8 @@ bool finite(const gp_XYZ& p) { return finite(p.X()) && finite(p.Y()) && finite(p
 bool finite(const gp_Pnt& p) { return finite(p.XYZ()); }
 bool finite(const gp_Pnt2d& p) { return finite(p.X()) && finite(p.Y()); }
 
+}  // namespace
+
 // Every number OpenCASCADE computes with is finite and consistent before it computes anything
 // that loops on a bad parameter (projections, periodic adjustments): tolerances (finite, not
 // negative), the surface at its origin, each edge's parameter range (finite, increasing) and its
@@ -102,6 +104,8 @@ double check_finite_geometry(const TopoDS_Face& face) {
   }
   return largest;
 }
+
+namespace {
 
 // The smallest distance between two distinct grid coordinates: the face's smallest feature.
 double smallest_feature(const Grid& grid) {

@@ -42,6 +42,14 @@ InputFace load_input_face(const std::string& path, int face_number = 0, const st
 // name. Output: the face in every form. Throws InputError (see shape_file.h).
 InputFace input_face_from_brep_text(const std::string& text, const std::string& source);
 
+// Inputs: face, any OpenCASCADE face (also one of a solid's).
+// Output: the largest of its tolerances. Throws InputError (without the source) when a number
+// OpenCASCADE would compute with is not finite or not consistent: a tolerance, the surface at its
+// origin, an edge's parameter range or its curve's ends off its vertices, its curve on the face, or
+// the face so far from its surface's origin that OpenCASCADE cannot compute on it precisely. Run it
+// before any OpenCASCADE algorithm on a face from outside (some loop for ever on such numbers).
+double check_finite_geometry(const TopoDS_Face& face);
+
 // Inputs: face; source, its name. Output: the face in every form. Throws InputError (also when
 // OpenCASCADE cannot evaluate the face's geometry).
 InputFace input_face_from_occt(const TopoDS_Face& face, const std::string& source);

@@ -31,6 +31,22 @@ std::string block_colour(int index) {
   return buf;
 }
 
+std::string svg_page_start(double width, double height, double margin, const std::string& title) {
+  std::ostringstream svg;
+  svg.precision(6);
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
+      << width << ' ' << height << "\">\n";
+  svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  // The title's first line, then the rest after " | ".
+  const size_t bar = title.find(" | ");
+  const std::string lines[2] = {title.substr(0, bar), bar == std::string::npos ? "" : title.substr(bar + 3)};
+  for (int l = 0; l < 2; ++l) {
+    svg << "<text x=\"" << margin << "\" y=\"" << 20 + 18 * l << "\" font-family=\"sans-serif\" font-size=\"" << (l ? 13 : 15)
+        << "\">" << xml_escape(lines[l]) << "</text>\n";
+  }
+  return svg.str();
+}
+
 namespace {
 
 // A picture of a face: the model's box scaled into the page (y up), a title of two lines.
@@ -46,16 +62,7 @@ struct Canvas {
     height = box.height() * k + 2 * margin + title_height;
     left = 0.5 * (width - box.width() * k);
     svg.precision(6);
-    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
-        << "\" viewBox=\"0 0 " << width << ' ' << height << "\">\n";
-    svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    // The title's first line, then the rest after " | ".
-    const size_t bar = title.find(" | ");
-    const std::string lines[2] = {title.substr(0, bar), bar == std::string::npos ? "" : title.substr(bar + 3)};
-    for (int l = 0; l < 2; ++l) {
-      svg << "<text x=\"" << margin << "\" y=\"" << 20 + 18 * l << "\" font-family=\"sans-serif\" font-size=\"" << (l ? 13 : 15)
-          << "\">" << xml_escape(lines[l]) << "</text>\n";
-    }
+    svg << svg_page_start(width, height, margin, title);
   }
   double sx(double x) const { return left + (x - box.xmin) * k; }
   double sy(double y) const { return title_height + margin + (box.ymax - y) * k; }

@@ -22,6 +22,10 @@ std::string decomposition_svg(const RectilinearPolygon& polygon, const std::vect
 //          left unfinished in grey, the origin of every cut numbered in cut order.
 std::string region_decomposition_svg(const Region& face, const RegionDecomposition& d, const std::string& title);
 
+// Inputs: width, height (the page); margin, the title's left margin; title (" | " starts a second,
+// smaller line). Output: the SVG document's opening: the <svg> element, a white background, the title.
+std::string svg_page_start(double width, double height, double margin, const std::string& title);
+
 // Inputs: index. Output: a distinct pastel colour "#rrggbb" (hues a golden angle apart).
 std::string block_colour(int index);
 

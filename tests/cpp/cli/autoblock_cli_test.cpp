@@ -96,6 +96,7 @@ TEST_CASE("autoblock generate, decompose and eval work end to end", "[cli]") {
 TEST_CASE("autoblock: every bad input gets exit 2 and a one-line error", "[cli][errors]") {
   const std::string folder = test::temporary_folder("cli-bad");
   for (const test::BadShape& bad : test::bad_shapes()) {
+    if (bad.name == "solid") continue;  // a box is a swept solid: its cap is decomposed (solid_cli_test.cpp)
     const std::string path = folder + "/" + bad.name + ".brep";
     write_shape_file(path, bad.shape);
     const auto r = test::run_autoblock("decompose '" + path + "' --json '" + folder + "/r.json'");

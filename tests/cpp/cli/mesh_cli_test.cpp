@@ -135,6 +135,7 @@ TEST_CASE("autoblock mesh: bad requests get exit 2, one line, and nothing writte
                     "does not exist");
   CHECK_FALSE(std::filesystem::exists(folder + "/r.json"));
   for (const test::BadShape& bad : test::bad_shapes()) {
+    if (bad.name == "solid") continue;  // a box is a swept solid: `mesh` gives hexahedra (solid_cli_test.cpp)
     const std::string path = folder + "/" + bad.name + ".brep";
     write_shape_file(path, bad.shape);
     INFO(bad.name);

@@ -2,7 +2,8 @@
 // and the fuzzers (tests/fuzz) are refused with one line and exit 2, by the hardened reader itself,
 // not by the reader's time budget (shape_file.h). Inputs: tests/data/hostile/*.brep, named by what
 // they did before: hang_reader_* (OpenCASCADE's BREP reader looped for ever), hang_checker_* (its
-// checker or projections looped on an infinite parameter), hang_splitter_* (the cut never ended),
+// checker or projections looped on an infinite parameter), hang_classifier_* (a swept solid's: the
+// solid classifier looped on an edge whose curve runs off its vertices), hang_splitter_* (the cut never ended),
 // internal_* (exit 1: OpenCASCADE's cut disagreed with the polygon or failed), crash_* (a
 // segmentation fault inside OpenCASCADE's reader; contained by the reading child process).
 #include <catch2/catch.hpp>

@@ -1,0 +1,281 @@
+#include "core/solid/swept_solid.h"
+
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepGProp.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
+#include <Precision.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <TopoDS_Shell.hxx>
+#include <gp_Dir.hxx>
+#include <gp_Pnt.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <tuple>
+
+#include "core/common/error.h"
+#include "core/common/format.h"
+#include "core/geometry/occt_face.h"
+
+namespace autoblock {
+namespace {
+
+int count_of(const TopoDS_Shape& shape, TopAbs_ShapeEnum type) {
+  TopTools_IndexedMapOfShape map;
+  if (!shape.IsNull()) TopExp::MapShapes(shape, type, map);
+  return map.Extent();
+}
+
+std::string point_text(const gp_Pnt& p, double tolerance) {
+  return "(" + format_number(p.X(), tolerance) + ", " + format_number(p.Y(), tolerance) + ", " +
+         format_number(p.Z(), tolerance) + ")";
+}
+
+std::string vector_text(const gp_Vec& v, double tolerance) { return point_text(gp_Pnt(v.XYZ()), tolerance); }
+
+std::string face_name(int number) { return "face " + std::to_string(number); }
+
+// Throws when a face of shell has an edge no other face shares (an open shell), naming the face.
+void require_closed(const TopoDS_Shape& shell, const TopTools_IndexedMapOfShape& numbers, double tolerance) {
+  TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
+  TopExp::MapShapesAndUniqueAncestors(shell, TopAbs_EDGE, TopAbs_FACE, edge_faces);
+  for (int e = 1; e <= edge_faces.Extent(); ++e) {
+    const TopoDS_Edge& edge = TopoDS::Edge(edge_faces.FindKey(e));
+    const TopTools_ListOfShape& faces = edge_faces(e);
+    if (BRep_Tool::Degenerated(edge) || faces.Extent() != 1) continue;
+    const TopoDS_Face& face = TopoDS::Face(faces.First());
+    if (BRep_Tool::IsClosed(edge, face)) continue;  // a seam: both sides are the same face
+    TopoDS_Vertex a, b;
+    TopExp::Vertices(edge, a, b);
+    throw InputError("the shell is open: " + face_name(numbers.FindIndex(face)) + " has a free edge from " +
+                     point_text(BRep_Tool::Pnt(a), tolerance) + " to " + point_text(BRep_Tool::Pnt(b), tolerance) +
+                     " that no other face shares (a swept solid is closed)");
+  }
+}
+
+// The solid of shape (its only solid, or its only shell closed into one), oriented outwards.
+TopoDS_Solid the_solid(const TopoDS_Shape& shape, const TopTools_IndexedMapOfShape& numbers, double tolerance) {
+  const int solids = count_of(shape, TopAbs_SOLID);
+  if (solids > 1) {
+    throw InputError("the file holds " + std::to_string(solids) + " solids; a swept solid is exactly one solid");
+  }
+  TopoDS_Solid solid;
+  if (solids == 1) {
+    TopExp_Explorer it(shape, TopAbs_SOLID);
+    solid = TopoDS::Solid(it.Current());
+    const int shells = count_of(solid, TopAbs_SHELL);
+    if (shells != 1) {
+      throw InputError("the solid has " + std::to_string(shells) +
+                       " shells (a cavity inside it); a swept solid has one closed shell");
+    }
+    require_closed(solid, numbers, tolerance);
+  } else {
+    const int shells = count_of(shape, TopAbs_SHELL);
+    if (shells != 1) {
+      throw InputError("the file holds no solid and " + counted(shells, "shell") + "; a swept solid is one closed solid");
+    }
+    TopExp_Explorer it(shape, TopAbs_SHELL);
+    const TopoDS_Shell shell = TopoDS::Shell(it.Current());
+    require_closed(shell, numbers, tolerance);
+    BRepBuilderAPI_MakeSolid make(shell);
+    if (!make.IsDone()) throw InputError("OpenCASCADE cannot make a solid of the closed shell");
+    solid = make.Solid();
+  }
+  BRepClass3d_SolidClassifier classifier(solid);
+  classifier.PerformInfinitePoint(Precision::Confusion());
+  if (classifier.State() == TopAbs_IN) solid.Reverse();
+  return solid;
+}
+
+struct CapFace {
+  int number = 0;
+  gp_Dir normal;  // outward
+  double area = 0.0;
+  gp_Pnt centroid;
+  std::vector<gp_Pnt> vertices;
+};
+
+CapFace cap_face(const TopoDS_Face& face, int number, const gp_Dir& normal) {
+  CapFace c;
+  c.number = number;
+  c.normal = normal;
+  GProp_GProps properties;
+  BRepGProp::SurfaceProperties(face, properties);
+  c.area = properties.Mass();
+  c.centroid = properties.CentreOfMass();
+  TopTools_IndexedMapOfShape vertices;
+  TopExp::MapShapes(face, TopAbs_VERTEX, vertices);
+  for (int v = 1; v <= vertices.Extent(); ++v) c.vertices.push_back(BRep_Tool::Pnt(TopoDS::Vertex(vertices(v))));
+  return c;
+}
+
+// A pair of opposite faces tried as caps: how far it got (0 caps differ, 1 a side is not parallel,
+// 2 volume differs, 3 good) and why it stopped.
+struct CapTrial {
+  int stage = 0;
+  std::string why;
+  const CapFace* bottom = nullptr;
+  const CapFace* top = nullptr;
+  gp_Vec sweep;
+};
+
+CapTrial try_caps(const CapFace& bottom, const CapFace& top, const std::vector<CapFace>& planar, double volume,
+                  double tolerance) {
+  CapTrial t;
+  t.bottom = &bottom;
+  t.top = &top;
+  t.sweep = gp_Vec(bottom.centroid, top.centroid);
+  const std::string pair = face_name(bottom.number) + " and " + face_name(top.number);
+  const double scale = std::max(bottom.area, top.area);
+  if (std::fabs(bottom.area - top.area) > 1e-7 * scale) {
+    t.why = "the caps differ: " + pair + " are parallel and opposite but not translated copies of each other (areas " +
+            format_significant(bottom.area, 6) + " and " + format_significant(top.area, 6) + ")";
+    return t;
+  }
+  if (bottom.vertices.size() != top.vertices.size()) {
+    t.why = "the caps differ: " + pair + " are parallel and opposite but not translated copies of each other (" +
+            counted(static_cast<long long>(bottom.vertices.size()), "vertex", "vertices") + " and " +
+            std::to_string(top.vertices.size()) + ")";
+    return t;
+  }
+  for (const gp_Pnt& p : bottom.vertices) {
+    const gp_Pnt moved = p.Translated(t.sweep);
+    const bool found = std::any_of(top.vertices.begin(), top.vertices.end(),
+                                   [&](const gp_Pnt& q) { return q.Distance(moved) <= tolerance; });
+    if (!found) {
+      t.why = "the caps differ: " + pair + " are parallel and opposite but not translated copies of each other (" +
+              face_name(bottom.number) + "'s vertex " + point_text(p, tolerance) + " moved by " +
+              vector_text(t.sweep, tolerance) + " is no vertex of " + face_name(top.number) + ")";
+      return t;
+    }
+  }
+  t.stage = 1;
+  const gp_Dir direction(t.sweep);
+  for (const CapFace& side : planar) {
+    if (side.number == bottom.number || side.number == top.number) continue;
+    const double sine = std::fabs(side.normal.Dot(direction));
+    if (sine > 1e-7) {
+      t.why = face_name(side.number) + " is not parallel to the sweep " + vector_text(t.sweep, tolerance) + " from " +
+              face_name(bottom.number) + " to " + face_name(top.number) + " (it makes " +
+              format_significant(std::asin(std::min(1.0, sine)) * 180.0 / M_PI, 3) +
+              " degrees with it): a swept solid's side faces run along the sweep";
+      return t;
+    }
+  }
+  t.stage = 2;
+  const double expected = bottom.area * std::fabs(t.sweep.Dot(gp_Vec(bottom.normal)));
+  if (std::fabs(volume - expected) > 1e-6 * std::max(volume, expected)) {
+    t.why = "the solid is not the sweep of " + face_name(bottom.number) + " along " + vector_text(t.sweep, tolerance) +
+            ": its volume " + format_significant(volume, 6) + " differs from the cap's area times the height, " +
+            format_significant(expected, 6);
+    return t;
+  }
+  t.stage = 3;
+  return t;
+}
+
+}  // namespace
+
+bool holds_one_solid(const TopoDS_Shape& shape) {
+  const int solids = count_of(shape, TopAbs_SOLID);
+  if (solids == 1) return true;
+  return solids == 0 && count_of(shape, TopAbs_SHELL) >= 1 && count_of(shape, TopAbs_FACE) > 1;
+}
+
+SweptSolid swept_solid_from_shape(const TopoDS_Shape& shape, const std::string& source) {
+  SweptSolid out;
+  out.source = source;
+  try {
+    if (shape.IsNull()) throw InputError("the file holds no shape");
+    TopTools_IndexedMapOfShape numbers;
+    TopExp::MapShapes(shape, TopAbs_FACE, numbers);
+    // Numbers OpenCASCADE's algorithms would loop on (the solid classifier, properties) first.
+    for (int k = 1; k <= numbers.Extent(); ++k) {
+      try {
+        check_finite_geometry(TopoDS::Face(numbers(k)));
+      } catch (const InputError& e) {
+        throw InputError(face_name(k) + ": " + e.what());
+      }
+    }
+    Bnd_Box box;
+    BRepBndLib::Add(shape, box);
+    if (box.IsVoid()) throw InputError("the file holds no solid");
+    double x0, y0, z0, x1, y1, z1;
+    box.Get(x0, y0, z0, x1, y1, z1);
+    const double size = std::sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0) + (z1 - z0) * (z1 - z0));
+    double tolerance = 1e-7 * size;
+    for (TopExp_Explorer it(shape, TopAbs_VERTEX); it.More(); it.Next()) {
+      tolerance = std::max(tolerance, 2.0 * BRep_Tool::Tolerance(TopoDS::Vertex(it.Current())));
+    }
+    out.solid = the_solid(shape, numbers, tolerance);
+    out.faces.resize(static_cast<size_t>(numbers.Extent()));
+
+    std::vector<CapFace> planar;
+    for (TopExp_Explorer it(out.solid, TopAbs_FACE); it.More(); it.Next()) {
+      const TopoDS_Face face = TopoDS::Face(it.Current());
+      const int number = numbers.FindIndex(face);
+      if (number == 0) throw std::logic_error("swept solid: a face of the solid is not in the shape's face map");
+      out.faces[static_cast<size_t>(number - 1)] = face;
+      gp_Dir normal;
+      if (!planar_face_normal(face, &normal)) {
+        throw InputError(face_name(number) + " is curved (" + with_article(surface_name(face)) +
+                         "): a swept solid's faces are all planar");
+      }
+      planar.push_back(cap_face(face, number, normal));
+    }
+    std::sort(planar.begin(), planar.end(), [](const CapFace& a, const CapFace& b) { return a.number < b.number; });
+
+    GProp_GProps volume;
+    BRepGProp::VolumeProperties(out.solid, volume);
+    out.volume = volume.Mass();
+    GProp_GProps area;
+    BRepGProp::SurfaceProperties(out.solid, area);
+    out.area = area.Mass();
+
+    std::optional<CapTrial> best, failed;
+    auto key = [](const CapTrial& t) {
+      return std::make_tuple(t.bottom->vertices.size(), t.bottom->area, -t.bottom->number, -t.top->number);
+    };
+    for (size_t i = 0; i < planar.size(); ++i) {
+      for (size_t j = i + 1; j < planar.size(); ++j) {
+        if (planar[i].normal.Dot(planar[j].normal) > -1.0 + 1e-12) continue;
+        const CapTrial t = try_caps(planar[i], planar[j], planar, out.volume, tolerance);
+        if (t.stage == 3) {
+          if (!best || key(t) > key(*best)) best = t;
+        } else if (!failed || std::make_pair(t.stage, t.bottom->area + t.top->area) >
+                                  std::make_pair(failed->stage, failed->bottom->area + failed->top->area)) {
+          failed = t;
+        }
+      }
+    }
+    if (!best) {
+      if (failed) throw InputError(failed->why);
+      throw InputError("no two faces are parallel and opposite: a swept solid has two parallel caps");
+    }
+    out.bottom = best->bottom->number;
+    out.top = best->top->number;
+    out.sweep = best->sweep;
+  } catch (const InputError& e) {
+    throw InputError(source + ": " + e.what());
+  } catch (const Standard_Failure& e) {
+    throw InputError(source + ": OpenCASCADE cannot evaluate the solid (" + e.DynamicType()->Name() + ": " +
+                     e.GetMessageString() + ")");
+  }
+  out.cap = input_face_from_occt(out.faces[static_cast<size_t>(out.bottom - 1)],
+                                 source + " (Face" + std::to_string(out.bottom) + ", a cap of the solid)");
+  return out;
+}
+
+}  // namespace autoblock

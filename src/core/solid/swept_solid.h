@@ -1,0 +1,44 @@
+// A solid that is a straight sweep of a planar face: two congruent planar caps (one a translated
+// copy of the other) joined by planar side faces that all run along one direction, the sweep
+// vector (normal to the caps or oblique). Detected from any shape read from a file; anything else
+// is an InputError that says why, naming the face (numbered as FreeCAD numbers them: face k is
+// Face k of `autoblock faces`).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <TopoDS_Solid.hxx>
+#include <gp_Vec.hxx>
+
+#include "core/io/input_face.h"
+
+namespace autoblock {
+
+struct SweptSolid {
+  std::string source;              // file name or description, for messages and reports
+  TopoDS_Solid solid;              // model coordinates, oriented (its faces' normals point outwards)
+  std::vector<TopoDS_Face> faces;  // faces[k - 1] is face k (FreeCAD's numbering of the shape read)
+  int bottom = 0, top = 0;         // the caps' face numbers: the sweep runs from bottom to top
+  gp_Vec sweep;                    // top = bottom translated by sweep (model coordinates)
+  double volume = 0.0, area = 0.0; // the solid's volume and surface area (OpenCASCADE's GProp)
+  InputFace cap;                   // the bottom cap, checked as the 2-D pipeline checks a face
+};
+
+// Inputs:  shape, as read from a file (a solid, a compound holding one solid, or a closed shell);
+//          source, its name for messages.
+// Outputs: the solid, its caps and sweep vector. When several face pairs qualify (a box), the caps
+//          with the most vertices, then the largest area, then the lowest face numbers.
+// Throws InputError "<source>: <why>", one line, for: no solid or shell; more than one solid; an open
+// shell (a face with a free edge); a solid with more than one shell (a cavity); a curved face; no two
+// parallel opposite faces; caps that are not translated copies of each other; a face not parallel to
+// the sweep; a cap the 2-D pipeline rejects (its message, the cap named).
+SweptSolid swept_solid_from_shape(const TopoDS_Shape& shape, const std::string& source);
+
+// Inputs: shape. Output: true when it should be meshed as a solid rather than as one face: it holds
+// exactly one solid, or no solid and a shell of more than one face.
+bool holds_one_solid(const TopoDS_Shape& shape);
+
+}  // namespace autoblock

@@ -1,0 +1,184 @@
+// Swept solids meshed with hexahedra through core/api: generated faces (rectangle unions with and
+// without holes, general polygons) extruded normally and obliquely, some turned into tilted planes;
+// every mesh conformal by the independent check, volumes exact, the prism blocks conformal.
+#include "support/catch_torch.h"
+
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <GProp_GProps.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <gp_Ax1.hxx>
+#include <gp_Trsf.hxx>
+
+#include <cmath>
+#include <random>
+
+#include "core/api/solid_meshing.h"
+#include "core/common/error.h"
+#include "core/geometry/occt_face.h"
+#include "support/test_shapes.h"
+
+using namespace autoblock;
+
+namespace {
+
+struct Extrusion {
+  TopoDS_Shape solid;
+  double volume = 0.0;  // the face's area times the height
+  bool normal = true, rectilinear = true;
+};
+
+// face swept by (dx, dy, h), then turned about a random axis when turn.
+Extrusion extrude(const TopoDS_Face& face, double dx, double dy, double h, bool turn, std::mt19937_64& rng) {
+  Extrusion e;
+  GProp_GProps area;
+  BRepGProp::SurfaceProperties(face, area);
+  e.volume = area.Mass() * h;
+  e.normal = dx == 0 && dy == 0;
+  e.solid = BRepPrimAPI_MakePrism(face, gp_Vec(dx, dy, h)).Shape();
+  if (turn) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    gp_Trsf t;
+    t.SetRotation(gp_Ax1(gp_Pnt(u(rng) * 5, u(rng) * 5, u(rng) * 5), gp_Dir(u(rng), u(rng), 1.5)), 0.3 + u(rng));
+    e.solid = BRepBuilderAPI_Transform(e.solid, t, true).Shape();
+  }
+  return e;
+}
+
+DecomposeSettings greedy() {
+  DecomposeSettings s;
+  s.policy = "greedy";
+  return s;
+}
+
+// The prisms share their inner faces: every face of the compound lies on one or two blocks, and as many
+// lie on two as the blocks' faces minus the compound's distinct faces.
+void check_blocks(const SolidMeshing& m, double epsilon = 1e-9) {
+  const PrismBlocks blocks = solid_meshing_blocks(m);
+  REQUIRE(blocks.solids.size() == m.blocks());
+  double volume = 0.0;
+  int block_faces = 0;
+  for (const TopoDS_Solid& s : blocks.solids) {
+    GProp_GProps p;
+    BRepGProp::VolumeProperties(s, p);
+    volume += p.Mass();
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(s, TopAbs_FACE, faces);
+    block_faces += faces.Extent();
+  }
+  CHECK(volume == Approx(m.solid.volume).epsilon(epsilon));
+  TopTools_IndexedDataMapOfShapeListOfShape face_solids;
+  TopExp::MapShapesAndUniqueAncestors(blocks.compound, TopAbs_FACE, TopAbs_SOLID, face_solids);
+  int shared = 0;
+  for (int f = 1; f <= face_solids.Extent(); ++f) {
+    CHECK(face_solids(f).Extent() <= 2);
+    shared += face_solids(f).Extent() == 2;
+  }
+  CHECK(block_faces - face_solids.Extent() == shared);
+  if (m.blocks() > 1) CHECK(shared >= static_cast<int>(m.blocks()) - 1);
+  CHECK(BRepCheck_Analyzer(blocks.compound).IsValid());
+}
+
+}  // namespace
+
+TEST_CASE("swept solids of generated faces: conformal, exact volumes, SJ 1 for normal rectilinear ones", "[solid][hex][api]") {
+  std::mt19937_64 rng(20261130);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int checked = 0, blocks_checked = 0;
+  for (const bool holes : {false, true}) {
+    GeneratorOptions options;
+    options.holes = holes;
+    options.max_rects = 8;
+    const auto shapes = test::generated_shapes(16, holes ? 71 : 70, options);
+    for (size_t k = 0; k < shapes.size(); ++k) {
+      const TopoDS_Face face = occt_face_from_polygon(shapes[k].polygon, 0.0, true);
+      const bool oblique = k % 3 == 1, turn = k % 4 == 2;
+      const double h = 2 + 6 * u(rng);
+      const Extrusion e = extrude(face, oblique ? 3 * u(rng) - 1.5 : 0, oblique ? 2 * u(rng) - 1 : 0, h, turn, rng);
+      const SweptSolid solid = swept_solid_from_shape(e.solid, "extrusion " + std::to_string(k));
+      SolidMeshOptions o;
+      o.cap.size = 1.0;
+      if (k % 5 == 3) o.grading = 1.3;
+      const SolidMeshing m = mesh_swept_solid(solid, greedy(), o);
+      INFO("shape " << k << (holes ? " with holes" : "") << (oblique ? ", oblique" : "") << (turn ? ", turned" : "") << ": "
+                    << m.conformity.problem);
+      CHECK(m.conformity.conformal);
+      CHECK(m.conformity.inverted_hexes == 0);
+      CHECK(m.conformity.hex_volume == Approx(e.volume).epsilon(1e-9));
+      CHECK(solid.volume == Approx(e.volume).epsilon(1e-9));
+      CHECK(m.mesh.layers == std::max(1, static_cast<int>(std::lround(solid.sweep.Magnitude()))));
+      CHECK(m.mesh.hexes.size() == m.cap.result.mesh.quads.size() * static_cast<size_t>(m.mesh.layers));
+      if (e.normal) {
+        CHECK(m.quality.min_scaled_jacobian >= 1.0 - 1e-12);
+        CHECK(m.quality.irregular_edges == 0);
+      } else {
+        CHECK(m.quality.min_scaled_jacobian > 0.0);
+        CHECK(m.quality.min_scaled_jacobian < 1.0);
+      }
+      if (k % 4 == 0) {
+        check_blocks(m);
+        ++blocks_checked;
+      }
+      ++checked;
+    }
+  }
+  CHECK(checked == 32);
+  CHECK(blocks_checked == 8);
+}
+
+TEST_CASE("swept solids of general faces (edges at any angle): conformal, exact volumes", "[solid][hex][api]") {
+  std::mt19937_64 rng(7);
+  int k = 0;
+  for (const GeneralKind kind : {GeneralKind::Polygon, GeneralKind::Chamfered, GeneralKind::Turned}) {
+    for (const bool holes : {false, true}) {
+      const RectilinearPolygon polygon = test::general_polygon(static_cast<std::uint64_t>(300 + k), kind, holes);
+      const TopoDS_Face face = occt_face_from_polygon(polygon, 1.0, true);
+      const Extrusion e = extrude(face, k % 2 ? 0.7 : 0, 0, 3.5, k == 2, rng);
+      const SweptSolid solid = swept_solid_from_shape(e.solid, "general " + std::to_string(k));
+      SolidMeshOptions o;
+      o.layers = 3;
+      const SolidMeshing m = mesh_swept_solid(solid, DecomposeSettings{}, o);
+      INFO("general face " << k << ": " << m.conformity.problem);
+      CHECK(m.cap.general() == (kind != GeneralKind::Turned));
+      CHECK(m.conformity.conformal);
+      // The cap's nodes lie on its lattice (within its quantum, as the 2-D check allows).
+      CHECK(m.conformity.hex_volume == Approx(e.volume).epsilon(1e-6));
+      CHECK(m.mesh.layers == 3);
+      if (k < 2) check_blocks(m, 1e-6);
+      ++k;
+    }
+  }
+}
+
+TEST_CASE("swept solid requests: layers, grading and sizes that cannot be met are input errors", "[solid][hex][api]") {
+  const TopoDS_Face face = occt_face_from_polygon(test::polygon_of({{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}}), 0, true);
+  const SweptSolid solid = swept_solid_from_shape(BRepPrimAPI_MakePrism(face, gp_Vec(0, 0, 3)).Shape(), "l");
+  SolidMeshOptions o;
+  o.grading = -1;
+  CHECK_THROWS_AS(mesh_swept_solid(solid, greedy(), o), InputError);
+  o = SolidMeshOptions{};
+  o.cap.size = 1e-3;  // 4000 x 4000 x 3000 / 4 hexahedra
+  CHECK_THROWS_WITH(mesh_swept_solid(solid, greedy(), o), Catch::Matchers::Contains("limit") ||
+                                                          Catch::Matchers::Contains("hexahedra"));
+  o = SolidMeshOptions{};
+  o.layers = 4;
+  o.grading = 2.0;
+  const SolidMeshing m = mesh_swept_solid(solid, greedy(), o);
+  CHECK(m.mesh.layers == 4);
+  CHECK(m.conformity.conformal);
+  CHECK(m.default_size);
+  CHECK(m.target_size == Approx(4.0 / 20));
+  const nlohmann::json report = solid_meshing_json("l.brep", m);
+  CHECK(report["kind"] == "solid");
+  CHECK(report["hexahedra"] == m.mesh.hexes.size());
+  CHECK(report["conformal"] == true);
+  CHECK(report["quality"]["irregular_edges"] == 0);
+  CHECK(report["cap"]["quads"] == m.cap.result.mesh.quads.size());
+  CHECK(report["sweep_angle"].get<double>() == Approx(0.0).margin(1e-9));
+  const std::string svg = solid_meshing_svg(m, "l | hexahedra");
+  CHECK(svg.find("<polygon") != std::string::npos);
+}

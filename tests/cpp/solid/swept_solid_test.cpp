@@ -1,0 +1,189 @@
+// Swept solids: caps and sweep found on good solids (normal, oblique, in any plane, a closed shell),
+// and one clear error per class of bad solid, naming the face.
+#include <catch2/catch.hpp>
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Shell.hxx>
+#include <gp_Trsf.hxx>
+
+#include "core/common/error.h"
+#include "core/geometry/occt_face.h"
+#include "core/solid/swept_solid.h"
+#include "support/test_shapes.h"
+
+using namespace autoblock;
+using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
+
+namespace {
+
+// The L-shaped face (0,0) (4,0) (4,2) (2,2) (2,4) (0,4) at z = 0, swept by (dx, dy, dz).
+TopoDS_Shape l_prism(double dx, double dy, double dz) {
+  const TopoDS_Face face =
+      occt_face_from_polygon(test::polygon_of({{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}}), 0, true);
+  return BRepPrimAPI_MakePrism(face, gp_Vec(dx, dy, dz)).Shape();
+}
+
+TopoDS_Shape moved(const TopoDS_Shape& shape, const gp_Trsf& t) { return BRepBuilderAPI_Transform(shape, t, true).Shape(); }
+
+// A closed polyhedron: points, and faces as point indices (each face planar, boundaries matching).
+TopoDS_Shape polyhedron(const std::vector<gp_Pnt>& points, const std::vector<std::vector<int>>& faces) {
+  BRepBuilderAPI_Sewing sewing;
+  for (const auto& face : faces) {
+    BRepBuilderAPI_MakePolygon polygon;
+    for (int k : face) polygon.Add(points[static_cast<size_t>(k)]);
+    polygon.Close();
+    sewing.Add(BRepBuilderAPI_MakeFace(polygon.Wire(), true).Face());
+  }
+  sewing.Perform();
+  TopExp_Explorer it(sewing.SewedShape(), TopAbs_SHELL);
+  REQUIRE(it.More());
+  BRepBuilderAPI_MakeSolid solid(TopoDS::Shell(it.Current()));
+  REQUIRE(solid.IsDone());
+  return solid.Solid();
+}
+
+// Two quadrilaterals at z = 0 and z = 1 joined by four planar sides.
+TopoDS_Shape prismatoid(const std::vector<gp_Pnt>& bottom, const std::vector<gp_Pnt>& top) {
+  std::vector<gp_Pnt> points = bottom;
+  points.insert(points.end(), top.begin(), top.end());
+  return polyhedron(points, {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
+}
+
+std::string error_of(const TopoDS_Shape& shape) {
+  try {
+    swept_solid_from_shape(shape, "part.step");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void check_error(const TopoDS_Shape& shape, const std::string& expected) {
+  const std::string message = error_of(shape);
+  INFO(message);
+  CHECK_THAT(message, StartsWith("part.step: ") && Contains(expected));
+  CHECK(message.find('\n') == std::string::npos);
+}
+
+}  // namespace
+
+TEST_CASE("swept solids: the caps and the sweep of normal and oblique extrusions", "[solid]") {
+  SECTION("a normal extrusion of an L") {
+    const SweptSolid s = swept_solid_from_shape(l_prism(0, 0, 3), "l");
+    CHECK(s.faces.size() == 8);
+    CHECK(s.sweep.Magnitude() == Approx(3.0));
+    CHECK(std::fabs(s.sweep.Z()) == Approx(3.0));
+    CHECK(s.volume == Approx(12.0 * 3.0));
+    CHECK(s.area == Approx(2 * 12.0 + 16.0 * 3.0));
+    CHECK(s.bottom != s.top);
+    CHECK_FALSE(s.cap.is_general());
+    CHECK(s.cap.planar.polygon.outer.size() == 6);
+  }
+  SECTION("an oblique extrusion: the sweep is the translation, not the normal") {
+    const SweptSolid s = swept_solid_from_shape(l_prism(1, 0.5, 3), "l");
+    const double sign = s.sweep.Z() > 0 ? 1 : -1;
+    CHECK(s.sweep.X() == Approx(sign * 1.0));
+    CHECK(s.sweep.Y() == Approx(sign * 0.5));
+    CHECK(s.volume == Approx(36.0));
+  }
+  SECTION("turned into another plane, and given as a closed shell") {
+    gp_Trsf turn;
+    turn.SetRotation(gp_Ax1(gp_Pnt(1, 2, 3), gp_Dir(1, 2, 2)), 0.7);
+    const TopoDS_Shape solid = moved(l_prism(0, 0, 3), turn);
+    const SweptSolid s = swept_solid_from_shape(solid, "turned");
+    CHECK(s.sweep.Magnitude() == Approx(3.0));
+    CHECK_FALSE(s.cap.is_general());  // rectilinear in its own frame
+    TopExp_Explorer it(solid, TopAbs_SHELL);
+    const SweptSolid shell = swept_solid_from_shape(it.Current(), "shell");
+    CHECK(shell.volume == Approx(36.0));
+    CHECK(holds_one_solid(it.Current()));
+  }
+  SECTION("a box: the largest caps") {
+    const SweptSolid s = swept_solid_from_shape(BRepPrimAPI_MakeBox(2, 3, 4).Shape(), "box");
+    CHECK(s.sweep.Magnitude() == Approx(2.0));  // the caps are the 3 x 4 faces
+  }
+}
+
+TEST_CASE("swept solids: one clear error per class, naming the face", "[solid][errors]") {
+  SECTION("more than one solid") {
+    TopoDS_Compound two;
+    BRep_Builder builder;
+    builder.MakeCompound(two);
+    builder.Add(two, BRepPrimAPI_MakeBox(1, 1, 1).Shape());
+    builder.Add(two, BRepPrimAPI_MakeBox(gp_Pnt(3, 0, 0), 1, 1, 1).Shape());
+    check_error(two, "the file holds 2 solids; a swept solid is exactly one solid");
+    CHECK_FALSE(holds_one_solid(two));
+  }
+  SECTION("an open shell") {
+    TopoDS_Shell shell;
+    BRep_Builder builder;
+    builder.MakeShell(shell);
+    int k = 0;
+    for (TopExp_Explorer it(l_prism(0, 0, 3), TopAbs_FACE); it.More(); it.Next()) {
+      if (++k < 8) builder.Add(shell, it.Current());  // the last face left out
+    }
+    check_error(shell, "the shell is open: face ");
+    check_error(shell, " has a free edge from (");
+  }
+  SECTION("a cavity") {
+    const TopoDS_Shape hollow =
+        BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(4, 4, 4).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(1, 1, 1), 2, 2, 2).Shape()).Shape();
+    check_error(hollow, "the solid has 2 shells (a cavity inside it)");
+  }
+  SECTION("a curved side") {
+    check_error(BRepPrimAPI_MakeCylinder(1, 2).Shape(), "face 1 is curved (a cylinder): a swept solid's faces are all planar");
+  }
+  SECTION("caps that differ: a frustum") {
+    const TopoDS_Shape frustum = prismatoid({{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}},
+                                            {{0.5, 0.5, 1}, {1.5, 0.5, 1}, {1.5, 1.5, 1}, {0.5, 1.5, 1}});
+    check_error(frustum, "the caps differ: face ");
+    check_error(frustum, "are parallel and opposite but not translated copies of each other (areas 4 and 1)");
+  }
+  SECTION("caps that differ: same area, another shape") {
+    const TopoDS_Shape part = prismatoid({{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}},
+                                         {{-1, 0.5, 1}, {3, 0.5, 1}, {3, 1.5, 1}, {-1, 1.5, 1}});
+    check_error(part, "the caps differ: face ");
+    check_error(part, " is no vertex of face ");
+  }
+  SECTION("a side not parallel to the sweep: two grooves across each other") {
+    // A box with a V-groove along Y on its +X side and one along Z on its -X side: every pair of
+    // opposite faces fails, and the best (congruent caps) names the face that breaks the sweep.
+    auto groove = [](const std::vector<gp_Pnt>& triangle, const gp_Vec& along) {
+      BRepBuilderAPI_MakePolygon polygon;
+      for (const gp_Pnt& p : triangle) polygon.Add(p);
+      polygon.Close();
+      return BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(polygon.Wire()).Face(), along).Shape();
+    };
+    TopoDS_Shape part = BRepPrimAPI_MakeBox(4, 4, 4).Shape();
+    part = BRepAlgoAPI_Cut(part, groove({{4.5, -1, 1.5}, {3.5, -1, 2}, {4.5, -1, 2.5}}, gp_Vec(0, 6, 0))).Shape();
+    part = BRepAlgoAPI_Cut(part, groove({{-0.5, 1.5, -1}, {0.5, 2, -1}, {-0.5, 2.5, -1}}, gp_Vec(0, 0, 6))).Shape();
+    check_error(part, "is not parallel to the sweep (");
+    check_error(part, "a swept solid's side faces run along the sweep");
+  }
+  SECTION("no parallel faces: a tetrahedron") {
+    const TopoDS_Shape tetrahedron =
+        polyhedron({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, 2}}, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}});
+    check_error(tetrahedron, "no two faces are parallel and opposite");
+  }
+  SECTION("a cap the 2-D pipeline rejects: a corner sharper than 5 degrees") {
+    BRepBuilderAPI_MakePolygon polygon(gp_Pnt(0, 0, 0), gp_Pnt(10, 0, 0), gp_Pnt(0, 0.5, 0), true);
+    const TopoDS_Shape prism = BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(polygon.Wire()).Face(), gp_Vec(0, 0, 1)).Shape();
+    const std::string message = error_of(prism);
+    INFO(message);
+    CHECK_THAT(message, StartsWith("part.step (Face") && Contains(", a cap of the solid): ") && Contains("degrees"));
+  }
+  SECTION("nothing to sweep") { check_error(TopoDS_Shape(), "the file holds no shape"); }
+}
