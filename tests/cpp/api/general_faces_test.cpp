@@ -126,7 +126,7 @@ TEST_CASE("rectilinear faces turned by any angle get their twins' blocks and mes
   CHECK(turned_faces == 48);
 }
 
-TEST_CASE("a face with edges at any angle goes to the general engine; OpenCASCADE cuts its blocks", "[api][general]") {
+TEST_CASE("a face with edges at any angle goes to the general engine, and OpenCASCADE cuts its blocks", "[api][general]") {
   int faces = 0;
   for (const GeneralKind kind : {GeneralKind::Polygon, GeneralKind::Chamfered, GeneralKind::Turned}) {
     for (const bool holes : {false, true}) {

@@ -20,7 +20,7 @@ TEST_CASE("part_boundary lists the L-shape's corners counter-clockwise from the 
   }
 }
 
-TEST_CASE("part_boundary walks holes clockwise; their corners are re-entrant", "[geometry]") {
+TEST_CASE("part_boundary walks holes clockwise, and their corners are re-entrant", "[geometry]") {
   const GridFace face = test::grid_face_of(test::square3(), {test::centre_hole()});
   const auto loops = part_boundary(face.whole);
   REQUIRE(loops.size() == 2);

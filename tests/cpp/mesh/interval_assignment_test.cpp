@@ -73,7 +73,7 @@ TEST_CASE("naive rounding fails where the integer program does not", "[mesh][int
   CHECK(a.quads == 8);
 }
 
-TEST_CASE("fixed counts couple strips; rounding each strip breaks them", "[mesh][intervals]") {
+TEST_CASE("fixed counts couple strips, and rounding each strip breaks them", "[mesh][intervals]") {
   const test::HandModel m =
       test::hand_model({{0, 0}, {3, 0}, {3, 2}, {0, 2}}, {}, {Box{0, 0, 3, 1}, Box{0, 1, 1.5, 2}, Box{1.5, 1, 3, 2}});
   IntervalOptions options;

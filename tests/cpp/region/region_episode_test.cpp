@@ -19,7 +19,7 @@ Region chamfered() { return Region(Ring{{0, 0}, {10, 0}, {10, 4}, {8, 6}, {0, 6}
 
 }  // namespace
 
-TEST_CASE("the mesh preset's block rules come from the face's bound; the paper preset keeps the default", "[region][episode]") {
+TEST_CASE("the mesh preset's block rules come from the face's bound, the paper preset keeps the default", "[region][episode]") {
   const Region face = chamfered();
   const double bound = scaled_jacobian_bound(face.loops());
   REQUIRE(bound == Approx(std::sin(67.5 * M_PI / 180.0)));

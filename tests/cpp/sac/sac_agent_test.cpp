@@ -87,7 +87,7 @@ double p_vertical_after(SacAgent& agent, const std::shared_ptr<const PartState>&
 
 }  // namespace
 
-TEST_CASE("an actor whose logits pass through a ReLU dies; a linear one follows the critics", "[sac]") {
+TEST_CASE("an actor whose logits pass through a ReLU dies, a linear one follows the critics", "[sac]") {
   // The paper's text puts a ReLU after every actor layer, the output included. The losing
   // direction's logit is pushed below zero, where the ReLU has no gradient; when the critics later
   // prefer that direction, the winning logit is pushed down to zero too and the actor is uniform
