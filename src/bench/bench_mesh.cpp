@@ -51,6 +51,7 @@
 #include "core/mesh/mesh_conformity.h"
 #include "core/mesh/mesh_pipeline.h"
 #include "core/mesh/mesh_quality.h"
+#include "gmsh_output.h"
 
 using namespace autoblock;
 
@@ -97,49 +98,17 @@ Sample autoblock_sample(const Face& f, const PolicySource& source) {
 
 // The surface elements of a gmsh .msh 4.1 ASCII file: quads into mesh, triangles counted.
 QuadMesh read_gmsh_output(const std::string& path, int& triangles) {
-  std::ifstream in(path);
-  std::string word;
+  const bench::GmshOutput file = bench::read_gmsh_output_file(path);
   QuadMesh mesh;
-  std::map<long, int> index;
-  triangles = 0;
-  while (in >> word) {
-    if (word == "$Nodes") {
-      long blocks, count, lo, hi;
-      in >> blocks >> count >> lo >> hi;
-      for (long b = 0; b < blocks; ++b) {
-        int dim, tag, parametric;
-        long n;
-        in >> dim >> tag >> parametric >> n;
-        std::vector<long> tags(static_cast<size_t>(n));
-        for (long& t : tags) in >> t;
-        for (long t : tags) {
-          double x, y, z, u;
-          in >> x >> y >> z;
-          for (int k = 0; k < (parametric ? dim : 0); ++k) in >> u;
-          index[t] = static_cast<int>(mesh.nodes.size());
-          mesh.nodes.push_back(Point2{x, y});
-          mesh.z = z;
-        }
-      }
-    } else if (word == "$Elements") {
-      long blocks, count, lo, hi;
-      in >> blocks >> count >> lo >> hi;
-      for (long b = 0; b < blocks; ++b) {
-        int dim, tag, type;
-        long n;
-        in >> dim >> tag >> type >> n;
-        const int per = type == 15 ? 1 : type == 1 ? 2 : type == 2 ? 3 : type == 3 ? 4 : -1;
-        if (per < 0) throw std::runtime_error("gmsh output: element type " + std::to_string(type));
-        for (long e = 0; e < n; ++e) {
-          long element, v[4] = {0, 0, 0, 0};
-          in >> element;
-          for (int k = 0; k < per; ++k) in >> v[k];
-          if (type == 2) ++triangles;
-          if (type != 3) continue;
-          mesh.quads.push_back({index.at(v[0]), index.at(v[1]), index.at(v[2]), index.at(v[3])});
-          mesh.quad_block.push_back(0);
-        }
-      }
+  for (const auto& p : file.nodes) {
+    mesh.nodes.push_back(Point2{p[0], p[1]});
+    mesh.z = p[2];
+  }
+  triangles = file.elements.count(2) ? static_cast<int>(file.elements.at(2).size()) : 0;
+  if (file.elements.count(3)) {
+    for (const std::vector<int>& q : file.elements.at(3)) {
+      mesh.quads.push_back({q[0], q[1], q[2], q[3]});
+      mesh.quad_block.push_back(0);
     }
   }
   mesh.blocks = 1;
