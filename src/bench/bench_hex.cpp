@@ -9,8 +9,8 @@
 // user runs it: `autoblock mesh SOLID.brep --json` (default policy, size and layers), one process per
 // solid. gmsh gets the bottom cap with the same size h (Frontal-Delaunay for quads, Blossom, as in
 // bench_mesh) and sweeps it with AutoBlock's layer count: `Extrude {sweep} { Surface{1}; Layers{N};
-// Recombine; }`, so the element counts are comparable. Quality (Verdict's hex scaled Jacobian,
-// irregular edges) and the conformity check (faces shared by two hexahedra, volume and surface area
+// Recombine; }`, and again with its size scaled to match AutoBlock's hexahedron count. Quality
+// (Verdict's hex scaled Jacobian, irregular edges) and the conformity check (faces shared by two hexahedra, volume and surface area
 // the solid's, no inverted hexahedron) are the same code for both (hex_quality.h, hex_conformity.h);
 // a gmsh mesh with prisms (triangles left in its quad mesh) is not all-hex. Times are whole-process
 // wall times, paired per solid; the last column is the median of the per-solid ratios.
@@ -145,7 +145,7 @@ HexMesh read_gmsh_volumes(const std::string& path, int& others) {
   return mesh;
 }
 
-Sample gmsh_sample(const Solid& s, const Sample& ours, const std::string& folder, int k) {
+Sample gmsh_sample(const Solid& s, double size, int layers, const std::string& folder, int k) {
   const std::string geo = folder + "/solid" + std::to_string(k) + ".geo", out = folder + "/solid" + std::to_string(k) + ".msh";
   const std::string log = folder + "/gmsh.log";
   char settings[1024];
@@ -154,7 +154,7 @@ Sample gmsh_sample(const Solid& s, const Sample& ours, const std::string& folder
                 "Mesh.RecombinationAlgorithm = 3;\n"
                 "Mesh.MeshSizeFromPoints = 0;\nMesh.MeshSizeMin = %.17g;\nMesh.MeshSizeMax = %.17g;\n"
                 "Extrude {%.17g, %.17g, %.17g} { Surface{1}; Layers{%d}; Recombine; }\n",
-                ours.size, ours.size, s.sweep.X(), s.sweep.Y(), s.sweep.Z(), std::max(1, ours.layers));
+                size, size, s.sweep.X(), s.sweep.Y(), s.sweep.Z(), std::max(1, layers));
   write_text_file(geo, "SetFactory(\"OpenCASCADE\");\nMerge \"" + s.cap_brep + "\";\n" + settings);
   const auto start = std::chrono::steady_clock::now();
   const std::string command = "gmsh '" + geo + "' -3 -format msh41 -o '" + out + "' > '" + log + "' 2>&1";
@@ -186,6 +186,8 @@ Sample gmsh_sample(const Solid& s, const Sample& ours, const std::string& folder
   for (const auto& [key, u] : uses) {
     if (u.first == 1) mesh.boundary.push_back(u.second);
   }
+  r.size = size;
+  r.layers = layers;
   SolidFigures figures;
   figures.volume = s.volume;
   figures.area = s.area;
@@ -220,14 +222,26 @@ void print_row(const std::string& method, const std::vector<Sample>& samples, co
               bench::quantile(ms, 0.5), bench::quantile(ratios, 0.5));
 }
 
+// gmsh with its cap's size scaled so that its hexahedron count (same layers) comes close to
+// AutoBlock's: two rounds of h' = h sqrt(gmsh's count / AutoBlock's).
+Sample gmsh_matched_sample(const Solid& s, const Sample& ours, const Sample& at_h, const std::string& folder, int k) {
+  Sample matched = at_h;
+  for (int round = 0; round < 2 && matched.ok && matched.hexes > 0; ++round) {
+    const double size = matched.size * std::sqrt(static_cast<double>(matched.hexes) / std::max(1, ours.hexes));
+    matched = gmsh_sample(s, size, ours.layers, folder, k);
+  }
+  return matched;
+}
+
 void run_set(const std::string& title, const std::vector<Solid>& solids, const std::string& autoblock,
              const std::string& folder, int first) {
-  std::vector<Sample> ours, gmsh;
+  std::vector<Sample> ours, gmsh, matched;
   const bool tty = isatty(2);
   for (size_t k = 0; k < solids.size(); ++k) {
     const int id = first + static_cast<int>(k);
     ours.push_back(autoblock_sample(solids[k], autoblock, folder, id));
-    gmsh.push_back(ours.back().ok ? gmsh_sample(solids[k], ours.back(), folder, id) : Sample{});
+    gmsh.push_back(ours.back().ok ? gmsh_sample(solids[k], ours.back().size, ours.back().layers, folder, id) : Sample{});
+    matched.push_back(ours.back().ok ? gmsh_matched_sample(solids[k], ours.back(), gmsh.back(), folder, id) : Sample{});
     if (tty) std::fprintf(stderr, "\r%s: %zu/%zu", title.c_str(), k + 1, solids.size());
   }
   if (tty) std::fprintf(stderr, "\n");
@@ -236,12 +250,16 @@ void run_set(const std::string& title, const std::vector<Solid>& solids, const s
               "mean irregular edges | conformal, volume exact | median ms, whole process | median time / gmsh's |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   print_row("AutoBlock `mesh` (defaults)", ours, gmsh);
-  std::vector<Sample> gmsh_hex = gmsh;
-  for (Sample& s : gmsh_hex) s.ok = s.ok && s.prisms == 0;
-  print_row("gmsh 4.8, Extrude with Layers and Recombine (same h and layers)", gmsh_hex, gmsh);
-  int with_prisms = 0;
-  for (const Sample& s : gmsh) with_prisms += s.prisms > 0 ? 1 : 0;
-  if (with_prisms) std::printf("<!-- gmsh left prisms (triangles in its quad mesh) in %d solids -->\n", with_prisms);
+  for (auto [label, samples] : {std::pair<const char*, std::vector<Sample>>{"same h and layers", gmsh},
+                                 {"layers the same, size matched to AutoBlock's count", matched}}) {
+    int with_prisms = 0;
+    for (Sample& s : samples) {
+      with_prisms += s.prisms > 0 ? 1 : 0;
+      s.ok = s.ok && s.prisms == 0;
+    }
+    print_row(std::string("gmsh 4.8, Extrude with Layers and Recombine, ") + label, samples, gmsh);
+    if (with_prisms) std::printf("<!-- gmsh left prisms (triangles in its quad mesh) in %d solids -->\n", with_prisms);
+  }
 }
 
 }  // namespace
