@@ -293,13 +293,7 @@ class TestAutoBlockCommand(GuiTestCase):
         self.assertEqual([o for o in self.doc.Objects if AutoBlock.is_autoblock(o)], [])
 
     def test_a_face_inside_a_body(self):
-        body = self.doc.addObject("PartDesign::Body", "Body")
-        sketch = support.add_l_sketch(self.doc)
-        body.addObject(sketch)
-        pad = self.doc.addObject("PartDesign::Pad", "Pad")
-        body.addObject(pad)
-        pad.Profile = sketch
-        pad.Length = 3
+        body, pad = support.add_l_pad(self.doc)
         body.Placement.Base = FreeCAD.Vector(50, 0, 0)
         self.doc.recompute()
         top = [i for i, f in enumerate(pad.Shape.Faces, 1) if abs(f.BoundBox.ZMin - 3) < 1e-9
@@ -329,7 +323,7 @@ class TestAutoBlockCommand(GuiTestCase):
         self.assertEqual(len(dialogs.seen), 1)
         title, text = dialogs.seen[0]
         self.assertIn("Auto-Block", title)
-        self.assertIn("not planar", text)
+        self.assertIn("curved (a sphere)", text)  # selected whole: checked as a solid
         self.assertIn("nothing was changed", text)
         self.assertEqual([o.Name for o in self.doc.Objects], names)
         self.assertEqual(self.doc.UndoCount, undo_count)
