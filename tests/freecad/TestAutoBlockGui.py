@@ -309,6 +309,37 @@ class TestAutoBlockCommand(GuiTestCase):
         self.assertAlmostEqual(objects[0].Shape.BoundBox.XMin, 50.0)
         self.assertFalse(pad.ViewObject.Visibility)
 
+    def test_auto_block_on_a_solid_makes_prism_blocks_and_hexahedra(self):
+        from AutoBlock.objects.fem_mesh import ViewProviderAutoBlockMesh, is_autoblock_mesh
+
+        box = self.doc.addObject("Part::Box", "Box")
+        box.Length, box.Width, box.Height = 10, 4, 3
+        self.doc.recompute()
+        undo_count = self.doc.UndoCount
+        self.assertEqual(self.auto_block(box), [])  # no face object
+        solids = [o for o in self.doc.Objects if AutoBlock.is_autoblock_solid(o)]
+        self.assertEqual(len(solids), 1)
+        obj = solids[0]
+        self.assertIs(obj.Source, box)
+        self.assertEqual(self.doc.UndoCount, undo_count + 1)
+        self.assertEqual(self.doc.UndoNames[0], "Auto-Block")
+        self.assertFalse(box.ViewObject.Visibility)
+        self.assertEqual(len(obj.ViewObject.DiffuseColor), len(obj.Shape.Faces))
+        meshes = AutoBlock.hex_mesh_objects_of(obj)
+        self.assertEqual(len(meshes), 1)
+        self.assertFalse(is_autoblock_mesh(meshes[0]))  # not a quad mesh object
+        self.assertIsInstance(meshes[0].ViewObject.Proxy, ViewProviderAutoBlockMesh)
+        # Automatic size: 1/20 of the longest side, 0.5.
+        self.assertEqual(meshes[0].FemMesh.HexaCount, 20 * 8 * 6)
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.ActiveDocument.ActiveView.viewIsometric()
+        FreeCADGui.SendMsgToActiveView("ViewFit")
+        screenshot("hex-mesh")
+        self.doc.undo()
+        pump()
+        self.assertEqual([o for o in self.doc.Objects if AutoBlock.is_autoblock_solid(o) or o in meshes], [])
+        self.assertTrue(box.ViewObject.Visibility)
+
     def test_an_unsupported_face_gets_a_dialog_and_changes_nothing(self):
         sphere = self.doc.addObject("Part::Sphere", "Sphere")
         sphere.Placement.Base = FreeCAD.Vector(-8, 8, 0)
