@@ -490,8 +490,10 @@ class HexMeshResult:
     policy; label.
     """
 
-    def __init__(self, data, label):
+    def __init__(self, data, label, request=None):
         self.label = label
+        self._request = request
+        self.file = data.get("file") or None
         self.nodes = [FreeCAD.Vector(x, y, z) for x, y, z in data["nodes"]]
         self.hexes = [tuple(h) for h in data["hexes"]]
         self.hex_block = list(data["hex_block"])
@@ -530,9 +532,20 @@ class HexMeshResult:
 
         return fem_hex_mesh([(p.x, p.y, p.z) for p in self.nodes], self.hexes)
 
+    def export(self, path, element="C3D8"):
+        """Write the hexahedra with the core's exporters (as `autoblock mesh SOLID --out`): .msh (Gmsh 4.1, a
+        physical volume per block and a physical surface per face of the solid), .vtu (VTK) or .inp
+        (Abaqus/CalculiX; element "C3D8" or "C3D8I"; element sets per block, node sets and surfaces per face),
+        global coordinates. The same solid and settings are meshed again. Returns path. ValueError for another
+        extension."""
+        brep, arguments = self._request
+        native.load().mesh_solid(brep, **dict(arguments, blocks=False, out=str(path), element=str(element)))
+        self.file = str(path)
+        return path
+
 
 def mesh_solid(target, size=None, layers=0, grading=1.0, policy=None, reward=None, seed=0, time_limit=30.0,
-               max_steps=0, blocks=True, general_time_limit=None):
+               max_steps=0, blocks=True, general_time_limit=None, out=None, element="C3D8"):
     """Mesh a swept solid with hexahedra: its bottom cap decomposed into blocks and quad-meshed like any face
     (policy, reward, seed, time_limit, max_steps, general_time_limit as for decompose), the quads swept along the
     solid in layers.
@@ -542,17 +555,20 @@ def mesh_solid(target, size=None, layers=0, grading=1.0, policy=None, reward=Non
         congruent planar caps joined by planar sides along one direction, normal or oblique).
     size: target element size (None or 0: the solid's longest bounding-box side / 20); layers: along the sweep
     (0: the sweep's length over the size); grading: each layer's thickness over the previous one's (1: uniform);
-    blocks: also return the prism blocks (Part solids).
+    blocks: also return the prism blocks (Part solids); out: also write the hexahedra to a .msh, .vtu or .inp file
+    (element: "C3D8" or "C3D8I" for .inp), see HexMeshResult.export.
     Returns a HexMeshResult. Raises ValueError with the core's one-line reason for any other solid (a curved face,
     caps that differ, more than one solid, ...) or a bad option.
     """
     shape, label = _solid_shape(target)
-    data = native.load().mesh_solid(shape.exportBrepToString(), policy or preferences.default_policy(),
-                                    preferences.reward_preset() if reward is None else reward, int(seed),
-                                    float(time_limit), int(max_steps), float(size or 0.0), int(layers),
-                                    float(grading), bool(blocks), label,
-                                    -1.0 if general_time_limit is None else float(general_time_limit))
-    return HexMeshResult(data, label)
+    brep = shape.exportBrepToString()
+    arguments = dict(policy=policy or preferences.default_policy(),
+                     reward=preferences.reward_preset() if reward is None else reward, seed=int(seed),
+                     time_limit=float(time_limit), max_steps=int(max_steps), size=float(size or 0.0), layers=int(layers),
+                     grading=float(grading), source=label,
+                     general_time_limit=-1.0 if general_time_limit is None else float(general_time_limit))
+    data = native.load().mesh_solid(brep, blocks=bool(blocks), out=str(out or ""), element=str(element), **arguments)
+    return HexMeshResult(data, label, (brep, arguments))
 
 
 def mesh(target, size=None, policy=None, reward=None, seed=0, time_limit=30.0, max_steps=0, sub=None, layers=0,
@@ -597,7 +613,7 @@ def mesh(target, size=None, policy=None, reward=None, seed=0, time_limit=30.0, m
 
 def export_mesh(target, path, size=None):
     """Write the quad mesh of `target` (an AutoBlock object, its FEM mesh object, a DecompositionResult or a
-    MeshResult) to `path`: .msh (Gmsh 4.1), .vtu (VTK) or .inp (Abaqus/CalculiX), through the core's exporters,
+    MeshResult; or the hexahedra of an AutoBlock solid object, its mesh object or a HexMeshResult) to `path`: .msh (Gmsh 4.1), .vtu (VTK) or .inp (Abaqus/CalculiX), through the core's exporters,
     in global coordinates. size: as for mesh() (None: the object's MeshSize, or automatic). Returns the
     MeshResult. ValueError for another extension or a missing folder."""
     import os
@@ -608,9 +624,16 @@ def export_mesh(target, path, size=None):
     folder = os.path.dirname(os.path.abspath(str(path)))
     if not os.path.isdir(folder):
         raise ValueError("{}: the folder {} does not exist".format(path, folder))
-    if isinstance(target, MeshResult):
+    if isinstance(target, (MeshResult, HexMeshResult)):
         target.export(path)
         return target
+    from .objects.fem_mesh import is_autoblock_hex_mesh
+    from .objects.solid_blocks import is_autoblock_solid, mesh_solid_object
+
+    if is_autoblock_hex_mesh(target):
+        target = target.AutoBlock
+    if is_autoblock_solid(target):
+        return mesh_solid_object(target, out=path)
     if is_autoblock_mesh(target):
         target = target.AutoBlock
         if target is None:

@@ -31,6 +31,8 @@
 #include "core/io/decomposition_json.h"
 #include "core/io/shape_file.h"
 #include "core/io/svg_picture.h"
+#include "core/io/text_file.h"
+#include "core/mesh/hex_export.h"
 #include "core/mesh/mesh_export.h"
 
 namespace py = pybind11;
@@ -531,8 +533,13 @@ struct SolidWritten {
 
 py::dict mesh_solid_py(const std::string& brep, const std::string& policy, const std::string& reward, std::uint64_t seed,
                        double time_limit, int max_steps, double size, int layers, double grading, bool blocks,
-                       const std::string& source, double general_time_limit) {
+                       const std::string& source, double general_time_limit, const std::string& out_file,
+                       const std::string& element) {
   const DecomposeSettings settings = settings_of(policy, reward, seed, time_limit, max_steps, general_time_limit);
+  if (!out_file.empty() && !is_mesh_file_name(out_file)) {
+    throw InputError(out_file + ": expected a .msh, .vtu or .inp file");
+  }
+  if (element != "C3D8" && element != "C3D8I") throw InputError("unknown element '" + element + "' (expected C3D8 or C3D8I)");
   SolidMeshOptions options;
   options.cap.size = size;
   options.layers = layers;
@@ -541,6 +548,10 @@ py::dict mesh_solid_py(const std::string& brep, const std::string& policy, const
   {
     py::gil_scoped_release release;
     out.meshing = mesh_swept_solid(solid_of(brep, source), settings, options);
+    if (!out_file.empty()) {
+      require_conformal(out.meshing);  // as the CLI: a mesh that failed the check is not written
+      write_text_file(out_file, mesh_file_text(out_file, out.meshing.mesh, element));
+    }
     if (blocks) {
       const PrismBlocks prisms = solid_meshing_blocks(out.meshing);
       for (const TopoDS_Solid& prism : prisms.solids) out.blocks.push_back(write_brep_text(prism));
@@ -582,6 +593,7 @@ py::dict mesh_solid_py(const std::string& brep, const std::string& policy, const
   d["hex_volume"] = c.hex_volume;
   d["blocks"] = out.blocks;
   d["shape"] = out.shape;
+  d["file"] = out_file;
   return d;
 }
 
@@ -767,13 +779,14 @@ PYBIND11_MODULE(autoblock_native, m) {
   m.def("mesh_solid", &mesh_solid_py, py::arg("brep"), py::arg("policy") = "", py::arg("reward") = "",
         py::arg("seed") = 0, py::arg("time_limit") = 30.0, py::arg("max_steps") = 0, py::arg("size") = 0.0,
         py::arg("layers") = 0, py::arg("grading") = 1.0, py::arg("blocks") = true, py::arg("source") = "solid",
-        py::arg("general_time_limit") = -1.0,
+        py::arg("general_time_limit") = -1.0, py::arg("out") = "", py::arg("element") = "C3D8",
         "Mesh the swept solid held by BREP text with hexahedra: its bottom cap decomposed (policy, reward, seed, "
         "time_limit, max_steps, general_time_limit as for decompose) and quad-meshed at size (0: the solid's "
         "longest side / 20), swept in layers (0: from the size) graded by grading. Returns check_solid's dict and "
         "nodes [(x, y, z)] (model coordinates), hexes [(8 node indices, 0-based, C3D8 order)], hex_block, "
         "n_blocks, layers, policy, target_size, quality, conformal, problem, hex_volume, and (blocks True) the "
-        "prism blocks as BREP text (blocks, one solid each; shape, their compound sharing faces).");
+        "prism blocks as BREP text (blocks, one solid each; shape, their compound sharing faces). out: also write the "
+        "hexahedra to a .msh, .vtu or .inp file (element: C3D8 or C3D8I for .inp), as `autoblock mesh SOLID --out`.");
   m.def("train", &train_py, py::arg("options"), py::arg("progress") = py::none(),
         "Train a policy (blocking, the GIL released). options: {output, checkpoint, resume, train_folder | "
         "train_generate {count, seed, min_rects, max_rects, holes}, test_folder | test_generate, episodes, seed, "

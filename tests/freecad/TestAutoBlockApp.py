@@ -1438,6 +1438,23 @@ class TestSolids(unittest.TestCase):
         self.check_hexa8(mesh.FemMesh, solid.Volume, len(expected.hexes))
         self.assertIs(AutoBlock.mesh(obj), mesh)  # the object's mesh, not a second one
         self.assertIs(AutoBlock.mesh(mesh), mesh)
+        # The core's exporters (as `autoblock mesh SOLID --out`): .inp with C3D8 elements and a set per block.
+        inp = os.path.join(self.folder, "solid.inp")
+        exported = AutoBlock.export_mesh(mesh, inp)
+        self.assertEqual(exported.file, inp)
+        elements, nodes = abaqus_elements(inp)
+        self.assertEqual(len(elements), len(expected.hexes))
+        volumes = [c3d8_volume([nodes[n] for n in element]) for element in elements.values()]
+        self.assertGreater(min(volumes), 0.0)
+        self.assertAlmostEqual(sum(volumes), solid.Volume, delta=1e-9 * solid.Volume)
+        with open(inp) as stream:
+            self.assertEqual(stream.read().count("ELSET=BLOCK_"), expected.n_blocks)
+        msh = expected.export(os.path.join(self.folder, "solid.msh"))
+        with open(msh) as stream:
+            self.assertIn("$MeshFormat\n4.1 0 8", stream.read())
+        with self.assertRaisesRegex(ValueError, "expected a .msh, .vtu or .inp file"):
+            expected.export(os.path.join(self.folder, "solid.stl"))
+        self.assertFalse(os.path.exists(os.path.join(self.folder, "solid.stl")))
         # It follows its source on recompute.
         extrusion.LengthFwd = 10
         self.doc.recompute()

@@ -79,13 +79,14 @@ class AutoBlockSolidFeature(AutoBlockFeature):
         return super().__setstate__(state)
 
 
-def mesh_solid_object(obj):
-    """The HexMeshResult of an AutoBlock solid object's source with its settings (computed now)."""
+def mesh_solid_object(obj, out=None):
+    """The HexMeshResult of an AutoBlock solid object's source with its settings (computed now; out: also written
+    to that .msh, .vtu or .inp file)."""
     if obj.Source is None:
         raise ValueError("{}: no source solid (set Source)".format(obj.Label))
     return console.mesh_solid(obj.Source, size=float(obj.MeshSize), layers=obj.Layers, grading=obj.Grading,
                               policy=obj.PolicyFile or obj.Policy, reward=obj.RewardPreset, seed=obj.Seed,
-                              time_limit=obj.TimeLimit)
+                              time_limit=obj.TimeLimit, out=out)
 
 
 def hex_mesh_of(obj):
