@@ -1579,6 +1579,27 @@ class TestSolids(unittest.TestCase):
         self.assertLess(abs(mean / theory - 1.0), 0.005, "mean end displacement {} vs F L / (E A) = {}".format(
             mean, theory))
 
+    def test_write_back_of_the_prism_blocks(self):
+        extrusion = self.holed_extrusion()
+        solid = extrusion.Shape.copy()
+        holder = support.add_face(self.doc, solid, "Imported")  # a plain Part feature holding the solid
+        obj = AutoBlock.make_autoblock_solid(holder, mesh_size=1.0)
+        blocks = obj.NumberOfBlocks
+        new = AutoBlock.write_back(obj, "new")
+        self.assertEqual(len(new.Shape.Solids), blocks)
+        self.assertAlmostEqual(new.Shape.Volume, solid.Volume, delta=1e-9 * solid.Volume)
+        # A parametric source cannot be replaced; a plain Part feature can.
+        parametric = AutoBlock.make_autoblock_solid(extrusion, mesh=False)
+        with self.assertRaisesRegex(ValueError, "recomputed from its own inputs"):
+            AutoBlock.write_back(parametric, "replace")
+        mesh = AutoBlock.hex_mesh_objects_of(obj)[0].Name
+        self.assertIs(AutoBlock.write_back(obj, "replace"), holder)
+        self.assertEqual(len(holder.Shape.Solids), blocks)
+        self.assertTrue(holder.Shape.isValid())
+        self.assertAlmostEqual(holder.Shape.Volume, solid.Volume, delta=1e-9 * solid.Volume)
+        self.assertIsNone(self.doc.getObject(mesh))  # the solid object and its mesh are gone
+        self.assertFalse([o for o in self.doc.Objects if AutoBlock.is_autoblock_solid(o) and o.Source == holder])
+
     def test_a_solid_that_is_not_a_sweep_raises_value_error(self):
         sphere = self.doc.addObject("Part::Sphere", "Sphere")
         cylinder = self.doc.addObject("Part::Cylinder", "Cylinder")
