@@ -15,6 +15,7 @@ import unittest
 
 import FreeCAD
 import FreeCADGui
+import Part
 from PySide2 import QtCore, QtGui, QtWidgets
 
 import AutoBlock
@@ -312,9 +313,16 @@ class TestAutoBlockCommand(GuiTestCase):
     def test_auto_block_on_a_solid_makes_prism_blocks_and_hexahedra(self):
         from AutoBlock.objects.fem_mesh import ViewProviderAutoBlockMesh, is_autoblock_mesh
 
-        box = self.doc.addObject("Part::Box", "Box")
-        box.Length, box.Width, box.Height = 10, 4, 3
+        # An L with a square hole, extruded by Part's Extrusion (as a Pad would be).
+        V = FreeCAD.Vector
+        hole = Part.makePolygon([V(1, 1, 0), V(2, 1, 0), V(2, 2, 0), V(1, 2, 0), V(1, 1, 0)])
+        outer = Part.makePolygon(support.l_points(width=8, height=6, notch=3) + [V(0, 0, 0)])
+        profile = support.add_face(self.doc, Part.makeFace([outer, hole], "Part::FaceMakerBullseye"), "Profile")
+        box = self.doc.addObject("Part::Extrusion", "Extrusion")
+        box.Base, box.DirMode, box.Dir, box.LengthFwd, box.Solid = profile, "Custom", V(0, 0, 2), 2.0, True
         self.doc.recompute()
+        profile.ViewObject.Visibility = False
+        expected = AutoBlock.mesh(box)  # the automatic size: 1/20 of the longest side, 0.4
         undo_count = self.doc.UndoCount
         self.assertEqual(self.auto_block(box), [])  # no face object
         solids = [o for o in self.doc.Objects if AutoBlock.is_autoblock_solid(o)]
@@ -329,12 +337,14 @@ class TestAutoBlockCommand(GuiTestCase):
         self.assertEqual(len(meshes), 1)
         self.assertFalse(is_autoblock_mesh(meshes[0]))  # not a quad mesh object
         self.assertIsInstance(meshes[0].ViewObject.Proxy, ViewProviderAutoBlockMesh)
-        # Automatic size: 1/20 of the longest side, 0.5.
-        self.assertEqual(meshes[0].FemMesh.HexaCount, 20 * 8 * 6)
+        self.assertGreater(obj.NumberOfBlocks, 2)
+        self.assertEqual(meshes[0].FemMesh.HexaCount, len(expected.hexes))
+        self.assertEqual(len(set(tuple(round(c, 3) for c in colour[:3]) for colour in obj.ViewObject.DiffuseColor)),
+                         obj.NumberOfBlocks)  # a colour per block
         FreeCADGui.Selection.clearSelection()
         FreeCADGui.ActiveDocument.ActiveView.viewIsometric()
         FreeCADGui.SendMsgToActiveView("ViewFit")
-        screenshot("hex-mesh")
+        screenshot("freecad-hex-mesh")
         self.doc.undo()
         pump()
         self.assertEqual([o for o in self.doc.Objects if AutoBlock.is_autoblock_solid(o) or o in meshes], [])
