@@ -1505,28 +1505,25 @@ class TestSolids(unittest.TestCase):
         self.assertIn("Up-to-date", mesh.State)
         self.assertGreater(mesh.NumberOfHexahedra, 4 * hexes)
 
-    def test_a_bar_in_tension_through_freecads_calculix_tools(self):
-        # An L-section bar with a hole (area 17), length 20, meshed by AutoBlock; FreeCAD's FEM objects (material,
-        # supports, a force on the end face) and its CalculiX tools (femtools.ccxtools, ccx 2.20) solve it. The
-        # fixed end only holds the axial displacement (plus two corners against rigid motion), so the bar is free
-        # to contract: the stress is uniform and the end moves by F L / (E A), which hexahedra represent exactly.
+    def extruded_section(self, outer, hole, length, name):
+        """A Part extrusion along +Z by `length` of the section bounded by `outer` and `hole` (corner lists)."""
+        wire = lambda points: Part.makePolygon(points + points[:1])  # noqa: E731
+        face = Part.makeFace([wire(outer), wire(hole)], "Part::FaceMakerBullseye")
+        section = support.add_face(self.doc, face, name + "Section")
+        bar = self.doc.addObject("Part::Extrusion", name)
+        bar.Base = section
+        bar.DirMode, bar.Dir, bar.LengthFwd, bar.Solid = "Custom", FreeCAD.Vector(0, 0, length), length, True
+        self.doc.recompute()
+        return bar, face
+
+    def calculix(self, bar, mesh, supports, force, direction, end, inp_edit=None):
+        """Solve with FreeCAD's FEM objects and CalculiX tools (femtools.ccxtools, ccx 2.20): steel (E 210000,
+        nu 0.3), displacement constraints supports [(sub-element, axes held)], `force` on the face `end` along
+        the edge `direction` (sub-element names of bar). inp_edit(text) -> text may change the .inp FreeCAD
+        wrote before ccx runs. Returns {node number: displacement}."""
         import ObjectsFem
         from femtools import ccxtools
 
-        V = FreeCAD.Vector
-        outer = Part.makePolygon([V(0, 0, 0), V(6, 0, 0), V(6, 2, 0), V(2, 2, 0), V(2, 5, 0), V(0, 5, 0), V(0, 0, 0)])
-        hole = Part.makePolygon([V(0.5, 0.5, 0), V(1.5, 0.5, 0), V(1.5, 1.5, 0), V(0.5, 1.5, 0), V(0.5, 0.5, 0)])
-        face = Part.makeFace([outer, hole], "Part::FaceMakerBullseye")
-        self.assertAlmostEqual(face.Area, 17.0)
-        section = support.add_face(self.doc, face, "Section")
-        bar = self.doc.addObject("Part::Extrusion", "Bar")
-        bar.Base = section
-        bar.DirMode, bar.Dir, bar.LengthFwd, bar.Solid = "Custom", V(0, 0, 20), 20.0, True
-        self.doc.recompute()
-        solid = bar.Shape
-        length, modulus, force = 20.0, 210000.0, 1000.0
-        obj = AutoBlock.make_autoblock_solid(bar, mesh_size=0.5)
-        mesh = AutoBlock.hex_mesh_objects_of(obj)[0]
         analysis = ObjectsFem.makeAnalysis(self.doc, "Analysis")
         solver = ObjectsFem.makeSolverCalculixCcxTools(self.doc, "Solver")
         material = ObjectsFem.makeMaterialSolid(self.doc, "Steel")
@@ -1535,49 +1532,96 @@ class TestSolids(unittest.TestCase):
         material.Material = card
         for member in (solver, material, mesh):
             analysis.addObject(member)
-        number = lambda elements, test: next(i for i, e in enumerate(elements, 1) if test(e))  # noqa: E731
-        bottom = number(solid.Faces, lambda f: f.BoundBox.ZMax < 1e-9)
-        top = number(solid.Faces, lambda f: f.BoundBox.ZMin > length - 1e-9)
-        axis = number(solid.Edges, lambda e: e.BoundBox.ZLength > length - 1e-9)
-
-        def hold(name, element, axes):
-            constraint = ObjectsFem.makeConstraintDisplacement(self.doc, name)
+        for element, axes in supports:
+            constraint = ObjectsFem.makeConstraintDisplacement(self.doc, "Support")
             constraint.References = [(bar, element)]
-            for a in axes:
-                setattr(constraint, a + "Free", False)
-                setattr(constraint, a + "Fix", True)
+            for axis in axes:
+                setattr(constraint, axis + "Free", False)
+                setattr(constraint, axis + "Fix", True)
             analysis.addObject(constraint)
-
-        hold("End", "Face{}".format(bottom), "z")
-        hold("Corner", "Vertex{}".format(number(solid.Vertexes, lambda v: v.Point.Length < 1e-9)), "xy")
-        hold("Roller", "Vertex{}".format(number(solid.Vertexes, lambda v: (v.Point - V(6, 0, 0)).Length < 1e-9)), "y")
         load = ObjectsFem.makeConstraintForce(self.doc, "Force")
-        load.References = [(bar, "Face{}".format(top))]
+        load.References = [(bar, end)]
         load.Force = force
-        load.Direction = (bar, ["Edge{}".format(axis)])
+        load.Direction = (bar, [direction])
         load.Reversed = False
         analysis.addObject(load)
         self.doc.recompute()
         fea = ccxtools.FemToolsCcx(analysis, solver)
         fea.update_objects()
-        work = os.path.join(self.folder, "ccx")
+        work = os.path.join(self.folder, "ccx-" + bar.Name)
         os.makedirs(work)
         fea.setup_working_dir(work)
         fea.setup_ccx()
         self.assertEqual(fea.check_prerequisites(), "")
         fea.write_inp_file()
+        if inp_edit is not None:
+            with open(fea.inp_file_name) as stream:
+                text = stream.read()
+            with open(fea.inp_file_name, "w") as stream:
+                stream.write(inp_edit(text))
         fea.ccx_run()
         fea.load_results()
-        results = [o for o in self.doc.Objects if o.isDerivedFrom("Fem::FemResultObject")]
+        results = [o for o in analysis.Group if o.isDerivedFrom("Fem::FemResultObject")]
         self.assertEqual(len(results), 1)
-        result = results[0]
-        displacement = dict(zip(result.NodeNumbers, result.DisplacementVectors))
+        return dict(zip(results[0].NodeNumbers, results[0].DisplacementVectors))
+
+    @staticmethod
+    def number(elements, test):
+        return next(i for i, e in enumerate(elements, 1) if test(e))
+
+    def test_a_bar_in_tension_through_freecads_calculix_tools(self):
+        # An L-section bar with a hole (area 17), length 20, meshed by AutoBlock and solved by CalculiX through
+        # FreeCAD's tools. The fixed end only holds the axial displacement (plus two corners against rigid
+        # motion), so the bar is free to contract: the stress is uniform and the end moves by F L / (E A), which
+        # hexahedra represent exactly.
+        V = FreeCAD.Vector
+        length, force = 20.0, 1000.0
+        bar, face = self.extruded_section([V(0, 0, 0), V(6, 0, 0), V(6, 2, 0), V(2, 2, 0), V(2, 5, 0), V(0, 5, 0)],
+                                          [V(0.5, 0.5, 0), V(1.5, 0.5, 0), V(1.5, 1.5, 0), V(0.5, 1.5, 0)], length,
+                                          "Bar")
+        self.assertAlmostEqual(face.Area, 17.0)
+        solid = bar.Shape
+        mesh = AutoBlock.hex_mesh_objects_of(AutoBlock.make_autoblock_solid(bar, mesh_size=0.5))[0]
+        vertex = lambda p: "Vertex{}".format(self.number(solid.Vertexes, lambda v: (v.Point - p).Length < 1e-9))  # noqa
+        supports = [("Face{}".format(self.number(solid.Faces, lambda f: f.BoundBox.ZMax < 1e-9)), "z"),
+                    (vertex(V(0, 0, 0)), "xy"), (vertex(V(6, 0, 0)), "y")]
+        end = "Face{}".format(self.number(solid.Faces, lambda f: f.BoundBox.ZMin > length - 1e-9))
+        axis = "Edge{}".format(self.number(solid.Edges, lambda e: e.BoundBox.ZLength > length - 1e-9))
+        displacement = self.calculix(bar, mesh, supports, force, axis, end)
         ends = [displacement[n].z for n, p in mesh.FemMesh.Nodes.items() if abs(p.z - length) < 1e-9]
         self.assertGreater(len(ends), 20)
-        theory = force * length / (modulus * face.Area)
+        theory = force * length / (210000.0 * face.Area)
         mean = sum(ends) / len(ends)
         self.assertLess(abs(mean / theory - 1.0), 0.005, "mean end displacement {} vs F L / (E A) = {}".format(
             mean, theory))
+
+    def test_a_cantilever_through_freecads_calculix_tools(self):
+        # A square tube (4 x 4, hole 2 x 2, length 40) clamped at one end, a force of 100 across the other end
+        # face; AutoBlock's hexahedra at size 1. FreeCAD 0.20 writes hexa8 as C3D8 (full integration, which
+        # stiffens in bending); the same .inp with C3D8I (incompatible modes, no locking) is solved too.
+        # Beam theory: F L^3 / (3 E I), I = (4^4 - 2^4) / 12 = 20.
+        V = FreeCAD.Vector
+        length, force = 40.0, 100.0
+        tips = {}
+        for element in ("C3D8", "C3D8I"):
+            tube, face = self.extruded_section([V(0, 0, 0), V(4, 0, 0), V(4, 4, 0), V(0, 4, 0)],
+                                               [V(1, 1, 0), V(3, 1, 0), V(3, 3, 0), V(1, 3, 0)], length, "Tube" + element)
+            solid = tube.Shape
+            mesh = AutoBlock.hex_mesh_objects_of(AutoBlock.make_autoblock_solid(tube, mesh_size=1.0))[0]
+            clamped = "Face{}".format(self.number(solid.Faces, lambda f: f.BoundBox.ZMax < 1e-9))
+            end = "Face{}".format(self.number(solid.Faces, lambda f: f.BoundBox.ZMin > length - 1e-9))
+            across = "Edge{}".format(self.number(solid.Edges, lambda e: e.BoundBox.XLength > 3.9 and e.BoundBox.ZMax < 1e-9))
+            edit = (lambda text: text.replace("TYPE=C3D8,", "TYPE=C3D8I,")) if element == "C3D8I" else None
+            displacement = self.calculix(tube, mesh, [(clamped, "xyz")], force, across, end, edit)
+            ends = [displacement[n].x for n, p in mesh.FemMesh.Nodes.items() if abs(p.z - length) < 1e-9]
+            tips[element] = sum(ends) / len(ends)
+        theory = force * length ** 3 / (3 * 210000.0 * 20.0)
+        for element, tip in tips.items():
+            self.assertLess(abs(tip / theory - 1.0), 0.05, "{}: tip deflection {} vs F L^3 / (3 E I) = {}".format(
+                element, tip, theory))
+        self.assertGreater(tips["C3D8I"], tips["C3D8"])  # the incompatible modes do not lock
+        print("AutoBlock cantilever: C3D8 {:.4f}, C3D8I {:.4f}, theory {:.4f}".format(
+            tips["C3D8"], tips["C3D8I"], theory))
 
     def test_write_back_of_the_prism_blocks(self):
         extrusion = self.holed_extrusion()
