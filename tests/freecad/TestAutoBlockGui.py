@@ -388,6 +388,22 @@ class TestAutoBlockCommand(GuiTestCase):
         self.assertEqual(len(features), 1)
         self.assertEqual(len(features[0].Shape.Faces), obj.NumberOfBlocks)
         self.assertEqual(self.doc.UndoNames[0], "Write back blocks")
+        # An AutoBlock solid object's prisms, the same way.
+        box = self.doc.addObject("Part::Box", "Box")
+        self.doc.recompute()
+        solid = AutoBlock.make_autoblock_solid(box, mesh=False)
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(solid)
+        WriteBackCommand.choose_mode = staticmethod(lambda obj: "new")
+        try:
+            FreeCADGui.runCommand("AutoBlock_WriteBack")
+            pump()
+        finally:
+            WriteBackCommand.choose_mode = original
+        features = [o for o in self.doc.Objects if o.TypeId == "Part::Feature" and o.Name != source.Name]
+        self.assertEqual(len(features), 2)
+        self.assertEqual(len(features[-1].Shape.Solids), solid.NumberOfBlocks)
+        self.assertAlmostEqual(features[-1].Shape.Volume, box.Shape.Volume)
 
 
 class TestExportMeshCommand(GuiTestCase):
