@@ -370,11 +370,11 @@ class TestAutoBlockCommand(GuiTestCase):
         self.assertEqual(self.doc.UndoCount, undo_count)
         self.assertTrue(good.ViewObject.Visibility)
 
-    def test_write_back_command(self):
+    @staticmethod
+    def write_back_new(obj):
+        """Run Write back on `obj`, answering "New Part feature"."""
         from AutoBlock.commands.write_back import WriteBackCommand
 
-        source = self.add_sample()
-        obj = self.auto_block(source)[0]
         FreeCADGui.Selection.clearSelection()
         FreeCADGui.Selection.addSelection(obj)
         original = WriteBackCommand.choose_mode
@@ -384,6 +384,11 @@ class TestAutoBlockCommand(GuiTestCase):
             pump()
         finally:
             WriteBackCommand.choose_mode = original
+
+    def test_write_back_command(self):
+        source = self.add_sample()
+        obj = self.auto_block(source)[0]
+        self.write_back_new(obj)
         features = [o for o in self.doc.Objects if o.TypeId == "Part::Feature" and o.Name != source.Name]
         self.assertEqual(len(features), 1)
         self.assertEqual(len(features[0].Shape.Faces), obj.NumberOfBlocks)
@@ -392,14 +397,7 @@ class TestAutoBlockCommand(GuiTestCase):
         box = self.doc.addObject("Part::Box", "Box")
         self.doc.recompute()
         solid = AutoBlock.make_autoblock_solid(box, mesh=False)
-        FreeCADGui.Selection.clearSelection()
-        FreeCADGui.Selection.addSelection(solid)
-        WriteBackCommand.choose_mode = staticmethod(lambda obj: "new")
-        try:
-            FreeCADGui.runCommand("AutoBlock_WriteBack")
-            pump()
-        finally:
-            WriteBackCommand.choose_mode = original
+        self.write_back_new(solid)
         features = [o for o in self.doc.Objects if o.TypeId == "Part::Feature" and o.Name != source.Name]
         self.assertEqual(len(features), 2)
         self.assertEqual(len(features[-1].Shape.Solids), solid.NumberOfBlocks)
