@@ -15,6 +15,8 @@ Console API (freecadcmd or FreeCAD's Python console):
     obj = AutoBlock.make_autoblock(source_object, "Face3")     # the parametric object and its FEM mesh
     AutoBlock.mesh(obj)                                         # its FEM mesh object
     AutoBlock.export_mesh(obj, "face.msh")                      # or .vtu, .inp
+    hexes = AutoBlock.mesh(solid_or_object, size=1.0)           # a swept solid: a HexMeshResult (hexahedra)
+    obj = AutoBlock.make_autoblock_solid(pad)                   # prism blocks and a hexa8 FEM mesh object
     AutoBlock.write_back(obj, mode="new")                       # or "replace"
     AutoBlock.stepper_of(obj).step(2)                           # the decomposition after 2 cuts, with scores
     AutoBlock.replay(face_or_object, obj.CutSequence)           # a general face's stored cuts, not searched again
@@ -37,6 +39,13 @@ _LAZY = {
     "reward_presets": ("console", "reward_presets"),
     "capabilities": ("console", "capabilities"),
     "mesh": ("console", "mesh"),
+    "mesh_solid": ("console", "mesh_solid"),
+    "check_solid": ("console", "check_solid"),
+    "is_solid": ("console", "is_solid"),
+    "HexMeshResult": ("console", "HexMeshResult"),
+    "make_autoblock_solid": ("objects.solid_blocks", "make_autoblock_solid"),
+    "is_autoblock_solid": ("objects.solid_blocks", "is_autoblock_solid"),
+    "hex_mesh_objects_of": ("objects.solid_blocks", "hex_mesh_objects_of"),
     "export_mesh": ("console", "export_mesh"),
     "MeshResult": ("console", "MeshResult"),
     "default_policy": ("console", "default_policy"),

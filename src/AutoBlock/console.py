@@ -6,6 +6,8 @@
     result.general                                          # edges at other angles: the general engine
     mesh = AutoBlock.mesh(result)                           # or a face, or an AutoBlock object
     mesh.nodes, mesh.quads, mesh.quality, mesh.export("face.msh")
+    hexes = AutoBlock.mesh(solid_or_object)                 # a swept solid: hexahedra (mesh_solid)
+    hexes.nodes, hexes.hexes, hexes.hex_block, hexes.blocks, hexes.quality, hexes.fem_mesh()
 
 Everything here is a thin layer over the native module: it picks the face, carries it into its own
 frame (faces.py), passes it as BREP text, and turns the answer into FreeCAD shapes and vectors.
@@ -426,11 +428,159 @@ def _mesh_data(stepper, size, out=""):
         raise _in_frame_note(stepper.frame, error) from None
 
 
-def mesh(target, size=None, policy=None, reward=None, seed=0, time_limit=30.0, max_steps=0, sub=None):
+def solid_of(target, sub=None):
+    """(shape, label) when `target` designates a solid to mesh with hexahedra, else None (a face).
+
+    A solid: a Part.Shape, or a document object's shape, holding a solid (or no solid and a closed shell of
+    several faces, as the core reads it), with no face named. A face, (object, "FaceN") or anything without a
+    shape is not.
+    """
+    if isinstance(target, tuple) and len(target) == 2 and sub is None:
+        target, sub = target
+    if isinstance(sub, (list, tuple)):
+        sub = sub[0] if len(sub) == 1 else (None if not sub else sub)
+    if sub:
+        return None
+    if isinstance(target, Part.Shape):
+        shape, label = target, "the shape"
+    elif hasattr(target, "TypeId") and hasattr(target, "Document") and hasattr(target, "Shape"):
+        shape, label = Part.getShape(target), target.Label
+    else:
+        return None
+    if shape is None or shape.isNull():
+        return None
+    if shape.Solids or (len(shape.Shells) == 1 and len(shape.Faces) > 1):
+        return shape, label
+    return None
+
+
+def is_solid(target, sub=None):
+    """True when AutoBlock meshes `target` (as decompose takes it) as a swept solid, with hexahedra."""
+    return solid_of(target, sub) is not None
+
+
+def _solid_shape(target, sub=None):
+    found = solid_of(target, sub)
+    if found is None:
+        raise ValueError("{} is not a solid: mesh_solid takes a solid, a shape or an object holding one solid "
+                         "(a face gives quads: AutoBlock.mesh)".format(
+                             getattr(target, "Label", type(target).__name__)))
+    return found
+
+
+def check_solid(target, sub=None):
+    """Checks that `target` (a solid, a shape or an object holding one) is a straight sweep of a planar face.
+    Returns the core's figures (dict: caps (bottom, top face numbers), sweep (x, y, z), volume, area); raises
+    ValueError with the core's one-line reason (naming the face) otherwise."""
+    shape, label = _solid_shape(target, sub)
+    return dict(native.load().check_solid(shape.exportBrepToString(), label))
+
+
+class HexMeshResult:
+    """A hexahedral mesh of a swept solid (AutoBlock.mesh_solid, or AutoBlock.mesh of a solid).
+
+    nodes: list of FreeCAD.Vector (global coordinates); hexes: list of 8 node indices (0-based) in the
+    Abaqus/CalculiX C3D8 (and VTK) order: 0-3 one quad, 4-7 the same quad one layer on, positive volume;
+    hex_block: the block (0-based) of every hexahedron; n_blocks; layers; target_size; caps: the solid's cap
+    face numbers (bottom, top; 1-based, as Face1, Face2, ...); sweep: FreeCAD.Vector from the bottom cap to the
+    top one; volume, area: the solid's; quality: dict (min_scaled_jacobian, mean_scaled_jacobian,
+    max_aspect_ratio, mean_aspect_ratio, max_skew, edges, irregular_edges, irregular_interior_edges);
+    conformal (the core's independent check: faces shared by two hexahedra, volumes and areas add up);
+    blocks: the prism blocks (list of Part.Solid); shape: their compound (neighbours share faces);
+    policy; label.
+    """
+
+    def __init__(self, data, label, request=None):
+        self.label = label
+        self._request = request
+        self.file = data.get("file") or None
+        self.nodes = [FreeCAD.Vector(x, y, z) for x, y, z in data["nodes"]]
+        self.hexes = [tuple(h) for h in data["hexes"]]
+        self.hex_block = list(data["hex_block"])
+        self.n_blocks = data["n_blocks"]
+        self.layers = data["layers"]
+        self.target_size = data["target_size"]
+        self.grading = data["grading"]
+        self.caps = tuple(data["caps"])
+        self.sweep = FreeCAD.Vector(*data["sweep"])
+        self.volume = data["volume"]
+        self.area = data["area"]
+        self.quality = dict(data["quality"])
+        self.conformal = data["conformal"]
+        self.problem = data["problem"]
+        self.policy = data["policy"]
+        self.seconds = data["seconds"]
+        self.blocks = [_shape_from_brep(t).Solids[0] for t in data["blocks"]]
+        self.shape = _shape_from_brep(data["shape"]) if data["shape"] else None
+
+    def summary(self):
+        """'caps Face5 and Face6: 3 blocks, 220 nodes, 120 hexahedra, 3 layers, size 1, min scaled Jacobian 1,
+        0 irregular edges, conformal'"""
+        return "caps Face{} and Face{}: {}, {}, {}, {}, size {}, min scaled Jacobian {:.4g}, {}, {}".format(
+            self.caps[0], self.caps[1], text.counted(self.n_blocks, "block"), text.counted(len(self.nodes), "node"),
+            text.counted(len(self.hexes), "hexahedron", "hexahedra"), text.counted(self.layers, "layer"),
+            text.significant(self.target_size), self.quality["min_scaled_jacobian"],
+            text.counted(self.quality["irregular_edges"], "irregular edge"),
+            "conformal" if self.conformal else "NOT conformal ({})".format(self.problem))
+
+    def __repr__(self):
+        return "<AutoBlock hex mesh: {}: {}>".format(self.label, self.summary())
+
+    def fem_mesh(self):
+        """The hexahedra as a Fem.FemMesh of hexa8 volumes (global coordinates; FreeCAD's node order)."""
+        from .objects.fem_mesh import fem_hex_mesh
+
+        return fem_hex_mesh([(p.x, p.y, p.z) for p in self.nodes], self.hexes)
+
+    def export(self, path, element="C3D8"):
+        """Write the hexahedra with the core's exporters (as `autoblock mesh SOLID --out`): .msh (Gmsh 4.1, a
+        physical volume per block and a physical surface per face of the solid), .vtu (VTK) or .inp
+        (Abaqus/CalculiX; element "C3D8" or "C3D8I"; element sets per block, node sets and surfaces per face),
+        global coordinates. The same solid and settings are meshed again. Returns path. ValueError for another
+        extension."""
+        brep, arguments = self._request
+        native.load().mesh_solid(brep, **dict(arguments, blocks=False, out=str(path), element=str(element)))
+        self.file = str(path)
+        return path
+
+
+def mesh_solid(target, size=None, layers=0, grading=1.0, policy=None, reward=None, seed=0, time_limit=30.0,
+               max_steps=0, blocks=True, general_time_limit=None, out=None, element="C3D8"):
+    """Mesh a swept solid with hexahedra: its bottom cap decomposed into blocks and quad-meshed like any face
+    (policy, reward, seed, time_limit, max_steps, general_time_limit as for decompose), the quads swept along the
+    solid in layers.
+
+    target: a Part.Solid or a shape holding one solid (or a closed shell), or a document object (a Part box, an
+        extrusion, a PartDesign Pad or Body) whose shape is one solid: a straight sweep of a planar face (two
+        congruent planar caps joined by planar sides along one direction, normal or oblique).
+    size: target element size (None or 0: the solid's longest bounding-box side / 20); layers: along the sweep
+    (0: the sweep's length over the size); grading: each layer's thickness over the previous one's (1: uniform);
+    blocks: also return the prism blocks (Part solids); out: also write the hexahedra to a .msh, .vtu or .inp file
+    (element: "C3D8" or "C3D8I" for .inp), see HexMeshResult.export.
+    Returns a HexMeshResult. Raises ValueError with the core's one-line reason for any other solid (a curved face,
+    caps that differ, more than one solid, ...) or a bad option.
+    """
+    shape, label = _solid_shape(target)
+    brep = shape.exportBrepToString()
+    arguments = dict(policy=policy or preferences.default_policy(),
+                     reward=preferences.reward_preset() if reward is None else reward, seed=int(seed),
+                     time_limit=float(time_limit), max_steps=int(max_steps), size=float(size or 0.0), layers=int(layers),
+                     grading=float(grading), source=label,
+                     general_time_limit=-1.0 if general_time_limit is None else float(general_time_limit))
+    data = native.load().mesh_solid(brep, blocks=bool(blocks), out=str(out or ""), element=str(element), **arguments)
+    return HexMeshResult(data, label, (brep, arguments))
+
+
+def mesh(target, size=None, policy=None, reward=None, seed=0, time_limit=30.0, max_steps=0, sub=None, layers=0,
+         grading=1.0):
     """Mesh the blocks of a decomposition with quadrilaterals (the core's conformal merge, interval assignment
     and mapped meshing).
 
     target:
+      - a solid, or a shape or document object holding one solid (and no sub): a swept solid meshed with
+        hexahedra: returns mesh_solid(target, size, layers, grading, ...), a HexMeshResult;
+      - an AutoBlock solid object (make_autoblock_solid): returns its hexa8 FEM mesh object (made when it has
+        none);
       - an AutoBlock object: returns its FEM mesh object (Fem::FemMeshObjectPython, created when it has none,
         in one undoable transaction); size, when given, becomes the object's MeshSize. The mesh follows the
         object when it recomputes.
@@ -442,12 +592,18 @@ def mesh(target, size=None, policy=None, reward=None, seed=0, time_limit=30.0, m
     infeasible size.
     """
     from .objects.autoblock_feature import is_autoblock
-    from .objects.fem_mesh import is_autoblock_mesh, mesh_object_of
+    from .objects.fem_mesh import is_autoblock_hex_mesh, is_autoblock_mesh, mesh_object_of
+    from .objects.solid_blocks import hex_mesh_object_of, is_autoblock_solid
 
     if is_autoblock(target):
         return mesh_object_of(target, size=size, create=True)
-    if is_autoblock_mesh(target):
+    if is_autoblock_mesh(target) or is_autoblock_hex_mesh(target):
         return target
+    if is_autoblock_solid(target):
+        return hex_mesh_object_of(target)
+    if not isinstance(target, DecompositionResult) and is_solid(target, sub):
+        return mesh_solid(target, size=size, layers=layers, grading=grading, policy=policy, reward=reward, seed=seed,
+                          time_limit=time_limit, max_steps=max_steps)
     result = target if isinstance(target, DecompositionResult) else decompose(
         target, policy=policy, reward=reward, seed=seed, time_limit=time_limit, max_steps=max_steps, sub=sub)
     stepper = result.stepper()
@@ -457,7 +613,7 @@ def mesh(target, size=None, policy=None, reward=None, seed=0, time_limit=30.0, m
 
 def export_mesh(target, path, size=None):
     """Write the quad mesh of `target` (an AutoBlock object, its FEM mesh object, a DecompositionResult or a
-    MeshResult) to `path`: .msh (Gmsh 4.1), .vtu (VTK) or .inp (Abaqus/CalculiX), through the core's exporters,
+    MeshResult; or the hexahedra of an AutoBlock solid object, its mesh object or a HexMeshResult) to `path`: .msh (Gmsh 4.1), .vtu (VTK) or .inp (Abaqus/CalculiX), through the core's exporters,
     in global coordinates. size: as for mesh() (None: the object's MeshSize, or automatic). Returns the
     MeshResult. ValueError for another extension or a missing folder."""
     import os
@@ -468,9 +624,16 @@ def export_mesh(target, path, size=None):
     folder = os.path.dirname(os.path.abspath(str(path)))
     if not os.path.isdir(folder):
         raise ValueError("{}: the folder {} does not exist".format(path, folder))
-    if isinstance(target, MeshResult):
+    if isinstance(target, (MeshResult, HexMeshResult)):
         target.export(path)
         return target
+    from .objects.fem_mesh import is_autoblock_hex_mesh
+    from .objects.solid_blocks import is_autoblock_solid, mesh_solid_object
+
+    if is_autoblock_hex_mesh(target):
+        target = target.AutoBlock
+    if is_autoblock_solid(target):
+        return mesh_solid_object(target, out=path)
     if is_autoblock_mesh(target):
         target = target.AutoBlock
         if target is None:

@@ -1,7 +1,7 @@
 // autoblock_native: the AutoBlock core for Python (FreeCAD's Python 3.11), deliberately thin.
 //
 // Every function converts its inputs, calls one entry point of core/api (face_actions.h,
-// catalog.h) with the GIL released, and converts the result. Shapes cross as BREP text (FreeCAD:
+// catalog.h, solid_meshing.h) with the GIL released, and converts the result. Shapes cross as BREP text (FreeCAD:
 // shape.exportBrepToString() / Part.Shape().importBrepFromString()); everything else as str, int,
 // float, tuple, list and dict. No C++ type is registered with pybind11: FreeCAD's own pybind11
 // modules share pybind11's internals with this one.
@@ -21,6 +21,7 @@
 
 #include "core/api/face_actions.h"
 #include "core/api/face_meshing.h"
+#include "core/api/solid_meshing.h"
 #include "core/api/training_job.h"
 #include "core/baselines/min_rectangles.h"
 #include "core/common/error.h"
@@ -30,6 +31,8 @@
 #include "core/io/decomposition_json.h"
 #include "core/io/shape_file.h"
 #include "core/io/svg_picture.h"
+#include "core/io/text_file.h"
+#include "core/mesh/hex_export.h"
 #include "core/mesh/mesh_export.h"
 
 namespace py = pybind11;
@@ -206,8 +209,10 @@ py::dict general_decomposition_dict(const Written& written, int max_steps, const
   return out;
 }
 
-py::dict decompose_py(const std::string& brep, const std::string& policy, const std::string& reward, std::uint64_t seed,
-                      double time_limit, int max_steps, const std::string& source, double general_time_limit) {
+// A decomposition's settings as decompose() and mesh_solid() take them ('' policy or reward: the default;
+// general_time_limit < 0: the core's default).
+DecomposeSettings settings_of(const std::string& policy, const std::string& reward, std::uint64_t seed, double time_limit,
+                              int max_steps, double general_time_limit) {
   DecomposeSettings settings;
   if (!policy.empty()) settings.policy = policy;
   if (!reward.empty()) settings.reward = reward;
@@ -215,6 +220,12 @@ py::dict decompose_py(const std::string& brep, const std::string& policy, const 
   settings.policy_settings.time_limit = time_limit;
   if (general_time_limit >= 0) settings.policy_settings.general_time_limit = general_time_limit;
   settings.max_steps = max_steps;
+  return settings;
+}
+
+py::dict decompose_py(const std::string& brep, const std::string& policy, const std::string& reward, std::uint64_t seed,
+                      double time_limit, int max_steps, const std::string& source, double general_time_limit) {
+  const DecomposeSettings settings = settings_of(policy, reward, seed, time_limit, max_steps, general_time_limit);
   FaceDecomposition result;
   Written written;
   {
@@ -477,6 +488,115 @@ py::dict mesh_py(const std::string& brep, const py::object& cuts, double size, i
   return d;
 }
 
+// The swept solid held by BREP text (one solid, a compound holding one, or a closed shell), read and
+// checked first in a child process (shape_file.h) as a face is.
+SweptSolid solid_of(const std::string& brep, const std::string& source) {
+  TopoDS_Shape shape;
+  try {
+    shape = read_brep_text(brep, [&](const TopoDS_Shape& read) { swept_solid_from_shape(read, source); });
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    if (message.rfind(source, 0) == 0) throw;
+    throw InputError(source + ": " + message);  // the reader's messages do not know the source
+  }
+  return swept_solid_from_shape(shape, source);
+}
+
+py::tuple xyz(const Point3& p) { return py::make_tuple(p[0], p[1], p[2]); }
+
+py::dict solid_dict(const SweptSolid& solid) {
+  py::dict d;
+  d["source"] = solid.source;
+  d["caps"] = py::make_tuple(solid.bottom, solid.top);
+  d["sweep"] = py::make_tuple(solid.sweep.X(), solid.sweep.Y(), solid.sweep.Z());
+  d["volume"] = solid.volume;
+  d["area"] = solid.area;
+  d["faces"] = solid.faces.size();
+  return d;
+}
+
+py::dict check_solid_py(const std::string& brep, const std::string& source) {
+  SweptSolid solid;
+  {
+    py::gil_scoped_release release;
+    solid = solid_of(brep, source);
+  }
+  return solid_dict(solid);
+}
+
+// What mesh_solid makes without the GIL: the meshing, its prism blocks as BREP text.
+struct SolidWritten {
+  SolidMeshing meshing;
+  std::vector<std::string> blocks;
+  std::string shape;
+};
+
+py::dict mesh_solid_py(const std::string& brep, const std::string& policy, const std::string& reward, std::uint64_t seed,
+                       double time_limit, int max_steps, double size, int layers, double grading, bool blocks,
+                       const std::string& source, double general_time_limit, const std::string& out_file,
+                       const std::string& element) {
+  const DecomposeSettings settings = settings_of(policy, reward, seed, time_limit, max_steps, general_time_limit);
+  if (!out_file.empty() && !is_mesh_file_name(out_file)) {
+    throw InputError(out_file + ": expected a .msh, .vtu or .inp file");
+  }
+  if (element != "C3D8" && element != "C3D8I") throw InputError("unknown element '" + element + "' (expected C3D8 or C3D8I)");
+  SolidMeshOptions options;
+  options.cap.size = size;
+  options.layers = layers;
+  options.grading = grading;
+  SolidWritten out;
+  {
+    py::gil_scoped_release release;
+    out.meshing = mesh_swept_solid(solid_of(brep, source), settings, options);
+    if (!out_file.empty()) {
+      require_conformal(out.meshing);  // as the CLI: a mesh that failed the check is not written
+      write_text_file(out_file, mesh_file_text(out_file, out.meshing.mesh, element));
+    }
+    if (blocks) {
+      const PrismBlocks prisms = solid_meshing_blocks(out.meshing);
+      for (const TopoDS_Solid& prism : prisms.solids) out.blocks.push_back(write_brep_text(prism));
+      out.shape = write_brep_text(prisms.compound);
+    }
+  }
+  const SolidMeshing& m = out.meshing;
+  const HexMesh& mesh = m.mesh;
+  py::dict d = solid_dict(m.solid);
+  py::list nodes;
+  for (const Point3& p : mesh.nodes) nodes.append(xyz(p));
+  d["nodes"] = nodes;
+  py::list hexes;
+  for (const auto& h : mesh.hexes) hexes.append(py::make_tuple(h[0], h[1], h[2], h[3], h[4], h[5], h[6], h[7]));
+  d["hexes"] = hexes;
+  d["hex_block"] = mesh.hex_block;
+  d["n_blocks"] = mesh.blocks;
+  d["layers"] = mesh.layers;
+  d["policy"] = m.cap.policy();
+  d["general"] = m.cap.general();
+  d["target_size"] = m.target_size;
+  d["default_size"] = m.default_size;
+  d["grading"] = m.grading;
+  d["seconds"] = m.seconds;
+  const HexMeshQuality& q = m.quality;
+  py::dict quality;
+  quality["min_scaled_jacobian"] = q.min_scaled_jacobian;
+  quality["mean_scaled_jacobian"] = q.mean_scaled_jacobian;
+  quality["max_aspect_ratio"] = q.max_aspect_ratio;
+  quality["mean_aspect_ratio"] = q.mean_aspect_ratio;
+  quality["max_skew"] = q.max_skew;
+  quality["edges"] = q.edges;
+  quality["irregular_edges"] = q.irregular_edges;
+  quality["irregular_interior_edges"] = q.irregular_interior_edges;
+  d["quality"] = quality;
+  const HexConformity& c = m.conformity;
+  d["conformal"] = c.conformal;
+  d["problem"] = c.problem;
+  d["hex_volume"] = c.hex_volume;
+  d["blocks"] = out.blocks;
+  d["shape"] = out.shape;
+  d["file"] = out_file;
+  return d;
+}
+
 // Training options as TrainingRequest.to_options() gives them (src/AutoBlock/training.py).
 GeneratedSet generated_of(const py::dict& d) {
   GeneratedSet set;
@@ -652,6 +772,21 @@ PYBIND11_MODULE(autoblock_native, m) {
         "Returns nodes [(x, y, z)] in the face's frame, quads [(a, b, c, d)] (0-based, counter-clockwise), "
         "quad_block, blocks, target_size, quality, conformal. out: also write a .msh, .vtu or .inp file, its nodes "
         "moved by placement (12 numbers: row-major rotation, translation; [] for none).");
+  m.def("check_solid", &check_solid_py, py::arg("brep"), py::arg("source") = "solid",
+        "Check that BREP text holds a straight sweep of a planar face (one solid, or a closed shell). Returns "
+        "{source, caps (bottom, top face numbers, 1-based), sweep (x, y, z), volume, area, faces}; raises "
+        "ValueError saying why not (naming the face).");
+  m.def("mesh_solid", &mesh_solid_py, py::arg("brep"), py::arg("policy") = "", py::arg("reward") = "",
+        py::arg("seed") = 0, py::arg("time_limit") = 30.0, py::arg("max_steps") = 0, py::arg("size") = 0.0,
+        py::arg("layers") = 0, py::arg("grading") = 1.0, py::arg("blocks") = true, py::arg("source") = "solid",
+        py::arg("general_time_limit") = -1.0, py::arg("out") = "", py::arg("element") = "C3D8",
+        "Mesh the swept solid held by BREP text with hexahedra: its bottom cap decomposed (policy, reward, seed, "
+        "time_limit, max_steps, general_time_limit as for decompose) and quad-meshed at size (0: the solid's "
+        "longest side / 20), swept in layers (0: from the size) graded by grading. Returns check_solid's dict and "
+        "nodes [(x, y, z)] (model coordinates), hexes [(8 node indices, 0-based, C3D8 order)], hex_block, "
+        "n_blocks, layers, policy, target_size, quality, conformal, problem, hex_volume, and (blocks True) the "
+        "prism blocks as BREP text (blocks, one solid each; shape, their compound sharing faces). out: also write the "
+        "hexahedra to a .msh, .vtu or .inp file (element: C3D8 or C3D8I for .inp), as `autoblock mesh SOLID --out`.");
   m.def("train", &train_py, py::arg("options"), py::arg("progress") = py::none(),
         "Train a policy (blocking, the GIL released). options: {output, checkpoint, resume, train_folder | "
         "train_generate {count, seed, min_rects, max_rects, holes}, test_folder | test_generate, episodes, seed, "

@@ -216,7 +216,13 @@ class TestDecompose(unittest.TestCase):
             result = AutoBlock.decompose(shape.Faces[top[0] - 1])
             self.assertEqual(result.n_blocks, expected["n_blocks"])
             self.assertAlmostEqual(expected["face"]["z"], 2.0)
-            missing = subprocess.run([cli, "decompose", path], capture_output=True, text=True, timeout=60)
+            # Without --face, a swept solid has its cap decomposed (issue 11); two solids need --face N.
+            whole = subprocess.run([cli, "decompose", path], capture_output=True, text=True, timeout=60)
+            self.assertEqual(whole.returncode, 0, whole.stderr)
+            self.assertIn("solid, caps Face", whole.stdout)
+            two = os.path.join(folder, "two.step")
+            Part.makeCompound([solid, solid.translated(FreeCAD.Vector(10, 0, 0))]).exportStep(two)
+            missing = subprocess.run([cli, "decompose", two], capture_output=True, text=True, timeout=60)
             self.assertEqual(missing.returncode, 2)
             self.assertIn("--face N", missing.stderr)
             self.assertIn("autoblock faces", missing.stderr)
@@ -1291,6 +1297,372 @@ class TestTraining(unittest.TestCase):
         run.start()
         run.wait(10)
         self.assertIn("out of memory", run.error)
+
+
+# The outward faces of a C3D8 hexahedron (src/core/mesh/hex_mesh.h; Abaqus S1..S6).
+C3D8_FACES = ((0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7))
+
+
+def c3d8_volume(corners):
+    """The volume of a hexahedron with planar faces whose corners (8 FreeCAD.Vector) are in the C3D8 order, by
+    the divergence theorem over its faces split into triangles: negative when the order turns it inside out."""
+    volume = 0.0
+    for a, b, c, d in C3D8_FACES:
+        for p, q, r in ((corners[a], corners[b], corners[c]), (corners[a], corners[c], corners[d])):
+            volume += p.dot(q.cross(r)) / 6.0
+    return volume
+
+
+def abaqus_elements(path):
+    """{element number: [node numbers]} and {node number: FreeCAD.Vector} of an .inp file's C3D8 elements (as
+    FreeCAD's FemMesh.writeABAQUS, used by its CalculiX tools, writes them)."""
+    nodes, elements, section = {}, {}, None
+    with open(path) as stream:
+        for line in stream:
+            line = line.strip()
+            if not line or line.startswith("**"):
+                continue
+            if line.startswith("*"):
+                keyword = line.split(",")[0].upper()
+                section = "node" if keyword == "*NODE" else (
+                    "hexa" if keyword == "*ELEMENT" and "C3D8" in line.upper() else None)
+                continue
+            values = [v for v in line.split(",") if v.strip()]
+            if section == "node":
+                nodes[int(values[0])] = FreeCAD.Vector(*[float(v) for v in values[1:4]])
+            elif section == "hexa":
+                elements[int(values[0])] = [int(v) for v in values[1:]]
+    return elements, nodes
+
+
+class TestSolids(unittest.TestCase):
+    """Swept solids: hexahedral meshes through the console, the AutoBlock solid object and its hexa8 FEM mesh."""
+
+    def setUp(self):
+        self.doc = support.new_document("solids")
+        self.folder = support.temporary_folder()
+
+    def tearDown(self):
+        support.close_document(self.doc)
+        support.remove_folder(self.folder)
+
+    def holed_extrusion(self, direction=FreeCAD.Vector(0, 0, 5)):
+        """An L-shaped face with a square hole, extruded as a solid by Part's Extrusion (a Pad-like feature)."""
+        V = FreeCAD.Vector
+        outer = Part.makePolygon(support.l_points(width=8, height=6, notch=4) + [V(0, 0, 0)])
+        hole = Part.makePolygon([V(1, 1, 0), V(2, 1, 0), V(2, 2, 0), V(1, 2, 0), V(1, 1, 0)])
+        face = Part.makeFace([outer, hole], "Part::FaceMakerBullseye")
+        profile = support.add_face(self.doc, face, "Profile")
+        extrusion = self.doc.addObject("Part::Extrusion", "Extrusion")
+        extrusion.Base = profile
+        extrusion.DirMode = "Custom"
+        extrusion.Dir = direction
+        extrusion.LengthFwd = direction.Length
+        extrusion.Solid = True
+        self.doc.recompute()
+        self.assertEqual(len(extrusion.Shape.Solids), 1)
+        return extrusion
+
+    def check_hexa8(self, femmesh, volume, hexes):
+        """Every hexa8 of `femmesh`, as FreeCAD's own .inp writer gives it to CalculiX, has a positive C3D8 volume,
+        and the volumes add up to the solid's."""
+        self.assertEqual(femmesh.HexaCount, hexes)
+        self.assertEqual(femmesh.VolumeCount, hexes)
+        path = os.path.join(self.folder, "mesh.inp")
+        femmesh.writeABAQUS(path, 1, False)
+        elements, nodes = abaqus_elements(path)
+        self.assertEqual(len(elements), hexes)
+        volumes = [c3d8_volume([nodes[n] for n in element]) for element in elements.values()]
+        self.assertGreater(min(volumes), 0.0)
+        self.assertAlmostEqual(sum(volumes), volume, delta=1e-9 * volume)
+
+    def test_a_box_meshes_to_hexahedra(self):
+        box = self.doc.addObject("Part::Box", "Box")
+        box.Length, box.Width, box.Height = 10, 4, 3
+        box.Placement.Base = FreeCAD.Vector(5, 0, 0)
+        self.doc.recompute()
+        self.assertTrue(AutoBlock.is_solid(box))
+        self.assertFalse(AutoBlock.is_solid((box, "Face6")))  # a face of it is a face
+        mesh = AutoBlock.mesh(box, size=1.0)
+        self.assertIsInstance(mesh, AutoBlock.HexMeshResult)
+        self.assertEqual(len(mesh.hexes), 10 * 4 * 3)
+        self.assertEqual(len(mesh.nodes), 11 * 5 * 4)
+        self.assertEqual((mesh.n_blocks, mesh.layers), (1, 3))
+        self.assertEqual(mesh.quality["min_scaled_jacobian"], 1.0)
+        self.assertEqual(mesh.quality["irregular_edges"], 0)
+        self.assertTrue(mesh.conformal)
+        self.assertAlmostEqual(mesh.volume, 120.0)
+        self.assertAlmostEqual(min(p.x for p in mesh.nodes), 5.0)  # global coordinates
+        # The core's C3D8 order: every hexahedron positive, the volumes adding up.
+        volumes = [c3d8_volume([mesh.nodes[i] for i in h]) for h in mesh.hexes]
+        self.assertGreater(min(volumes), 0.0)
+        self.assertAlmostEqual(sum(volumes), 120.0, places=9)
+        self.check_hexa8(mesh.fem_mesh(), 120.0, 120)
+        self.assertEqual(len(mesh.blocks), 1)
+        self.assertAlmostEqual(mesh.blocks[0].Volume, 120.0)
+        # layers and grading reach the core.
+        graded = AutoBlock.mesh_solid(box, size=1.0, layers=6, grading=1.5)
+        self.assertEqual((graded.layers, len(graded.hexes)), (6, 240))
+        zs = sorted(set(round(p.z, 9) for p in graded.nodes))
+        self.assertAlmostEqual((zs[2] - zs[1]) / (zs[1] - zs[0]), 1.5)
+
+    def test_an_extrusion_with_a_hole_gets_prism_blocks_and_a_hexa8_mesh(self):
+        from AutoBlock.objects.fem_mesh import is_autoblock_hex_mesh
+
+        extrusion = self.holed_extrusion()
+        solid = extrusion.Shape.Solids[0]
+        expected = AutoBlock.mesh(extrusion, size=1.0)
+        self.assertGreater(expected.n_blocks, 2)
+        self.assertTrue(expected.conformal)
+        self.assertEqual(expected.quality["min_scaled_jacobian"], 1.0)
+        undo_count = self.doc.UndoCount
+        obj = AutoBlock.make_autoblock_solid(extrusion, mesh_size=1.0)
+        self.assertEqual(self.doc.UndoCount, undo_count + 1)  # object and mesh: one transaction
+        self.assertEqual(self.doc.UndoNames[0], "Auto-Block")
+        self.assertTrue(AutoBlock.is_autoblock_solid(obj))
+        # The solid split into prism blocks sharing their faces.
+        self.assertEqual(obj.NumberOfBlocks, expected.n_blocks)
+        self.assertEqual(len(obj.Shape.Solids), obj.NumberOfBlocks)
+        self.assertAlmostEqual(sum(s.Volume for s in obj.Shape.Solids), solid.Volume, delta=1e-9 * solid.Volume)
+        self.assertLess(len(obj.Shape.Faces), sum(len(s.Faces) for s in obj.Shape.Solids))  # shared faces
+        self.assertEqual(list(obj.Caps), list(expected.caps))
+        # Its hexa8 FEM mesh.
+        meshes = AutoBlock.hex_mesh_objects_of(obj)
+        self.assertEqual(len(meshes), 1)
+        mesh = meshes[0]
+        self.assertTrue(is_autoblock_hex_mesh(mesh))
+        self.assertEqual(mesh.TypeId, "Fem::FemMeshObjectPython")
+        self.assertEqual(mesh.NumberOfHexahedra, len(expected.hexes))
+        self.assertEqual(mesh.FemMesh.NodeCount, len(expected.nodes))
+        self.assertIn("min scaled Jacobian 1, 0 irregular edges, conformal", mesh.Quality)
+        self.check_hexa8(mesh.FemMesh, solid.Volume, len(expected.hexes))
+        self.assertIs(AutoBlock.mesh(obj), mesh)  # the object's mesh, not a second one
+        self.assertIs(AutoBlock.mesh(mesh), mesh)
+        # The core's exporters (as `autoblock mesh SOLID --out`): .inp with C3D8 elements and a set per block.
+        inp = os.path.join(self.folder, "solid.inp")
+        exported = AutoBlock.export_mesh(mesh, inp)
+        self.assertEqual(exported.file, inp)
+        elements, nodes = abaqus_elements(inp)
+        self.assertEqual(len(elements), len(expected.hexes))
+        volumes = [c3d8_volume([nodes[n] for n in element]) for element in elements.values()]
+        self.assertGreater(min(volumes), 0.0)
+        self.assertAlmostEqual(sum(volumes), solid.Volume, delta=1e-9 * solid.Volume)
+        with open(inp) as stream:
+            self.assertEqual(stream.read().count("ELSET=BLOCK_"), expected.n_blocks)
+        msh = expected.export(os.path.join(self.folder, "solid.msh"))
+        with open(msh) as stream:
+            self.assertIn("$MeshFormat\n4.1 0 8", stream.read())
+        with self.assertRaisesRegex(ValueError, "expected a .msh, .vtu or .inp file"):
+            expected.export(os.path.join(self.folder, "solid.stl"))
+        self.assertFalse(os.path.exists(os.path.join(self.folder, "solid.stl")))
+        # It follows its source on recompute.
+        extrusion.LengthFwd = 10
+        self.doc.recompute()
+        self.assertIn("Up-to-date", mesh.State)
+        self.assertEqual(mesh.NumberOfLayers, 10)
+        self.assertEqual(mesh.NumberOfHexahedra, 2 * len(expected.hexes))
+        self.check_hexa8(mesh.FemMesh, extrusion.Shape.Volume, 2 * len(expected.hexes))
+        # Undo of the Auto-Block removes the mesh with its object.
+        names = [o.Name for o in self.doc.Objects]
+        AutoBlock.make_autoblock_solid(extrusion, mesh_size=2.0)
+        self.assertEqual(len(self.doc.Objects), len(names) + 2)
+        self.doc.undo()
+        self.assertEqual([o.Name for o in self.doc.Objects], names)
+
+    def test_an_oblique_extrusion_and_a_pad_in_a_body(self):
+        oblique = self.holed_extrusion(FreeCAD.Vector(1, 0, 4))
+        mesh = AutoBlock.mesh(oblique, size=1.0)
+        self.assertTrue(mesh.conformal)
+        self.assertAlmostEqual(mesh.quality["min_scaled_jacobian"], 4 / 17 ** 0.5, places=9)
+        self.check_hexa8(mesh.fem_mesh(), oblique.Shape.Volume, len(mesh.hexes))
+        body, pad = support.add_l_pad(self.doc)
+        for source in (pad, body):
+            obj = AutoBlock.make_autoblock_solid(source, mesh_size=0.5)
+            hexa = AutoBlock.hex_mesh_objects_of(obj)[0]
+            self.assertEqual(obj.NumberOfBlocks, 2)
+            self.check_hexa8(hexa.FemMesh, pad.Shape.Volume, hexa.NumberOfHexahedra)
+
+    def test_save_and_reopen_keeps_the_hexahedral_mesh(self):
+        extrusion = self.holed_extrusion()
+        obj = AutoBlock.make_autoblock_solid(extrusion, mesh_size=1.0)
+        mesh = AutoBlock.hex_mesh_objects_of(obj)[0]
+        hexes, nodes, blocks = mesh.NumberOfHexahedra, mesh.FemMesh.NodeCount, obj.NumberOfBlocks
+        names = (obj.Name, mesh.Name)
+        path = os.path.join(self.folder, "solid.FCStd")
+        self.doc.saveAs(path)
+        support.close_document(self.doc)
+        self.doc = FreeCAD.openDocument(path)
+        obj, mesh = self.doc.getObject(names[0]), self.doc.getObject(names[1])
+        self.assertTrue(AutoBlock.is_autoblock_solid(obj))
+        self.assertEqual(AutoBlock.hex_mesh_objects_of(obj), [mesh])
+        self.assertEqual(obj.NumberOfBlocks, blocks)
+        self.assertEqual(len(obj.Shape.Solids), blocks)
+        self.assertEqual((mesh.FemMesh.HexaCount, mesh.FemMesh.NodeCount), (hexes, nodes))
+        self.check_hexa8(mesh.FemMesh, self.doc.getObject("Extrusion").Shape.Volume, hexes)
+        # And it recomputes after reopening.
+        obj.MeshSize = 0.5
+        self.doc.recompute()
+        self.assertIn("Up-to-date", mesh.State)
+        self.assertGreater(mesh.NumberOfHexahedra, 4 * hexes)
+
+    def extruded_section(self, outer, hole, length, name):
+        """A Part extrusion along +Z by `length` of the section bounded by `outer` and `hole` (corner lists)."""
+        wire = lambda points: Part.makePolygon(points + points[:1])  # noqa: E731
+        face = Part.makeFace([wire(outer), wire(hole)], "Part::FaceMakerBullseye")
+        section = support.add_face(self.doc, face, name + "Section")
+        bar = self.doc.addObject("Part::Extrusion", name)
+        bar.Base = section
+        bar.DirMode, bar.Dir, bar.LengthFwd, bar.Solid = "Custom", FreeCAD.Vector(0, 0, length), length, True
+        self.doc.recompute()
+        return bar, face
+
+    def calculix(self, bar, mesh, supports, force, direction, end, inp_edit=None):
+        """Solve with FreeCAD's FEM objects and CalculiX tools (femtools.ccxtools, ccx 2.20): steel (E 210000,
+        nu 0.3), displacement constraints supports [(sub-element, axes held)], `force` on the face `end` along
+        the edge `direction` (sub-element names of bar). inp_edit(text) -> text may change the .inp FreeCAD
+        wrote before ccx runs. Returns {node number: displacement}."""
+        import ObjectsFem
+        from femtools import ccxtools
+
+        analysis = ObjectsFem.makeAnalysis(self.doc, "Analysis")
+        solver = ObjectsFem.makeSolverCalculixCcxTools(self.doc, "Solver")
+        material = ObjectsFem.makeMaterialSolid(self.doc, "Steel")
+        card = material.Material
+        card.update({"Name": "Steel", "YoungsModulus": "210000 MPa", "PoissonRatio": "0.3", "Density": "7900 kg/m^3"})
+        material.Material = card
+        for member in (solver, material, mesh):
+            analysis.addObject(member)
+        for element, axes in supports:
+            constraint = ObjectsFem.makeConstraintDisplacement(self.doc, "Support")
+            constraint.References = [(bar, element)]
+            for axis in axes:
+                setattr(constraint, axis + "Free", False)
+                setattr(constraint, axis + "Fix", True)
+            analysis.addObject(constraint)
+        load = ObjectsFem.makeConstraintForce(self.doc, "Force")
+        load.References = [(bar, end)]
+        load.Force = force
+        load.Direction = (bar, [direction])
+        load.Reversed = False
+        analysis.addObject(load)
+        self.doc.recompute()
+        fea = ccxtools.FemToolsCcx(analysis, solver)
+        fea.update_objects()
+        work = os.path.join(self.folder, "ccx-" + bar.Name)
+        os.makedirs(work)
+        fea.setup_working_dir(work)
+        fea.setup_ccx()
+        self.assertEqual(fea.check_prerequisites(), "")
+        fea.write_inp_file()
+        if inp_edit is not None:
+            with open(fea.inp_file_name) as stream:
+                text = stream.read()
+            with open(fea.inp_file_name, "w") as stream:
+                stream.write(inp_edit(text))
+        fea.ccx_run()
+        fea.load_results()
+        results = [o for o in analysis.Group if o.isDerivedFrom("Fem::FemResultObject")]
+        self.assertEqual(len(results), 1)
+        return dict(zip(results[0].NodeNumbers, results[0].DisplacementVectors))
+
+    @staticmethod
+    def number(elements, test):
+        return next(i for i, e in enumerate(elements, 1) if test(e))
+
+    def test_a_bar_in_tension_through_freecads_calculix_tools(self):
+        # An L-section bar with a hole (area 17), length 20, meshed by AutoBlock and solved by CalculiX through
+        # FreeCAD's tools. The fixed end only holds the axial displacement (plus two corners against rigid
+        # motion), so the bar is free to contract: the stress is uniform and the end moves by F L / (E A), which
+        # hexahedra represent exactly.
+        V = FreeCAD.Vector
+        length, force = 20.0, 1000.0
+        bar, face = self.extruded_section([V(0, 0, 0), V(6, 0, 0), V(6, 2, 0), V(2, 2, 0), V(2, 5, 0), V(0, 5, 0)],
+                                          [V(0.5, 0.5, 0), V(1.5, 0.5, 0), V(1.5, 1.5, 0), V(0.5, 1.5, 0)], length,
+                                          "Bar")
+        self.assertAlmostEqual(face.Area, 17.0)
+        solid = bar.Shape
+        mesh = AutoBlock.hex_mesh_objects_of(AutoBlock.make_autoblock_solid(bar, mesh_size=0.5))[0]
+        vertex = lambda p: "Vertex{}".format(self.number(solid.Vertexes, lambda v: (v.Point - p).Length < 1e-9))  # noqa
+        supports = [("Face{}".format(self.number(solid.Faces, lambda f: f.BoundBox.ZMax < 1e-9)), "z"),
+                    (vertex(V(0, 0, 0)), "xy"), (vertex(V(6, 0, 0)), "y")]
+        end = "Face{}".format(self.number(solid.Faces, lambda f: f.BoundBox.ZMin > length - 1e-9))
+        axis = "Edge{}".format(self.number(solid.Edges, lambda e: e.BoundBox.ZLength > length - 1e-9))
+        displacement = self.calculix(bar, mesh, supports, force, axis, end)
+        ends = [displacement[n].z for n, p in mesh.FemMesh.Nodes.items() if abs(p.z - length) < 1e-9]
+        self.assertGreater(len(ends), 20)
+        theory = force * length / (210000.0 * face.Area)
+        mean = sum(ends) / len(ends)
+        self.assertLess(abs(mean / theory - 1.0), 0.005, "mean end displacement {} vs F L / (E A) = {}".format(
+            mean, theory))
+
+    def test_a_cantilever_through_freecads_calculix_tools(self):
+        # A square tube (4 x 4, hole 2 x 2, length 40) clamped at one end, a force of 100 across the other end
+        # face; AutoBlock's hexahedra at size 1. FreeCAD 0.20 writes hexa8 as C3D8 (full integration, which
+        # stiffens in bending); the same .inp with C3D8I (incompatible modes, no locking) is solved too.
+        # Beam theory: F L^3 / (3 E I), I = (4^4 - 2^4) / 12 = 20.
+        V = FreeCAD.Vector
+        length, force = 40.0, 100.0
+        tips = {}
+        for element in ("C3D8", "C3D8I"):
+            tube, face = self.extruded_section([V(0, 0, 0), V(4, 0, 0), V(4, 4, 0), V(0, 4, 0)],
+                                               [V(1, 1, 0), V(3, 1, 0), V(3, 3, 0), V(1, 3, 0)], length, "Tube" + element)
+            solid = tube.Shape
+            mesh = AutoBlock.hex_mesh_objects_of(AutoBlock.make_autoblock_solid(tube, mesh_size=1.0))[0]
+            clamped = "Face{}".format(self.number(solid.Faces, lambda f: f.BoundBox.ZMax < 1e-9))
+            end = "Face{}".format(self.number(solid.Faces, lambda f: f.BoundBox.ZMin > length - 1e-9))
+            across = "Edge{}".format(self.number(solid.Edges, lambda e: e.BoundBox.XLength > 3.9 and e.BoundBox.ZMax < 1e-9))
+            edit = (lambda text: text.replace("TYPE=C3D8,", "TYPE=C3D8I,")) if element == "C3D8I" else None
+            displacement = self.calculix(tube, mesh, [(clamped, "xyz")], force, across, end, edit)
+            ends = [displacement[n].x for n, p in mesh.FemMesh.Nodes.items() if abs(p.z - length) < 1e-9]
+            tips[element] = sum(ends) / len(ends)
+        theory = force * length ** 3 / (3 * 210000.0 * 20.0)
+        for element, tip in tips.items():
+            self.assertLess(abs(tip / theory - 1.0), 0.05, "{}: tip deflection {} vs F L^3 / (3 E I) = {}".format(
+                element, tip, theory))
+        self.assertGreater(tips["C3D8I"], tips["C3D8"])  # the incompatible modes do not lock
+        print("AutoBlock cantilever: C3D8 {:.4f}, C3D8I {:.4f}, theory {:.4f}".format(
+            tips["C3D8"], tips["C3D8I"], theory))
+
+    def test_write_back_of_the_prism_blocks(self):
+        extrusion = self.holed_extrusion()
+        solid = extrusion.Shape.copy()
+        holder = support.add_face(self.doc, solid, "Imported")  # a plain Part feature holding the solid
+        obj = AutoBlock.make_autoblock_solid(holder, mesh_size=1.0)
+        blocks = obj.NumberOfBlocks
+        new = AutoBlock.write_back(obj, "new")
+        self.assertEqual(len(new.Shape.Solids), blocks)
+        self.assertAlmostEqual(new.Shape.Volume, solid.Volume, delta=1e-9 * solid.Volume)
+        # A parametric source cannot be replaced; a plain Part feature can.
+        parametric = AutoBlock.make_autoblock_solid(extrusion, mesh=False)
+        with self.assertRaisesRegex(ValueError, "recomputed from its own inputs"):
+            AutoBlock.write_back(parametric, "replace")
+        mesh = AutoBlock.hex_mesh_objects_of(obj)[0].Name
+        self.assertIs(AutoBlock.write_back(obj, "replace"), holder)
+        self.assertEqual(len(holder.Shape.Solids), blocks)
+        self.assertTrue(holder.Shape.isValid())
+        self.assertAlmostEqual(holder.Shape.Volume, solid.Volume, delta=1e-9 * solid.Volume)
+        self.assertIsNone(self.doc.getObject(mesh))  # the solid object and its mesh are gone
+        self.assertFalse([o for o in self.doc.Objects if AutoBlock.is_autoblock_solid(o) and o.Source == holder])
+
+    def test_a_solid_that_is_not_a_sweep_raises_value_error(self):
+        sphere = self.doc.addObject("Part::Sphere", "Sphere")
+        cylinder = self.doc.addObject("Part::Cylinder", "Cylinder")
+        self.doc.recompute()
+        names = [o.Name for o in self.doc.Objects]
+        for source in (sphere, cylinder):
+            with self.assertRaisesRegex(ValueError, r"^{}: face \d+ is curved \(a {}\): a swept solid's faces are all "
+                                                    r"planar$".format(source.Label, source.Label.lower())):
+                AutoBlock.mesh(source)
+            with self.assertRaisesRegex(ValueError, "is curved"):
+                AutoBlock.make_autoblock_solid(source)
+        with self.assertRaisesRegex(ValueError, "is curved"):
+            AutoBlock.mesh_solid(Part.makeCylinder(2, 5))
+        two = Part.makeCompound([Part.makeBox(1, 1, 1), Part.makeBox(1, 1, 1, FreeCAD.Vector(3, 0, 0))])
+        with self.assertRaisesRegex(ValueError, "solid"):
+            AutoBlock.mesh(two)
+        with self.assertRaisesRegex(ValueError, "not a solid"):
+            AutoBlock.mesh_solid(Part.makePlane(1, 1))
+        self.assertEqual([o.Name for o in self.doc.Objects], names)
 
 
 if __name__ == "__main__":

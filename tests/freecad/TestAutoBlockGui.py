@@ -15,6 +15,7 @@ import unittest
 
 import FreeCAD
 import FreeCADGui
+import Part
 from PySide2 import QtCore, QtGui, QtWidgets
 
 import AutoBlock
@@ -293,13 +294,7 @@ class TestAutoBlockCommand(GuiTestCase):
         self.assertEqual([o for o in self.doc.Objects if AutoBlock.is_autoblock(o)], [])
 
     def test_a_face_inside_a_body(self):
-        body = self.doc.addObject("PartDesign::Body", "Body")
-        sketch = support.add_l_sketch(self.doc)
-        body.addObject(sketch)
-        pad = self.doc.addObject("PartDesign::Pad", "Pad")
-        body.addObject(pad)
-        pad.Profile = sketch
-        pad.Length = 3
+        body, pad = support.add_l_pad(self.doc)
         body.Placement.Base = FreeCAD.Vector(50, 0, 0)
         self.doc.recompute()
         top = [i for i, f in enumerate(pad.Shape.Faces, 1) if abs(f.BoundBox.ZMin - 3) < 1e-9
@@ -315,6 +310,46 @@ class TestAutoBlockCommand(GuiTestCase):
         self.assertAlmostEqual(objects[0].Shape.BoundBox.XMin, 50.0)
         self.assertFalse(pad.ViewObject.Visibility)
 
+    def test_auto_block_on_a_solid_makes_prism_blocks_and_hexahedra(self):
+        from AutoBlock.objects.fem_mesh import ViewProviderAutoBlockMesh, is_autoblock_mesh
+
+        # An L with a square hole, extruded by Part's Extrusion (as a Pad would be).
+        V = FreeCAD.Vector
+        hole = Part.makePolygon([V(1, 1, 0), V(2, 1, 0), V(2, 2, 0), V(1, 2, 0), V(1, 1, 0)])
+        outer = Part.makePolygon(support.l_points(width=8, height=6, notch=3) + [V(0, 0, 0)])
+        profile = support.add_face(self.doc, Part.makeFace([outer, hole], "Part::FaceMakerBullseye"), "Profile")
+        box = self.doc.addObject("Part::Extrusion", "Extrusion")
+        box.Base, box.DirMode, box.Dir, box.LengthFwd, box.Solid = profile, "Custom", V(0, 0, 2), 2.0, True
+        self.doc.recompute()
+        profile.ViewObject.Visibility = False
+        expected = AutoBlock.mesh(box)  # the automatic size: 1/20 of the longest side, 0.4
+        undo_count = self.doc.UndoCount
+        self.assertEqual(self.auto_block(box), [])  # no face object
+        solids = [o for o in self.doc.Objects if AutoBlock.is_autoblock_solid(o)]
+        self.assertEqual(len(solids), 1)
+        obj = solids[0]
+        self.assertIs(obj.Source, box)
+        self.assertEqual(self.doc.UndoCount, undo_count + 1)
+        self.assertEqual(self.doc.UndoNames[0], "Auto-Block")
+        self.assertFalse(box.ViewObject.Visibility)
+        self.assertEqual(len(obj.ViewObject.DiffuseColor), len(obj.Shape.Faces))
+        meshes = AutoBlock.hex_mesh_objects_of(obj)
+        self.assertEqual(len(meshes), 1)
+        self.assertFalse(is_autoblock_mesh(meshes[0]))  # not a quad mesh object
+        self.assertIsInstance(meshes[0].ViewObject.Proxy, ViewProviderAutoBlockMesh)
+        self.assertGreater(obj.NumberOfBlocks, 2)
+        self.assertEqual(meshes[0].FemMesh.HexaCount, len(expected.hexes))
+        self.assertEqual(len(set(tuple(round(c, 3) for c in colour[:3]) for colour in obj.ViewObject.DiffuseColor)),
+                         obj.NumberOfBlocks)  # a colour per block
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.ActiveDocument.ActiveView.viewIsometric()
+        FreeCADGui.SendMsgToActiveView("ViewFit")
+        screenshot("freecad-hex-mesh")
+        self.doc.undo()
+        pump()
+        self.assertEqual([o for o in self.doc.Objects if AutoBlock.is_autoblock_solid(o) or o in meshes], [])
+        self.assertTrue(box.ViewObject.Visibility)
+
     def test_an_unsupported_face_gets_a_dialog_and_changes_nothing(self):
         sphere = self.doc.addObject("Part::Sphere", "Sphere")
         sphere.Placement.Base = FreeCAD.Vector(-8, 8, 0)
@@ -329,17 +364,17 @@ class TestAutoBlockCommand(GuiTestCase):
         self.assertEqual(len(dialogs.seen), 1)
         title, text = dialogs.seen[0]
         self.assertIn("Auto-Block", title)
-        self.assertIn("not planar", text)
+        self.assertIn("curved (a sphere)", text)  # selected whole: checked as a solid
         self.assertIn("nothing was changed", text)
         self.assertEqual([o.Name for o in self.doc.Objects], names)
         self.assertEqual(self.doc.UndoCount, undo_count)
         self.assertTrue(good.ViewObject.Visibility)
 
-    def test_write_back_command(self):
+    @staticmethod
+    def write_back_new(obj):
+        """Run Write back on `obj`, answering "New Part feature"."""
         from AutoBlock.commands.write_back import WriteBackCommand
 
-        source = self.add_sample()
-        obj = self.auto_block(source)[0]
         FreeCADGui.Selection.clearSelection()
         FreeCADGui.Selection.addSelection(obj)
         original = WriteBackCommand.choose_mode
@@ -349,10 +384,24 @@ class TestAutoBlockCommand(GuiTestCase):
             pump()
         finally:
             WriteBackCommand.choose_mode = original
+
+    def test_write_back_command(self):
+        source = self.add_sample()
+        obj = self.auto_block(source)[0]
+        self.write_back_new(obj)
         features = [o for o in self.doc.Objects if o.TypeId == "Part::Feature" and o.Name != source.Name]
         self.assertEqual(len(features), 1)
         self.assertEqual(len(features[0].Shape.Faces), obj.NumberOfBlocks)
         self.assertEqual(self.doc.UndoNames[0], "Write back blocks")
+        # An AutoBlock solid object's prisms, the same way.
+        box = self.doc.addObject("Part::Box", "Box")
+        self.doc.recompute()
+        solid = AutoBlock.make_autoblock_solid(box, mesh=False)
+        self.write_back_new(solid)
+        features = [o for o in self.doc.Objects if o.TypeId == "Part::Feature" and o.Name != source.Name]
+        self.assertEqual(len(features), 2)
+        self.assertEqual(len(features[-1].Shape.Solids), solid.NumberOfBlocks)
+        self.assertAlmostEqual(features[-1].Shape.Volume, box.Shape.Volume)
 
 
 class TestExportMeshCommand(GuiTestCase):

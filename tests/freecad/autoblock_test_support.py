@@ -98,3 +98,16 @@ def add_slanted_sketch(doc, name="Slanted"):
             sketch.addGeometry(Part.LineSegment(a, b))
     doc.recompute()
     return sketch
+
+
+def add_l_pad(doc, length=3.0):
+    """A PartDesign Body holding an L sketch padded by `length`: (body, pad), recomputed."""
+    body = doc.addObject("PartDesign::Body", "Body")
+    sketch = add_l_sketch(doc)
+    body.addObject(sketch)
+    pad = doc.addObject("PartDesign::Pad", "Pad")
+    body.addObject(pad)
+    pad.Profile = sketch
+    pad.Length = length
+    doc.recompute()
+    return body, pad

@@ -1,4 +1,5 @@
-"""Auto-Block: the selected planar faces -> one parametric AutoBlock object each."""
+"""Auto-Block: the selected planar faces -> one parametric AutoBlock object each; a selected solid (an object
+holding one swept solid, selected whole) -> an AutoBlock solid object (prism blocks) and its hexa8 FEM mesh."""
 
 import FreeCAD
 import FreeCADGui
@@ -30,7 +31,8 @@ class AutoBlockCommand(BaseCommand):
     ICON = "AutoBlock_AutoBlock"
     MENU_TEXT = "Auto-Block"
     TOOL_TIP = ("Cut the selected planar faces into blocks: one parametric AutoBlock object per face, with a FEM "
-                "mesh of quads on rectilinear faces (select faces, a sketch, or objects holding one face)")
+                "mesh of quads on rectilinear faces (select faces, a sketch, or objects holding one face); a selected swept "
+                "solid (a box, an extrusion, a Pad) is split into prism blocks with a FEM mesh of hexahedra")
 
     def IsActive(self):
         return FreeCADGui.ActiveDocument is not None and bool(FreeCADGui.Selection.getSelection())
@@ -39,18 +41,26 @@ class AutoBlockCommand(BaseCommand):
         from .. import console
         from ..gui_utils import echo, object_ref, report_error
         from ..objects.autoblock_feature import is_autoblock
-        from ..objects.fem_mesh import is_autoblock_mesh
+        from ..objects.fem_mesh import is_autoblock_hex_mesh, is_autoblock_mesh
+        from ..objects.solid_blocks import is_autoblock_solid
         from ..transactions import transaction
 
         targets = selected_targets()
         if not targets:
             report_error("Auto-Block", "Select one or more planar faces (or a sketch, or an object holding one face).")
             return
-        # Check every face first: with one bad face, nothing changes.
+        # Check every face and solid first: with one bad one, nothing changes. An object selected whole whose
+        # shape holds a solid is a solid (split into prisms and meshed with hexahedra); a selected face, a cap
+        # of a solid included, stays a face.
         problems = []
+        solids = set()
         for obj, sub, _ in targets:
             try:
-                console.check_face(obj, sub)
+                if console.is_solid(obj, sub):
+                    console.check_solid(obj)
+                    solids.add((obj.Name, sub))
+                else:
+                    console.check_face(obj, sub)
             except (ValueError, TypeError) as error:
                 problems.append(str(error))
         if problems:
@@ -62,7 +72,9 @@ class AutoBlockCommand(BaseCommand):
         with transaction("Auto-Block"):
             echo("import AutoBlock")
             for obj, sub, _ in targets:
-                if sub:
+                if (obj.Name, sub) in solids:
+                    echo("AutoBlock.make_autoblock_solid({})".format(object_ref(obj)))
+                elif sub:
                     echo("AutoBlock.make_autoblock({}, {!r})".format(object_ref(obj), sub))
                 else:
                     echo("AutoBlock.make_autoblock({})".format(object_ref(obj)))
@@ -73,8 +85,8 @@ class AutoBlockCommand(BaseCommand):
         created = [o for o in doc.Objects if o.Name not in before]
         FreeCADGui.Selection.clearSelection()
         for obj in created:
-            if is_autoblock(obj):
+            if is_autoblock(obj) or is_autoblock_solid(obj):
                 FreeCADGui.Selection.addSelection(obj)
                 FreeCAD.Console.PrintMessage("AutoBlock: {}: {}\n".format(obj.Label, obj.Status))
-            elif is_autoblock_mesh(obj):
+            elif is_autoblock_mesh(obj) or is_autoblock_hex_mesh(obj):
                 FreeCAD.Console.PrintMessage("AutoBlock: {}: {}\n".format(obj.Label, obj.Quality))

@@ -1,8 +1,16 @@
-"""Write the partitioned face back: a new Part feature, or replace the source's shape."""
+"""Write the partitioned face (or a solid's prism blocks) back: a new Part feature, or replace the source's
+shape."""
 
 import FreeCADGui
 
 from .base import BaseCommand, selected_autoblocks
+
+
+def selected_targets():
+    """The selected AutoBlock objects and AutoBlock solid objects."""
+    from ..objects.solid_blocks import is_autoblock_solid
+
+    return selected_autoblocks() + [o for o in FreeCADGui.Selection.getSelection() if is_autoblock_solid(o)]
 
 
 def ask_mode(obj):
@@ -14,13 +22,18 @@ def ask_mode(obj):
     box = QtWidgets.QMessageBox(main_window())
     box.setWindowTitle("AutoBlock: write back")
     box.setIcon(QtWidgets.QMessageBox.Question)
-    source = obj.Source[0].Label if obj.Source else "the source"
+    from ..objects.solid_blocks import is_autoblock_solid
+
+    solid = is_autoblock_solid(obj)
+    source = (obj.Source.Label if solid else obj.Source[0].Label) if obj.Source else "the source"
     box.setText("Write the blocks of {} back into the document:".format(obj.Label))
     box.setInformativeText(
-        "New Part feature: a compound of the {n} block faces; {src} and {obj} stay as they are.\n\n"
-        "Replace source shape: {src} gets the partitioned face in place of its face (plain Part features "
-        "only); {obj} is then removed.\n\nEither can be undone.".format(n=obj.NumberOfBlocks, src=source,
-                                                                        obj=obj.Label))
+        "New Part feature: a compound of the {n} {kind}; {src} and {obj} stay as they are.\n\n"
+        "Replace source shape: {src} gets {what} (plain Part features only); {obj} is then removed.\n\n"
+        "Either can be undone.".format(n=obj.NumberOfBlocks, src=source, obj=obj.Label,
+                                       kind="prism blocks" if solid else "block faces",
+                                       what="the prism blocks in place of its solid" if solid else
+                                       "the partitioned face in place of its face"))
     new = box.addButton("New Part feature", QtWidgets.QMessageBox.AcceptRole)
     replace = box.addButton("Replace source shape", QtWidgets.QMessageBox.AcceptRole)
     box.addButton(QtWidgets.QMessageBox.Cancel)
@@ -45,13 +58,13 @@ class WriteBackCommand(BaseCommand):
     choose_mode = staticmethod(ask_mode)
 
     def IsActive(self):
-        return FreeCADGui.ActiveDocument is not None and len(selected_autoblocks()) >= 1
+        return FreeCADGui.ActiveDocument is not None and len(selected_targets()) >= 1
 
     def run(self):
         from ..gui_utils import echo, object_ref
         from ..transactions import transaction
 
-        objects = selected_autoblocks()
+        objects = selected_targets()
         mode = self.choose_mode(objects[0])
         if mode is None:
             return

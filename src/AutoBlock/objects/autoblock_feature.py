@@ -6,6 +6,7 @@ properties). Its FEM mesh object (fem_mesh.py) follows it.
 make_autoblock() is what the Auto-Block button runs.
 """
 
+import contextlib
 import json
 
 import FreeCAD
@@ -157,59 +158,84 @@ def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, s
         raise TypeError("make_autoblock needs a document object, got {}".format(type(source).__name__))
     # Check before touching the document.
     console.check_face(source, sub)
-    spec = policy or preferences.default_policy()
-    module = native.load()
-    names = list(module.policy_names())
-    reward = preferences.reward_preset() if reward is None else reward
-    presets = list(module.reward_presets())
-    if reward and reward not in presets:
-        raise ValueError("unknown reward preset '{}' (expected {}, or '' for the policy's own)".format(
-            reward, ", ".join(presets)))
+    spec, reward = chosen_settings(policy, reward)
     doc = source.Document
+    with new_objects(doc) as created:
+        obj = doc.addObject("Part::FeaturePython", name)
+        created.append(obj.Name)
+        AutoBlockFeature(obj)
+        if FreeCAD.GuiUp:
+            from ..viewproviders.view_autoblock import ViewProviderAutoBlock
+
+            ViewProviderAutoBlock(obj.ViewObject)
+        obj.Label = "{} {}".format(name, source.Label) + (" {}".format(sub) if sub else "")
+        set_settings(obj, spec, reward, seed, time_limit, mesh_size)
+        obj.Source = (source, [sub] if sub else [])
+        recompute_checked(obj)
+        meshable = native.has("meshing") and obj.Proxy.last_complete
+        if mesh or (mesh is None and meshable):
+            from .fem_mesh import make_mesh_object
+
+            try:
+                created.append(make_mesh_object(obj).Name)
+            except ValueError as error:
+                if mesh:
+                    raise
+                # The blocks stand without their mesh (e.g. a mesh size asking for too many quads).
+                FreeCAD.Console.PrintWarning("AutoBlock: {}: no FEM mesh: {}\n".format(obj.Label, error))
+    return obj
+
+
+@contextlib.contextmanager
+def new_objects(doc):
+    """One undoable transaction ("Auto-Block", or the caller's when one is open) for new objects: the block
+    appends the names of the objects it adds to the yielded list; when it raises, they are removed (without undo,
+    freecadcmd's default, aborting the transaction leaves them) and the error passes on."""
     created = []
     try:
         with transaction("Auto-Block"):
-            obj = doc.addObject("Part::FeaturePython", name)
-            created.append(obj.Name)
-            AutoBlockFeature(obj)
-            if FreeCAD.GuiUp:
-                from ..viewproviders.view_autoblock import ViewProviderAutoBlock
-
-                ViewProviderAutoBlock(obj.ViewObject)
-            obj.Label = "{} {}".format(name, source.Label) + (" {}".format(sub) if sub else "")
-            if spec in names:
-                obj.Policy = spec
-            else:
-                obj.PolicyFile = spec
-            obj.RewardPreset = reward
-            obj.Seed = int(seed)
-            obj.TimeLimit = float(time_limit)
-            obj.MeshSize = preferences.mesh_size() if mesh_size is None else float(mesh_size)
-            obj.Source = (source, [sub] if sub else [])
-            doc.recompute([obj])
-            error = obj.Proxy.last_error
-            if error is not None:
-                raise error
-            if not obj.isValid():
-                raise RuntimeError("{}: recompute failed ({})".format(obj.Label, ", ".join(obj.State)))
-            meshable = native.has("meshing") and obj.Proxy.last_complete
-            if mesh or (mesh is None and meshable):
-                from .fem_mesh import make_mesh_object
-
-                try:
-                    created.append(make_mesh_object(obj).Name)
-                except ValueError as error:
-                    if mesh:
-                        raise
-                    # The blocks stand without their mesh (e.g. a mesh size asking for too many quads).
-                    FreeCAD.Console.PrintWarning("AutoBlock: {}: no FEM mesh: {}\n".format(obj.Label, error))
+            yield created
     except BaseException:
-        # Without undo (freecadcmd's default) aborting the transaction leaves the objects: remove them.
         for object_name in reversed(created):
             if doc.getObject(object_name) is not None:
                 doc.removeObject(object_name)
         raise
-    return obj
+
+
+def chosen_settings(policy, reward):
+    """(policy, reward) as make_autoblock and make_autoblock_solid store them: policy None -> the preferred default,
+    reward None -> the preferred preset. ValueError for an unknown reward preset."""
+    spec = policy or preferences.default_policy()
+    reward = preferences.reward_preset() if reward is None else reward
+    presets = list(native.load().reward_presets())
+    if reward and reward not in presets:
+        raise ValueError("unknown reward preset '{}' (expected {}, or '' for the policy's own)".format(
+            reward, ", ".join(presets)))
+    return spec, reward
+
+
+def set_settings(obj, spec, reward, seed, time_limit, mesh_size):
+    """Store the decomposition's settings and the mesh size (None: the preferred one) in a new object: a policy
+    name in Policy, anything else (a policy file) in PolicyFile."""
+    if spec in list(native.load().policy_names()):
+        obj.Policy = spec
+    else:
+        obj.PolicyFile = spec
+    obj.RewardPreset = reward
+    obj.Seed = int(seed)
+    obj.TimeLimit = float(time_limit)
+    obj.MeshSize = preferences.mesh_size() if mesh_size is None else float(mesh_size)
+
+
+def recompute_checked(obj):
+    """Recompute a new object; raise what its proxy's execute raised (last_error), or RuntimeError when it is
+    not valid afterwards."""
+    obj.Document.recompute([obj])
+    error = obj.Proxy.last_error
+    if error is None and not obj.isValid():
+        error = RuntimeError("{}: recompute failed ({})".format(obj.Label, ", ".join(obj.State)))
+    if error is not None:
+        raise error
 
 
 def stepper_of(obj):

@@ -20,21 +20,28 @@ TYPE = "AutoBlock::Mesh"
 def fem_mesh(nodes, quads):
     """A Fem.FemMesh of 4-node quads. nodes: [(x, y, z)]; quads: [(a, b, c, d)] of 0-based node indices,
     counter-clockwise. Raises ValueError for a bad index or a degenerate quad."""
+    return _fem_mesh(nodes, quads, "quad", 4, lambda mesh, ids, number: mesh.addFace(ids, number))
+
+
+def _fem_mesh(nodes, elements, kind, size, add, order=None):
+    """A Fem.FemMesh of `nodes` ([(x, y, z)], numbered from 1) and `elements` (0-based node indices, `size` each,
+    taken in `order` when given), each added by add(mesh, node numbers, element number). Raises ValueError naming
+    the `kind` of element for a bad index."""
     import Fem
 
     count = len(nodes)
     mesh = Fem.FemMesh()
     for number, (x, y, z) in enumerate(nodes, 1):
         mesh.addNode(float(x), float(y), float(z), number)
-    for number, quad in enumerate(quads, 1):
-        quad = [int(i) for i in quad]
-        if len(quad) != 4:
-            raise ValueError("quad {} has {} nodes, expected 4".format(number, len(quad)))
-        if len(set(quad)) != 4:
-            raise ValueError("quad {} repeats a node: {}".format(number, quad))
-        if min(quad) < 0 or max(quad) >= count:
-            raise ValueError("quad {} refers to a node outside 0..{}: {}".format(number, count - 1, quad))
-        mesh.addFace([i + 1 for i in quad], number)
+    for number, element in enumerate(elements, 1):
+        element = [int(i) for i in element]
+        if len(element) != size:
+            raise ValueError("{} {} has {} nodes, expected {}".format(kind, number, len(element), size))
+        if len(set(element)) != size:
+            raise ValueError("{} {} repeats a node: {}".format(kind, number, element))
+        if min(element) < 0 or max(element) >= count:
+            raise ValueError("{} {} refers to a node outside 0..{}: {}".format(kind, number, count - 1, element))
+        add(mesh, [element[k] + 1 for k in (order or range(size))], number)
     return mesh
 
 
@@ -86,26 +93,37 @@ class AutoBlockMeshFeature:
         self.last_error = None
         self.ensure_properties(obj)
 
-    def execute(self, obj):
-        from .. import console
-        from .autoblock_feature import stepper_of
+    SOURCE = "AutoBlock object"
 
+    def execute(self, obj):
         self.last_error = None
         try:
             source = obj.AutoBlock
             if source is None:
-                raise ValueError("{}: no AutoBlock object to mesh (set AutoBlock)".format(obj.Label))
-            stepper = stepper_of(source)
-            size = float(source.MeshSize)
-            result = console.MeshResult(console._mesh_data(stepper, size), stepper, size)
+                raise ValueError("{}: no {} to mesh (set AutoBlock)".format(obj.Label, self.SOURCE))
+            result = self.mesh_of(source)
         except Exception as error:
             self.last_error = error
             raise
         obj.FemMesh = result.fem_mesh()
-        obj.NumberOfQuads = len(result.quads)
         obj.NumberOfNodes = len(result.nodes)
         obj.TargetSize = result.target_size
         obj.Quality = result.summary()
+        self.set_counts(obj, result)
+
+    @staticmethod
+    def mesh_of(source):
+        """The console's mesh result of the source object."""
+        from .. import console
+        from .autoblock_feature import stepper_of
+
+        stepper = stepper_of(source)
+        size = float(source.MeshSize)
+        return console.MeshResult(console._mesh_data(stepper, size), stepper, size)
+
+    @staticmethod
+    def set_counts(obj, result):
+        obj.NumberOfQuads = len(result.quads)
 
     def __getstate__(self):
         return None
@@ -141,27 +159,33 @@ class ViewProviderAutoBlockMesh:
         return None
 
 
+def _recompute_or_remove(obj):
+    """Compute a new mesh object; remove it again when that fails (and raise why)."""
+    from .autoblock_feature import recompute_checked
+
+    try:
+        recompute_checked(obj)
+    except BaseException:
+        obj.Document.removeObject(obj.Name)
+        raise
+
+
 def mesh_objects_of(autoblock):
     """The mesh objects linked to the AutoBlock object `autoblock`."""
     return [o for o in autoblock.InList if is_autoblock_mesh(o) and o.AutoBlock == autoblock]
 
 
-def make_mesh_object(autoblock, name="AutoBlockMesh"):
-    """Add the mesh object of `autoblock` to its document and compute it (no transaction of its own)."""
+def make_mesh_object(autoblock, name="AutoBlockMesh", feature=None):
+    """Add the mesh object of `autoblock` to its document and compute it (no transaction of its own). feature: its
+    proxy class (None: AutoBlockMeshFeature, the quads of a face's AutoBlock object)."""
     doc = autoblock.Document
     obj = doc.addObject("Fem::FemMeshObjectPython", name)
-    AutoBlockMeshFeature(obj)
+    (feature or AutoBlockMeshFeature)(obj)
     if FreeCAD.GuiUp:
         ViewProviderAutoBlockMesh(obj.ViewObject)
     obj.Label = "{} mesh".format(autoblock.Label)
     obj.AutoBlock = autoblock
-    doc.recompute([obj])
-    error = obj.Proxy.last_error
-    if error is None and not obj.isValid():
-        error = RuntimeError("{}: recompute failed ({})".format(obj.Label, ", ".join(obj.State)))
-    if error is not None:
-        doc.removeObject(obj.Name)
-        raise error
+    _recompute_or_remove(obj)
     return obj
 
 
@@ -204,3 +228,59 @@ def mesh_object_of(autoblock, size=None, create=True):
             doc.recompute()
         raise
     return obj
+
+
+# FreeCAD's hexa8 (SMESH) order against the core's C3D8 order (hex_mesh.h): each quad turned the other way.
+# FreeCAD's own .inp writer (FemMesh.writeABAQUS, used by its CalculiX tools) maps it back to a positive C3D8.
+C3D8_TO_HEXA8 = (0, 3, 2, 1, 4, 7, 6, 5)
+
+
+def fem_hex_mesh(nodes, hexes):
+    """A Fem.FemMesh of 8-node hexahedra. nodes: [(x, y, z)]; hexes: [(8 node indices)], 0-based, in the C3D8
+    order (0-3 one quad, 4-7 the same one layer on, positive volume). Raises ValueError for a bad index."""
+    return _fem_mesh(nodes, hexes, "hexahedron", 8, lambda mesh, ids, number: mesh.addVolume(ids, number),
+                     C3D8_TO_HEXA8)
+
+
+HEX_TYPE = "AutoBlock::HexMesh"
+
+
+def is_autoblock_hex_mesh(obj):
+    """True for the hexahedral mesh object of an AutoBlock solid object."""
+    return getattr(getattr(obj, "Proxy", None), "Type", None) == HEX_TYPE
+
+
+class AutoBlockHexMeshFeature(AutoBlockMeshFeature):
+    """The hexa8 FEM mesh of an AutoBlock solid object (solid_blocks.py): recomputed with it, so it follows
+    the source solid, the policy, MeshSize, Layers and Grading."""
+
+    Type = HEX_TYPE
+    SOURCE = "AutoBlock solid object"
+
+    PROPERTIES = [
+        ("App::PropertyLink", "AutoBlock", "Mesh", "The AutoBlock solid object whose hexahedra this holds.", 0),
+        ("App::PropertyInteger", "NumberOfHexahedra", "Result", "Hexahedra in the mesh.", 8),
+        ("App::PropertyInteger", "NumberOfNodes", "Result", "Nodes in the mesh.", 8),
+        ("App::PropertyInteger", "NumberOfLayers", "Result", "Layers along the sweep.", 8),
+        ("App::PropertyFloat", "TargetSize", "Result", "The element size aimed at.", 8),
+        ("App::PropertyString", "Quality", "Result", "Summary of the mesh: minimum scaled Jacobian, irregular "
+         "edges, conformity.", 8),
+    ]
+    READ_ONLY = ("NumberOfHexahedra", "NumberOfNodes", "NumberOfLayers", "TargetSize", "Quality")
+
+    @staticmethod
+    def mesh_of(source):
+        from .solid_blocks import hex_mesh_of
+
+        return hex_mesh_of(source)
+
+    @staticmethod
+    def set_counts(obj, result):
+        obj.NumberOfHexahedra = len(result.hexes)
+        obj.NumberOfLayers = result.layers
+
+
+def make_hex_mesh_object(solid_object, name="AutoBlockHexMesh"):
+    """Add the hexa8 mesh object of an AutoBlock solid object to its document and compute it (no transaction of
+    its own; removed again when meshing fails)."""
+    return make_mesh_object(solid_object, name, AutoBlockHexMeshFeature)

@@ -3,6 +3,9 @@
     AutoBlock.write_back(obj, mode="new")       # a new Part feature holding the blocks (a compound)
     AutoBlock.write_back(obj, mode="replace")   # the source object's shape, with its face partitioned
 
+An AutoBlock solid object's prism blocks (solid_blocks.py) are written back the same way: a new Part feature
+holding them, or, with "replace", the source solid made the compound of its prisms.
+
 "replace" works on plain Part features (Part::Feature, e.g. an imported STEP face or solid): a
 parametric source (a sketch, an extrusion, a PartDesign feature) recomputes its shape from its own
 inputs, so replacing it would not last; such sources get a clear ValueError. When the source holds
@@ -31,8 +34,12 @@ def report(message):
 
 
 def write_back(obj, mode="new", name=None):
-    """Write `obj`'s blocks back. Returns the Part feature that holds them (new, or the source)."""
-    if not is_autoblock(obj):
+    """Write `obj`'s blocks back. Returns the Part feature that holds them (new, or the source). obj: an AutoBlock
+    object, or an AutoBlock solid object (solid_blocks.py), whose prism blocks become the new feature's shape
+    or replace its source solid."""
+    from .solid_blocks import is_autoblock_solid
+
+    if not is_autoblock(obj) and not is_autoblock_solid(obj):
         raise ValueError("{} is not an AutoBlock object".format(getattr(obj, "Label", obj)))
     if mode not in MODES:
         raise ValueError("mode must be 'new' or 'replace', not {!r}".format(mode))
@@ -59,7 +66,7 @@ def _new(obj, name):
     feature.Label = name or "{} blocks".format(obj.Label)
     feature.Shape = obj.Shape.copy()
     _copy_colours(obj, feature)
-    blocks = text.counted(len(feature.Shape.Faces), "block")
+    blocks = text.counted(len(_blocks_of(feature.Shape)), "block")
     if obj.Visibility:
         obj.Visibility = False
         hidden = "; hid {}, which shows the same blocks in the same place".format(obj.Label)
@@ -70,21 +77,29 @@ def _new(obj, name):
     return feature
 
 
+def _blocks_of(shape):
+    """The blocks of an AutoBlock object's shape: its solids (prisms of a solid object), else its faces."""
+    return shape.Solids or shape.Faces
+
+
 def _replace(obj):
     import Part
+
+    from .solid_blocks import hex_mesh_objects_of, is_autoblock_solid
 
     doc = obj.Document
     if not obj.Source:
         raise ValueError("{}: no source to replace".format(obj.Label))
-    source, subs = obj.Source
+    solid = is_autoblock_solid(obj)
+    source = obj.Source if solid else obj.Source[0]
     if source.TypeId != "Part::Feature":
         raise ValueError(
             "{} is a {}: its shape is recomputed from its own inputs, so replacing it would not last; write the "
             "blocks to a new Part feature instead".format(source.Label, source.TypeId))
     blocks = obj.Shape.copy()
     old = source.Shape
-    if len(old.Faces) == 1 and not old.Solids and not old.Shells:
-        new = blocks
+    if solid or (len(old.Faces) == 1 and not old.Solids and not old.Shells):
+        new = blocks  # a solid object's prisms fill its whole source solid
     else:
         # Split the source's face into the blocks: the general fuse makes the blocks and the face share
         # their pieces, so the solid (or shell) comes out with the partitioned face in place.
@@ -109,14 +124,15 @@ def _replace(obj):
     local.Placement = placement
     from .fem_mesh import mesh_objects_of
 
-    blocks = text.counted(len(blocks.Faces), "block")
-    removed = [obj.Label] + [mesh.Label for mesh in mesh_objects_of(obj)]
-    for mesh in mesh_objects_of(obj):
+    meshes = hex_mesh_objects_of(obj) if solid else mesh_objects_of(obj)
+    blocks = text.counted(len(_blocks_of(blocks)), "block")
+    removed = [obj.Label] + [mesh.Label for mesh in meshes]
+    for mesh in meshes:
         doc.removeObject(mesh.Name)
     doc.removeObject(obj.Name)
     source.Shape = local
     source.Visibility = True
     doc.recompute()
-    report("{} now holds the {} in place of its face, and is shown; removed {}, no longer needed".format(
-        source.Label, blocks, " and ".join(removed)))
+    report("{} now holds the {} in place of its {}, and is shown; removed {}, no longer needed".format(
+        source.Label, blocks, "solid" if solid else "face", " and ".join(removed)))
     return source
