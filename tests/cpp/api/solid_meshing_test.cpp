@@ -93,7 +93,7 @@ TEST_CASE("swept solids of generated faces: conformal, exact volumes, SJ 1 for n
     GeneratorOptions options;
     options.holes = holes;
     options.max_rects = 8;
-    const auto shapes = test::generated_shapes(16, holes ? 71 : 70, options);
+    const auto shapes = test::generated_shapes(100, holes ? 71 : 70, options);
     for (size_t k = 0; k < shapes.size(); ++k) {
       const TopoDS_Face face = occt_face_from_polygon(shapes[k].polygon, 0.0, true);
       const bool oblique = k % 3 == 1, turn = k % 4 == 2;
@@ -126,8 +126,8 @@ TEST_CASE("swept solids of generated faces: conformal, exact volumes, SJ 1 for n
       ++checked;
     }
   }
-  CHECK(checked == 32);
-  CHECK(blocks_checked == 8);
+  CHECK(checked == 200);
+  CHECK(blocks_checked == 50);
 }
 
 TEST_CASE("swept solids of general faces (edges at any angle): conformal, exact volumes", "[solid][hex][api]") {
