@@ -131,6 +131,15 @@ bool exact_partial_end(const Region& region, Point2 origin, Point2 direction, KP
   const std::vector<KSegment> edges = boundary_segments(region);
   for (edge_index = 0; edge_index < edges.size(); ++edge_index) {
     const KSegment& edge = edges[edge_index];
+    // An edge through the origin meets the ray there (no use) and elsewhere only when the ray runs
+    // along it: decided on input points, so that no crossing equal to the origin is constructed (an
+    // equality the interval filter cannot settle, which would force exact arithmetic).
+    const bool at_source = edge.source() == o;
+    if (at_source || edge.target() == o) {
+      const KPoint& other = at_source ? edge.target() : edge.source();
+      if (ray.has_on(other)) consider(other);
+      continue;
+    }
     if (!CGAL::do_intersect(ray, edge)) continue;
     const auto crossing = CGAL::intersection(ray, edge);
     if (!crossing) continue;
