@@ -17,6 +17,8 @@ Console API (freecadcmd or FreeCAD's Python console):
     AutoBlock.export_mesh(obj, "face.msh")                      # or .vtu, .inp
     hexes = AutoBlock.mesh(solid_or_object, size=1.0)           # a swept solid: a HexMeshResult (hexahedra)
     obj = AutoBlock.make_autoblock_solid(pad)                   # prism blocks and a hexa8 FEM mesh object
+    AutoBlock.cap_solid(body, "Pad.Face6")                      # the Pad when Face6 is a cap of its swept solid
+    AutoBlock.stepper_of(obj)                                   # a solid object: its cap's cuts, on the cap
     AutoBlock.write_back(obj, mode="new")                       # or "replace"
     AutoBlock.stepper_of(obj).step(2)                           # the decomposition after 2 cuts, with scores
     AutoBlock.replay(face_or_object, obj.CutSequence)           # a general face's stored cuts, not searched again
@@ -42,6 +44,7 @@ _LAZY = {
     "mesh_solid": ("console", "mesh_solid"),
     "check_solid": ("console", "check_solid"),
     "is_solid": ("console", "is_solid"),
+    "cap_solid": ("console", "cap_solid"),
     "HexMeshResult": ("console", "HexMeshResult"),
     "make_autoblock_solid": ("objects.solid_blocks", "make_autoblock_solid"),
     "is_autoblock_solid": ("objects.solid_blocks", "is_autoblock_solid"),

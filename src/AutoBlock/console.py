@@ -102,7 +102,8 @@ class DecompositionResult:
     (sum of the cuts' rewards); n_blocks; min_blocks: the minimum number of rectangles of any partition (a
     lower bound); status: "complete" or "truncated"; complete, truncated, time_capped; policy; reward (the
     preset the cuts were scored with); seconds; face: the input face; frame: the placement of the face's own
-    frame; label: the input's name.
+    frame; label: the input's name. (A swept solid's cap, HexMeshResult.cap, has no blocks and no shape: its
+    blocks are the prism blocks' bottoms.)
 
     A face with edges at other angles (general True, the general engine): blocks are convex quadrilaterals
     and templates (n_templates: convex parts finished as quads around an interior point; blocks holds both,
@@ -131,7 +132,8 @@ class DecompositionResult:
         self._z = data["face"]["z"]
         self._fingerprint = face_fingerprint(data["face"])
         self.blocks = [faces.out_of_frame(_shape_from_brep(text), frame).Faces[0] for text in data["blocks"]]
-        self.shape = faces.out_of_frame(_shape_from_brep(data["shape"]), frame)
+        # A solid's cap (HexMeshResult.cap) comes without its blocks: they are the prism blocks' bottoms.
+        self.shape = faces.out_of_frame(_shape_from_brep(data["shape"]), frame) if data["shape"] else None
         self.report = {k: v for k, v in data.items() if k not in ("blocks", "shape")} if self.general else None
         if self.general:
             self.cuts = [GeneralCut(c, self._z, frame) for c in data["cuts"]]
@@ -428,6 +430,16 @@ def _mesh_data(stepper, size, out=""):
         raise _in_frame_note(stepper.frame, error) from None
 
 
+def global_shape(obj):
+    """The shape of document object `obj` where it stands in the model: its own placement and those of the
+    containers holding it (a Pad given directly is placed by its Body, and the Body by an App::Part)."""
+    shape = Part.getShape(obj)  # with obj's own placement
+    parent = obj.getParentGeoFeatureGroup() if hasattr(obj, "getParentGeoFeatureGroup") else None
+    if parent is not None and not shape.isNull():
+        shape.Placement = parent.getGlobalPlacement().multiply(shape.Placement)
+    return shape
+
+
 def solid_of(target, sub=None):
     """(shape, label) when `target` designates a solid to mesh with hexahedra, else None (a face).
 
@@ -444,7 +456,7 @@ def solid_of(target, sub=None):
     if isinstance(target, Part.Shape):
         shape, label = target, "the shape"
     elif hasattr(target, "TypeId") and hasattr(target, "Document") and hasattr(target, "Shape"):
-        shape, label = Part.getShape(target), target.Label
+        shape, label = global_shape(target), target.Label
     else:
         return None
     if shape is None or shape.isNull():
@@ -452,6 +464,35 @@ def solid_of(target, sub=None):
     if shape.Solids or (len(shape.Shells) == 1 and len(shape.Faces) > 1):
         return shape, label
     return None
+
+
+def cap_solid(target, sub=None):
+    """The document object holding the solid whose cap `target` designates, else None.
+
+    target: (object, "FaceN"), or an object and the path to a face inside a container (Body, "Pad.Face6"), as
+    the selection gives it. The object holding that face (the Pad) is returned when its shape is one solid that
+    is a straight sweep of a planar face (check_solid) and FaceN is one of its two caps; None for a side face, a
+    face of a solid that is not such a sweep, a face alone or anything else. This is what Auto-Block does with a
+    selected face: a cap stands for its solid, make_autoblock_solid(cap_solid(object, "FaceN")) (unless the
+    preferences say otherwise), any other face is cut on its own (make_autoblock(object, "FaceN")).
+    """
+    if isinstance(target, tuple) and len(target) == 2 and sub is None:
+        target, sub = target
+    if isinstance(sub, (list, tuple)):
+        sub = sub[0] if len(sub) == 1 else None
+    if not sub or not isinstance(sub, str) or not hasattr(target, "getSubObject"):
+        return None
+    prefix, _, element = sub.rpartition(".")
+    if not element.startswith("Face") or not element[4:].isdigit():
+        return None
+    holder = target.getSubObject(prefix + ".", retType=1) if prefix else target
+    if holder is None or not is_solid(holder):
+        return None
+    try:
+        caps = check_solid(holder)["caps"]
+    except ValueError:
+        return None
+    return holder if int(element[4:]) in caps else None
 
 
 def is_solid(target, sub=None):
@@ -487,7 +528,8 @@ class HexMeshResult:
     max_aspect_ratio, mean_aspect_ratio, max_skew, edges, irregular_edges, irregular_interior_edges);
     conformal (the core's independent check: faces shared by two hexahedra, volumes and areas add up);
     blocks: the prism blocks (list of Part.Solid); shape: their compound (neighbours share faces);
-    policy; label.
+    policy; label; cap: the bottom cap's decomposition (a DecompositionResult without blocks: its cuts, return,
+    cut_sequence(), stepper() to step through the cuts on the cap).
     """
 
     def __init__(self, data, label, request=None):
@@ -512,6 +554,22 @@ class HexMeshResult:
         self.seconds = data["seconds"]
         self.blocks = [_shape_from_brep(t).Solids[0] for t in data["blocks"]]
         self.shape = _shape_from_brep(data["shape"]) if data["shape"] else None
+        cap = data["cap"]
+        frame = faces.placement_of(cap["frame"])
+        local = _shape_from_brep(cap["brep"]).Faces[0]
+        self.cap = DecompositionResult(cap, faces.out_of_frame(local, frame), local, frame, cap["face"]["source"])
+
+    def cut_sequence(self):
+        """The cap's cut sequence as an AutoBlock solid object stores it (JSON text): the cap's
+        (DecompositionResult.cut_sequence), with the cap's face number ("cap") and frame ("frame", 12 numbers)."""
+        sequence = json.loads(self.cap.cut_sequence())
+        sequence["cap"] = self.caps[0]
+        sequence["frame"] = _placement_numbers(self.cap.frame)
+        return json.dumps(sequence)
+
+    def stepper(self):
+        """A Stepper over the cap's cuts (drawn on the cap, see stepping.py)."""
+        return self.cap.stepper()
 
     def summary(self):
         """'caps Face5 and Face6: 3 blocks, 220 nodes, 120 hexahedra, 3 layers, size 1, min scaled Jacobian 1,

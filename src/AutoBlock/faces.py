@@ -115,7 +115,11 @@ def face_frame(face):
     cannot read keep the identity (the core then says what is wrong)."""
     from . import native
 
-    m = native.load().face_frame(face.exportBrepToString())
+    return placement_of(native.load().face_frame(face.exportBrepToString()))
+
+
+def placement_of(m):
+    """The placement of 12 numbers as the core gives a frame: the row-major rotation, then the translation."""
     return FreeCAD.Placement(FreeCAD.Matrix(m[0], m[1], m[2], m[9], m[3], m[4], m[5], m[10], m[6], m[7], m[8], m[11],
                                             0, 0, 0, 1))
 

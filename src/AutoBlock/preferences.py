@@ -10,6 +10,10 @@ DEFAULT_POLICY_FILE = "DefaultPolicyFile"
 REWARD_PRESET = "RewardPreset"
 MESH_SIZE = "MeshSize"
 THREADS = "Threads"
+CAP_FACE = "CapFace"
+
+# What Auto-Block does with a selected cap face of a sweepable solid (CAP_FACE), in the page's order.
+CAP_FACE_CHOICES = ("solid", "face")
 
 
 def params():
@@ -45,6 +49,13 @@ def reward_preset():
 def mesh_size():
     """Target element size of the quad mesh (model units); 0 means automatic."""
     return params().GetFloat(MESH_SIZE, 0.0)
+
+
+def cap_face():
+    """What Auto-Block makes of a selected cap face of a sweepable solid: "solid" (the default: the solid split into
+    prism blocks and meshed with hexahedra, make_autoblock_solid) or "face" (the face alone, with quads)."""
+    choice = params().GetString(CAP_FACE, "")
+    return choice if choice in CAP_FACE_CHOICES else CAP_FACE_CHOICES[0]
 
 
 def threads():

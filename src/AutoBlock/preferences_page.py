@@ -56,6 +56,7 @@ class AutoBlockPreferencesPage:
             f.rewardPreset.setCurrentIndex(self.presets.index(preset))
         f.meshSize.setValue(p.GetFloat(preferences.MESH_SIZE, 0.0))
         f.threads.setValue(p.GetInt(preferences.THREADS, 0))
+        f.capFace.setCurrentIndex(preferences.CAP_FACE_CHOICES.index(preferences.cap_face()))
 
     def saveSettings(self):
         p = preferences.params()
@@ -67,6 +68,8 @@ class AutoBlockPreferencesPage:
             p.SetString(preferences.REWARD_PRESET, self.presets[f.rewardPreset.currentIndex()])
         p.SetFloat(preferences.MESH_SIZE, float(f.meshSize.value()))
         p.SetInt(preferences.THREADS, int(f.threads.value()))
+        if f.capFace.currentIndex() >= 0:
+            p.SetString(preferences.CAP_FACE, preferences.CAP_FACE_CHOICES[f.capFace.currentIndex()])
 
 
 _registered = False

@@ -149,6 +149,13 @@ py::dict face_dict(const InputFace& face) {
 // rotation, then the translation (a point p of the frame is the model's rotation p + translation). The
 // identity when the text holds no single face or OpenCASCADE cannot evaluate it: the checks that follow
 // (check_face, decompose) then say what is wrong, with the face in the model's coordinates.
+// A placement as 12 numbers: the row-major rotation, then the translation.
+std::vector<double> placement_numbers(const Placement& frame) {
+  std::vector<double> numbers(frame.rotation.begin(), frame.rotation.end());
+  numbers.insert(numbers.end(), frame.translation.begin(), frame.translation.end());
+  return numbers;
+}
+
 std::vector<double> face_frame_py(const std::string& brep) {
   Placement frame;
   {
@@ -161,9 +168,7 @@ std::vector<double> face_frame_py(const std::string& brep) {
       frame = Placement{};
     }
   }
-  std::vector<double> numbers(frame.rotation.begin(), frame.rotation.end());
-  numbers.insert(numbers.end(), frame.translation.begin(), frame.translation.end());
-  return numbers;
+  return placement_numbers(frame);
 }
 
 py::dict check_face_py(const std::string& brep, const std::string& source) {
@@ -181,7 +186,8 @@ py::dict check_face_py(const std::string& brep, const std::string& source) {
 }
 
 // A decomposition's results as text (made without the GIL): its blocks and their merged shape as
-// BREP text, and a general face's JSON report (region_decomposition_json, the CLI's).
+// BREP text (none when it was made without them: a solid's cap), and a general face's JSON report
+// (region_decomposition_json, the CLI's).
 struct Written {
   std::vector<std::string> blocks;
   std::string shape;
@@ -189,7 +195,7 @@ struct Written {
   Written() = default;
   Written(const FaceDecomposition& result, const std::string& source) {
     for (const TopoDS_Face& block : result.block_faces) blocks.push_back(write_brep_text(block));
-    shape = write_brep_text(result.shape);
+    if (!result.shape.IsNull()) shape = write_brep_text(result.shape);  // none from the mesh pipeline
     if (result.general()) report = region_decomposition_json(source, result.face, result.region);
   }
 };
@@ -223,6 +229,8 @@ DecomposeSettings settings_of(const std::string& policy, const std::string& rewa
   return settings;
 }
 
+py::dict decomposition_dict(const FaceDecomposition& result, const Written& written, int max_steps);
+
 py::dict decompose_py(const std::string& brep, const std::string& policy, const std::string& reward, std::uint64_t seed,
                       double time_limit, int max_steps, const std::string& source, double general_time_limit) {
   const DecomposeSettings settings = settings_of(policy, reward, seed, time_limit, max_steps, general_time_limit);
@@ -233,6 +241,11 @@ py::dict decompose_py(const std::string& brep, const std::string& policy, const 
     result = decompose_input_face(face_of(brep, source), settings);
     written = Written(result, source);
   }
+  return decomposition_dict(result, written, max_steps);
+}
+
+// A decomposition for Python, either engine (decompose's dict; a solid's cap in mesh_solid's).
+py::dict decomposition_dict(const FaceDecomposition& result, const Written& written, int max_steps) {
   if (result.general()) return general_decomposition_dict(written, max_steps, result.face);
   const std::vector<std::string>& blocks = written.blocks;
   const std::string& shape = written.shape;
@@ -442,6 +455,17 @@ MeshPlacement placement_of(const std::vector<double>& values) {
   return placement;
 }
 
+// The quality figures a quad mesh (MeshQuality) and a hexahedral one (HexMeshQuality) share.
+template <class Quality>
+py::dict quality_dict(const Quality& q) {
+  py::dict quality;
+  quality["min_scaled_jacobian"] = q.min_scaled_jacobian;
+  quality["mean_scaled_jacobian"] = q.mean_scaled_jacobian;
+  quality["max_aspect_ratio"] = q.max_aspect_ratio;
+  quality["max_skew"] = q.max_skew;
+  return quality;
+}
+
 py::dict mesh_py(const std::string& brep, const py::object& cuts, double size, int max_steps, const std::string& reward,
                  const std::string& out, const std::vector<double>& placement, const std::string& source) {
   const RewardPreset preset = reward_preset_by_name(reward);
@@ -473,11 +497,7 @@ py::dict mesh_py(const std::string& brep, const py::object& cuts, double size, i
   d["target_size"] = result.intervals.target_size;
   d["default_size"] = result.default_size;
   d["max_relative_deviation"] = result.intervals.max_relative_deviation;
-  py::dict quality;
-  quality["min_scaled_jacobian"] = q.min_scaled_jacobian;
-  quality["mean_scaled_jacobian"] = q.mean_scaled_jacobian;
-  quality["max_aspect_ratio"] = q.max_aspect_ratio;
-  quality["max_skew"] = q.max_skew;
+  py::dict quality = quality_dict(q);
   quality["min_angle"] = q.min_angle;
   quality["max_angle"] = q.max_angle;
   quality["irregular_interior_vertices"] = q.irregular_interior_nodes;
@@ -529,6 +549,8 @@ struct SolidWritten {
   SolidMeshing meshing;
   std::vector<std::string> blocks;
   std::string shape;
+  Written cap;            // the cap's decomposition (its general report)
+  std::string cap_brep;   // the cap in its own frame
 };
 
 py::dict mesh_solid_py(const std::string& brep, const std::string& policy, const std::string& reward, std::uint64_t seed,
@@ -548,6 +570,8 @@ py::dict mesh_solid_py(const std::string& brep, const std::string& policy, const
   {
     py::gil_scoped_release release;
     out.meshing = mesh_swept_solid(solid_of(brep, source), settings, options);
+    out.cap = Written(out.meshing.cap.decomposition, out.meshing.cap.decomposition.face.source);
+    out.cap_brep = write_brep_text(out.meshing.cap.decomposition.face.occt);
     if (!out_file.empty()) {
       require_conformal(out.meshing);  // as the CLI: a mesh that failed the check is not written
       write_text_file(out_file, mesh_file_text(out_file, out.meshing.mesh, element));
@@ -577,12 +601,8 @@ py::dict mesh_solid_py(const std::string& brep, const std::string& policy, const
   d["grading"] = m.grading;
   d["seconds"] = m.seconds;
   const HexMeshQuality& q = m.quality;
-  py::dict quality;
-  quality["min_scaled_jacobian"] = q.min_scaled_jacobian;
-  quality["mean_scaled_jacobian"] = q.mean_scaled_jacobian;
-  quality["max_aspect_ratio"] = q.max_aspect_ratio;
+  py::dict quality = quality_dict(q);
   quality["mean_aspect_ratio"] = q.mean_aspect_ratio;
-  quality["max_skew"] = q.max_skew;
   quality["edges"] = q.edges;
   quality["irregular_edges"] = q.irregular_edges;
   quality["irregular_interior_edges"] = q.irregular_interior_edges;
@@ -594,6 +614,14 @@ py::dict mesh_solid_py(const std::string& brep, const std::string& policy, const
   d["blocks"] = out.blocks;
   d["shape"] = out.shape;
   d["file"] = out_file;
+  // The cap's decomposition as decompose gives a face's (without blocks), with the cap in its frame (BREP
+  // text) and that frame (12 numbers, as face_frame): what stepping through its cuts needs.
+  const FaceDecomposition& cap = m.cap.decomposition;
+  py::dict cap_dict = decomposition_dict(cap, out.cap, settings.max_steps);
+  cap_dict["brep"] = out.cap_brep;
+  cap_dict["frame"] = placement_numbers(cap.face.frame);
+  cap_dict["face_number"] = m.solid.bottom;
+  d["cap"] = cap_dict;
   return d;
 }
 
@@ -785,7 +813,9 @@ PYBIND11_MODULE(autoblock_native, m) {
         "longest side / 20), swept in layers (0: from the size) graded by grading. Returns check_solid's dict and "
         "nodes [(x, y, z)] (model coordinates), hexes [(8 node indices, 0-based, C3D8 order)], hex_block, "
         "n_blocks, layers, policy, target_size, quality, conformal, problem, hex_volume, and (blocks True) the "
-        "prism blocks as BREP text (blocks, one solid each; shape, their compound sharing faces). out: also write the "
+        "prism blocks as BREP text (blocks, one solid each; shape, their compound sharing faces); cap: the cap's "
+        "decomposition as decompose returns a face's (engine, policy, reward, cuts, return, n_blocks, status, ...; "
+        "no blocks), with brep (the cap in its frame), frame (12 numbers, as face_frame) and face_number. out: also write the "
         "hexahedra to a .msh, .vtu or .inp file (element: C3D8 or C3D8I for .inp), as `autoblock mesh SOLID --out`.");
   m.def("train", &train_py, py::arg("options"), py::arg("progress") = py::none(),
         "Train a policy (blocking, the GIL released). options: {output, checkpoint, resume, train_folder | "

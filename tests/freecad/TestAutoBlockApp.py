@@ -1482,6 +1482,98 @@ class TestSolids(unittest.TestCase):
             self.assertEqual(obj.NumberOfBlocks, 2)
             self.check_hexa8(hexa.FemMesh, pad.Shape.Volume, hexa.NumberOfHexahedra)
 
+    def test_a_pad_given_directly_is_placed_by_its_body(self):
+        body, pad = support.add_l_pad(self.doc)
+        body.Placement = FreeCAD.Placement(FreeCAD.Vector(50, 0, 0), FreeCAD.Rotation(FreeCAD.Vector(0, 0, 1), 90))
+        self.doc.recompute()
+        placed = Part.getShape(body).BoundBox  # the Body's shape: its tip, the Pad, where the Body puts it
+        self.assertAlmostEqual(placed.XMin, 46.0)
+        self.assertAlmostEqual(pad.Shape.BoundBox.XMin, 0.0)  # the Pad's own shape is not moved
+        obj = AutoBlock.make_autoblock_solid(pad, mesh_size=0.5)
+        self.assertTrue(obj.Shape.BoundBox.isInside(placed) and placed.isInside(obj.Shape.BoundBox),
+                        (obj.Shape.BoundBox, placed))
+        self.assertAlmostEqual(obj.Shape.Volume, pad.Shape.Volume, places=9)
+        hexa = AutoBlock.hex_mesh_objects_of(obj)[0]
+        self.assertAlmostEqual(hexa.FemMesh.BoundBox.XMin, 46.0, places=9)
+        # A Body in an App::Part, moved again: both placements apply (moving a container does not touch the Pad,
+        # so the AutoBlock object is recomputed here).
+        part = self.doc.addObject("App::Part", "Part")
+        part.addObject(body)
+        part.Placement.Base = FreeCAD.Vector(0, 0, 10)
+        body.Placement.Base = FreeCAD.Vector(-20, 0, 0)
+        self.doc.recompute()
+        obj.touch()
+        self.doc.recompute()
+        box = obj.Shape.BoundBox
+        self.assertEqual([round(v, 9) for v in (box.XMin, box.XMax, box.YMin, box.YMax, box.ZMin, box.ZMax)],
+                         [-24.0, -20.0, 0.0, 4.0, 10.0, 13.0])
+        self.assertAlmostEqual(hexa.FemMesh.BoundBox.ZMin, 10.0, places=9)
+
+    def test_a_cap_face_designates_its_solid(self):
+        extrusion = self.holed_extrusion()
+        caps = AutoBlock.check_solid(extrusion)["caps"]
+        for number in range(1, len(extrusion.Shape.Faces) + 1):
+            expected = extrusion if number in caps else None
+            self.assertIs(AutoBlock.cap_solid(extrusion, "Face{}".format(number)), expected, number)
+        self.assertIs(AutoBlock.cap_solid((extrusion, "Face{}".format(caps[1]))), extrusion)
+        self.assertIsNone(AutoBlock.cap_solid(extrusion))  # no face named
+        self.assertIsNone(AutoBlock.cap_solid(extrusion, "Edge1"))
+        body, pad = support.add_l_pad(self.doc)
+        pad_caps = AutoBlock.check_solid(pad)["caps"]
+        self.assertIs(AutoBlock.cap_solid(body, "Pad.Face{}".format(pad_caps[0])), pad)
+        side = next(n for n in range(1, 9) if n not in pad_caps)
+        self.assertIsNone(AutoBlock.cap_solid(body, "Pad.Face{}".format(side)))
+        cylinder = self.doc.addObject("Part::Cylinder", "Cylinder")  # planar ends, but not a sweep AutoBlock takes
+        self.doc.recompute()
+        self.assertIsNone(AutoBlock.cap_solid(cylinder, "Face2"))
+        face = support.add_face(self.doc, support.read_face())
+        self.assertIsNone(AutoBlock.cap_solid(face, "Face1"))  # a face alone
+        # The console keeps making a face object when asked for a cap face.
+        obj = AutoBlock.make_autoblock(extrusion, "Face{}".format(caps[0]))
+        self.assertTrue(AutoBlock.is_autoblock(obj))
+        self.assertFalse(AutoBlock.is_autoblock_solid(obj))
+
+    def test_the_caps_cuts_step_on_the_cap(self):
+        # A holed L in a tilted plane, swept along its normal: the cap's frame is not the model's.
+        V = FreeCAD.Vector
+        outer = Part.makePolygon(support.l_points(width=8, height=6, notch=4) + [V(0, 0, 0)])
+        hole = Part.makePolygon([V(1, 1, 0), V(2, 1, 0), V(2, 2, 0), V(1, 2, 0), V(1, 1, 0)])
+        face = Part.makeFace([outer, hole], "Part::FaceMakerBullseye")
+        face.Placement = FreeCAD.Placement(V(3, -2, 7), FreeCAD.Rotation(V(1, 1, 0), 35))
+        normal = face.normalAt(0, 0)
+        source = support.add_face(self.doc, face.extrude(normal * 4), "Tilted")
+        mesh = AutoBlock.mesh(source, size=1.0)
+        cap = mesh.cap
+        self.assertIsInstance(cap, AutoBlock.DecompositionResult)
+        self.assertFalse(cap.frame.isIdentity())
+        self.assertEqual(cap.n_blocks, mesh.n_blocks)
+        self.assertGreaterEqual(len(cap.cuts), 2)
+        self.assertEqual(cap.blocks, [])
+        bottom = source.Shape.Faces[mesh.caps[0] - 1]
+        stepper = mesh.stepper()
+        self.assertEqual(stepper.steps, len(cap.cuts))
+        last = stepper.step(stepper.steps)
+        self.assertEqual(last.blocks, mesh.n_blocks)
+        # The pieces lie on the bottom cap and cover it; the first cut's vertex is a corner of the cap.
+        self.assertAlmostEqual(sum(p.face.Area for p in last.pieces), bottom.Area, places=9)
+        for piece in last.pieces:
+            for vertex in piece.face.Vertexes:
+                self.assertLess(bottom.distToShape(vertex)[0], 1e-9)
+        corner = stepper.step(0).next.vertex
+        self.assertLess(min((corner - v.Point).Length for v in bottom.Vertexes), 1e-9)
+        # The solid object keeps the cap's cuts; stepping through them needs it up to date.
+        obj = AutoBlock.make_autoblock_solid(source, mesh_size=1.0)
+        self.assertEqual(obj.NumberOfCuts, len(cap.cuts))
+        self.assertAlmostEqual(obj.Return, cap.ret)
+        self.assertEqual(obj.RewardUsed, cap.reward)
+        stored = AutoBlock.stepper_of(obj)
+        self.assertEqual(stored.cuts, stepper.cuts)
+        self.assertEqual(stored.step(stored.steps).blocks, obj.NumberOfBlocks)
+        self.assertAlmostEqual(sum(p.face.Area for p in stored.step(stored.steps).pieces), bottom.Area, places=9)
+        source.Shape = source.Shape.copy().scale(2.0)  # another solid, not recomputed yet
+        with self.assertRaisesRegex(ValueError, "out of date"):
+            AutoBlock.stepper_of(obj)
+
     def test_save_and_reopen_keeps_the_hexahedral_mesh(self):
         extrusion = self.holed_extrusion()
         obj = AutoBlock.make_autoblock_solid(extrusion, mesh_size=1.0)

@@ -279,21 +279,76 @@ class TestAutoBlockCommand(GuiTestCase):
         pump()
         self.assertEqual([o for o in self.doc.Objects if AutoBlock.is_autoblock(o) or is_autoblock_mesh(o)], [])
 
-    def test_auto_block_on_two_faces_of_a_solid_is_one_transaction(self):
+    def solid_objects(self):
+        return [o for o in self.doc.Objects if AutoBlock.is_autoblock_solid(o)]
+
+    def l_solid(self):
+        """An extruded L held by a plain Part feature, and its two caps' face numbers."""
         solid = support.l_face(width=6, height=5, notch=3).extrude(FreeCAD.Vector(0, 0, 2))
         holder = support.add_face(self.doc, solid, "Solid")
         flat = [i for i, f in enumerate(solid.Faces, 1) if f.BoundBox.ZLength < 1e-9]
         self.assertEqual(len(flat), 2)
+        return holder, flat
+
+    def test_auto_block_on_two_faces_of_a_solid_is_one_transaction(self):
+        # Both caps of a swept solid selected: the solid, once (prism blocks and hexahedra), in one undo step.
+        holder, caps = self.l_solid()
         undo_count = self.doc.UndoCount
-        objects = self.auto_block(*[(holder, "Face{}".format(i)) for i in flat])
-        self.assertEqual(len(objects), 2)
+        self.assertEqual(self.auto_block(*[(holder, "Face{}".format(i)) for i in caps]), [])  # no face object
+        solids = self.solid_objects()
+        self.assertEqual(len(solids), 1)
+        self.assertIs(solids[0].Source, holder)
+        self.assertEqual(sorted(solids[0].Caps), caps)
+        self.assertEqual(len(AutoBlock.hex_mesh_objects_of(solids[0])), 1)
+        self.assertAlmostEqual(solids[0].Shape.Volume, holder.Shape.Volume, places=9)
+        self.assertFalse(holder.ViewObject.Visibility)
         self.assertEqual(self.doc.UndoCount, undo_count + 1)
-        self.assertEqual(sorted(round(o.Shape.BoundBox.ZMin, 6) for o in objects), [0.0, 2.0])
+        self.assertEqual(self.doc.UndoNames[0], "Auto-Block")
         self.doc.undo()
         pump()
-        self.assertEqual([o for o in self.doc.Objects if AutoBlock.is_autoblock(o)], [])
+        self.assertEqual([o for o in self.doc.Objects if AutoBlock.is_autoblock_solid(o)
+                          or o.TypeId.startswith("Fem::")], [])
+        self.assertTrue(holder.ViewObject.Visibility)
+
+    def test_with_the_preference_set_to_faces_caps_are_cut_as_faces(self):
+        from AutoBlock import preferences
+        from AutoBlock.preferences_page import AutoBlockPreferencesPage
+
+        params = preferences.params()
+        saved = params.GetString(preferences.CAP_FACE, "")
+        try:
+            page = AutoBlockPreferencesPage()
+            page.loadSettings()
+            self.assertEqual(page.form.capFace.count(), 2)
+            self.assertEqual(page.form.capFace.currentIndex(), 0)  # the default: the solid
+            self.assertIn("solid", page.form.capFace.currentText())
+            page.form.capFace.setCurrentIndex(1)
+            page.saveSettings()
+            self.assertEqual(preferences.cap_face(), "face")
+            holder, caps = self.l_solid()
+            undo_count = self.doc.UndoCount
+            objects = self.auto_block(*[(holder, "Face{}".format(i)) for i in caps])
+            self.assertEqual(len(objects), 2)
+            self.assertEqual(self.solid_objects(), [])
+            self.assertEqual(self.doc.UndoCount, undo_count + 1)
+            self.assertEqual(sorted(round(o.Shape.BoundBox.ZMin, 6) for o in objects), [0.0, 2.0])
+            self.doc.undo()
+            pump()
+            self.assertEqual([o for o in self.doc.Objects if AutoBlock.is_autoblock(o)], [])
+        finally:
+            params.SetString(preferences.CAP_FACE, saved)
+
+    def test_a_side_face_of_a_solid_is_cut_as_a_face(self):
+        holder, caps = self.l_solid()
+        side = next(i for i in range(1, len(holder.Shape.Faces) + 1) if i not in caps)
+        objects = self.auto_block((holder, "Face{}".format(side)))
+        self.assertEqual(len(objects), 1)
+        self.assertEqual(list(objects[0].Source[1]), ["Face{}".format(side)])
+        self.assertEqual(self.solid_objects(), [])
+        self.assertAlmostEqual(objects[0].Shape.Area, holder.Shape.Faces[side - 1].Area, places=9)
 
     def test_a_face_inside_a_body(self):
+        # A cap of a Pad, selected through its Body (moved): the Pad's solid, placed by the Body.
         body, pad = support.add_l_pad(self.doc)
         body.Placement.Base = FreeCAD.Vector(50, 0, 0)
         self.doc.recompute()
@@ -303,11 +358,16 @@ class TestAutoBlockCommand(GuiTestCase):
         FreeCADGui.Selection.addSelection(self.doc.Name, body.Name, "Pad.Face{}".format(top))
         FreeCADGui.runCommand("AutoBlock_AutoBlock")
         pump()
-        objects = [o for o in self.doc.Objects if AutoBlock.is_autoblock(o)]
+        self.assertEqual([o for o in self.doc.Objects if AutoBlock.is_autoblock(o)], [])
+        objects = self.solid_objects()
         self.assertEqual(len(objects), 1)
-        self.assertEqual(objects[0].Source[0], body)
-        self.assertEqual(list(objects[0].Source[1]), ["Pad.Face{}".format(top)])
+        self.assertIs(objects[0].Source, pad)
+        self.assertIn(top, list(objects[0].Caps))
         self.assertAlmostEqual(objects[0].Shape.BoundBox.XMin, 50.0)
+        self.assertAlmostEqual(objects[0].Shape.Volume, pad.Shape.Volume, places=9)
+        meshes = AutoBlock.hex_mesh_objects_of(objects[0])
+        self.assertEqual(len(meshes), 1)
+        self.assertAlmostEqual(meshes[0].FemMesh.BoundBox.XMin, 50.0)
         self.assertFalse(pad.ViewObject.Visibility)
 
     def test_auto_block_on_a_solid_makes_prism_blocks_and_hexahedra(self):
@@ -670,6 +730,76 @@ class TestStepThroughPanel(GuiTestCase):
         self.assertEqual(self.scene_nodes(), [])
         self.assertEqual(([o.Name for o in self.doc.Objects], self.doc.UndoCount, obj.Shape.exportBrepToString()),
                          before)
+
+    def test_stepping_through_a_solids_cap_draws_its_cuts_on_the_cap(self):
+        from AutoBlock.taskpanels import step_through
+
+        # A holed L standing in the YZ plane, swept along X: the cap's frame is not the model's.
+        V = FreeCAD.Vector
+        outer = Part.makePolygon(support.l_points(width=8, height=6, notch=4) + [V(0, 0, 0)])
+        hole = Part.makePolygon([V(1, 1, 0), V(2, 1, 0), V(2, 2, 0), V(1, 2, 0), V(1, 1, 0)])
+        face = Part.makeFace([outer, hole], "Part::FaceMakerBullseye")
+        face.rotate(V(0, 0, 0), V(0, 1, 0), -90)
+        source = support.add_face(self.doc, face.extrude(V(10, 0, 0)), "Bar")
+        pump()
+        self.auto_block(source)
+        obj = [o for o in self.doc.Objects if AutoBlock.is_autoblock_solid(o)][0]
+        mesh = AutoBlock.hex_mesh_objects_of(obj)[0]
+        cap = source.Shape.Faces[obj.Caps[0] - 1]
+        n = obj.NumberOfCuts
+        self.assertGreaterEqual(n, 2)
+        FreeCADGui.ActiveDocument.ActiveView.viewIsometric()
+        FreeCADGui.SendMsgToActiveView("ViewFit")
+        pump()
+        before = ([o.Name for o in self.doc.Objects], self.doc.UndoCount, obj.Shape.exportBrepToString(),
+                  list(obj.State), list(mesh.State), mesh.NumberOfHexahedra)
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(obj)
+        self.assertTrue(FreeCADGui.isCommandActive("AutoBlock_StepThrough"))
+        FreeCADGui.runCommand("AutoBlock_StepThrough")
+        pump()
+        panel = step_through.current_panel()
+        self.assertIsNotNone(panel)
+        self.assertEqual(len(self.scene_nodes()), 1)
+        self.assertEqual(obj.ViewObject.SwitchNode.whichChild.getValue(), -1)
+        self.assertEqual(mesh.ViewObject.SwitchNode.whichChild.getValue(), -1)
+        form = panel.form
+        self.assertEqual(form.slider.maximum(), n)
+        self.assertEqual(form.positionLabel.text(), "Step 0 of {}: no cut made yet; in red: cut 1".format(n))
+        # Every step's pieces and its cut line lie on the cap, in the model's coordinates.
+        for k in range(n + 1):
+            form.slider.setValue(k)
+            pump(0.05)
+            view = panel.current
+            self.assertEqual(view.step, k)
+            self.assertAlmostEqual(sum(p.face.Area for p in view.pieces), cap.Area, places=9)
+            points = [v.Point for p in view.pieces for v in p.face.Vertexes]
+            if view.next is not None:
+                points += [end for segment in view.next.line for end in segment] + [view.next.vertex]
+            for point in points:
+                self.assertLess(cap.distToShape(Part.Vertex(point))[0], 1e-9, (k, point))
+        self.assertEqual(form.positionLabel.text(), "Step {0} of {0}: all {0} cuts made, complete".format(n))
+        self.assertEqual(form.blocksLabel.text(), "{} blocks".format(obj.NumberOfBlocks))
+        self.assertEqual(form.returnLabel.text(), "{:.3f} (total)".format(obj.Return))
+        form.slider.setValue(1)
+        FreeCADGui.Selection.clearSelection()
+        pump()
+        screenshot("step-through-solid")
+        panel.reject()
+        pump()
+        self.assertIsNone(step_through.current_panel())
+        self.assertEqual(self.scene_nodes(), [])
+        self.assertEqual(obj.ViewObject.SwitchNode.whichChild.getValue(), 0)
+        self.assertNotEqual(mesh.ViewObject.SwitchNode.whichChild.getValue(), -1)
+        # A double click opens it too.
+        self.assertTrue(obj.ViewObject.Proxy.doubleClicked(obj.ViewObject))
+        pump()
+        self.assertIsNotNone(step_through.current_panel())
+        step_through.current_panel().reject()
+        pump()
+        after = ([o.Name for o in self.doc.Objects], self.doc.UndoCount, obj.Shape.exportBrepToString(),
+                 list(obj.State), list(mesh.State), mesh.NumberOfHexahedra)
+        self.assertEqual(after, before)
 
     def test_a_baseline_has_no_scores_and_the_panel_says_so(self):
         from AutoBlock.taskpanels import step_through

@@ -1,5 +1,6 @@
 """Auto-Block: the selected planar faces -> one parametric AutoBlock object each; a selected solid (an object
-holding one swept solid, selected whole) -> an AutoBlock solid object (prism blocks) and its hexa8 FEM mesh."""
+holding one swept solid, selected whole), or a selected cap face of one (unless the preferences say "mesh the
+face") -> an AutoBlock solid object (prism blocks) and its hexa8 FEM mesh, one per solid."""
 
 import FreeCAD
 import FreeCADGui
@@ -32,13 +33,14 @@ class AutoBlockCommand(BaseCommand):
     MENU_TEXT = "Auto-Block"
     TOOL_TIP = ("Cut the selected planar faces into blocks: one parametric AutoBlock object per face, with a FEM "
                 "mesh of quads on rectilinear faces (select faces, a sketch, or objects holding one face); a selected swept "
-                "solid (a box, an extrusion, a Pad) is split into prism blocks with a FEM mesh of hexahedra")
+                "solid (a box, an extrusion, a Pad), or a cap face of one, is split into prism blocks with a FEM mesh of "
+                "hexahedra (Preferences: a cap face may mesh the face alone instead)")
 
     def IsActive(self):
         return FreeCADGui.ActiveDocument is not None and bool(FreeCADGui.Selection.getSelection())
 
     def run(self):
-        from .. import console
+        from .. import console, preferences
         from ..gui_utils import echo, object_ref, report_error
         from ..objects.autoblock_feature import is_autoblock
         from ..objects.fem_mesh import is_autoblock_hex_mesh, is_autoblock_mesh
@@ -50,15 +52,21 @@ class AutoBlockCommand(BaseCommand):
             report_error("Auto-Block", "Select one or more planar faces (or a sketch, or an object holding one face).")
             return
         # Check every face and solid first: with one bad one, nothing changes. An object selected whole whose
-        # shape holds a solid is a solid (split into prisms and meshed with hexahedra); a selected face, a cap
-        # of a solid included, stays a face.
+        # shape holds a solid is a solid (split into prisms and meshed with hexahedra); so is a selected cap face
+        # of a sweepable solid (console.cap_solid: the object holding it, e.g. the Pad of "Pad.Face6"), unless the
+        # preferences say to mesh the face alone; any other face is a face. Several caps of one solid: one solid.
         problems = []
-        solids = set()
+        solids = {}  # (object name, sub) -> the object holding the solid
+        caps_mean_solids = preferences.cap_face() == "solid"
         for obj, sub, _ in targets:
             try:
                 if console.is_solid(obj, sub):
                     console.check_solid(obj)
-                    solids.add((obj.Name, sub))
+                    solids[(obj.Name, sub)] = obj
+                    continue
+                holder = console.cap_solid(obj, sub) if sub and caps_mean_solids else None
+                if holder is not None:
+                    solids[(obj.Name, sub)] = holder
                 else:
                     console.check_face(obj, sub)
             except (ValueError, TypeError) as error:
@@ -71,9 +79,13 @@ class AutoBlockCommand(BaseCommand):
         before = set(o.Name for o in doc.Objects)
         with transaction("Auto-Block"):
             echo("import AutoBlock")
+            made = set()
             for obj, sub, _ in targets:
-                if (obj.Name, sub) in solids:
-                    echo("AutoBlock.make_autoblock_solid({})".format(object_ref(obj)))
+                solid = solids.get((obj.Name, sub))
+                if solid is not None:
+                    if (solid.Document.Name, solid.Name) not in made:
+                        made.add((solid.Document.Name, solid.Name))
+                        echo("AutoBlock.make_autoblock_solid({})".format(object_ref(solid)))
                 elif sub:
                     echo("AutoBlock.make_autoblock({}, {!r})".format(object_ref(obj), sub))
                 else:

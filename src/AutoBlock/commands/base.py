@@ -31,7 +31,9 @@ class BaseCommand:
         raise NotImplementedError
 
 
-def selected_autoblocks():
+def selected_autoblocks(solids=False):
+    """The selected AutoBlock objects (solids: and AutoBlock solid objects)."""
     from ..objects.autoblock_feature import is_autoblock
+    from ..objects.solid_blocks import is_autoblock_solid
 
-    return [o for o in FreeCADGui.Selection.getSelection() if is_autoblock(o)]
+    return [o for o in FreeCADGui.Selection.getSelection() if is_autoblock(o) or (solids and is_autoblock_solid(o))]

@@ -8,9 +8,7 @@ from .base import BaseCommand, selected_autoblocks
 
 def selected_targets():
     """The selected AutoBlock objects and AutoBlock solid objects."""
-    from ..objects.solid_blocks import is_autoblock_solid
-
-    return selected_autoblocks() + [o for o in FreeCADGui.Selection.getSelection() if is_autoblock_solid(o)]
+    return selected_autoblocks(solids=True)
 
 
 def ask_mode(obj):

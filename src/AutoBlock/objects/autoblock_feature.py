@@ -23,6 +23,38 @@ def is_autoblock(obj):
     return getattr(getattr(obj, "Proxy", None), "Type", None) == TYPE
 
 
+# Properties: (type, name, group, tooltip, attributes). Attributes: 8 = Output (changing it does not touch the
+# object); read-only and hidden are editor modes. A face's AutoBlock object and a solid's (solid_blocks.py) share
+# the decomposition's settings and results (a solid's are its cap's).
+DECOMPOSITION_PROPERTIES = [
+    ("App::PropertyEnumeration", "Policy", "Decomposition", "How cuts are chosen (on a solid: its cap's): auto (the "
+     "default: the exact search where it finishes in time, the trained sac-mesh where it does not), a shipped "
+     "trained policy (sac-mesh: few, fat blocks; sac-paper: Eq. (1)) or a baseline (optimal: maximum return by "
+     "exact search; greedy; random).", 0),
+    ("App::PropertyFile", "PolicyFile", "Decomposition", "A policy file made by training (Train a policy); "
+     "used instead of Policy when set.", 0),
+    ("App::PropertyEnumeration", "RewardPreset", "Decomposition", "The reward the cuts are scored with: empty "
+     "for the policy's own (sac-mesh: mesh; sac-paper, the baselines: paper), paper (Eq. (1) of DiPrete et al. "
+     "2022) or mesh (few, fat blocks). The baselines maximise it.", 0),
+    ("App::PropertyInteger", "Seed", "Decomposition", "Seed of the random policies.", 0),
+    ("App::PropertyFloat", "TimeLimit", "Decomposition", "Seconds per face (on a solid: for its cap) before greedy "
+     "finishes the remaining parts (optimal, auto and learned policies).", 0),
+]
+RESULT_PROPERTIES = [
+    ("App::PropertyInteger", "NumberOfBlocks", "Result", "Blocks in the partition (on a face with edges at "
+     "other angles: convex quadrilaterals and templates, see Status; on a solid: prism blocks).", 8),
+    ("App::PropertyInteger", "MinimumBlocks", "Result", "Fewest rectangles of any partition of the face (a "
+     "lower bound; 0: unknown, a face with edges at other angles).", 8),
+    ("App::PropertyInteger", "NumberOfCuts", "Result", "Cuts the policy made.", 8),
+    ("App::PropertyFloat", "Return", "Result", "Sum of the cuts' rewards.", 8),
+    ("App::PropertyString", "Status", "Result", "Summary of the last decomposition.", 8),
+    ("App::PropertyString", "RewardUsed", "Result", "The reward preset the cuts were scored with.", 8),
+    ("App::PropertyString", "CutSequence", "Result", "The cuts (JSON, in the face's own frame; on a solid: its "
+     "cap's, with the cap's number and frame), for stepping through them.", 8),
+]
+RESULT_READ_ONLY = ("NumberOfBlocks", "MinimumBlocks", "NumberOfCuts", "Return", "Status", "RewardUsed")
+
+
 class AutoBlockFeature:
     Type = TYPE
 
@@ -32,37 +64,14 @@ class AutoBlockFeature:
         self.last_complete = False
         self.ensure_properties(obj)
 
-    # Properties: (type, name, group, tooltip, attributes). Attributes: 8 = Output (changing it does not
-    # touch the object); read-only and hidden are editor modes.
     PROPERTIES = [
         ("App::PropertyLinkSub", "Source", "Input", "The face to cut: an object and, when it has several faces, one "
          "of them. Recomputes when it changes.", 0),
-        ("App::PropertyEnumeration", "Policy", "Decomposition", "How cuts are chosen: auto (the default: the exact "
-         "search where it finishes in time, the trained sac-mesh where it does not), a shipped trained policy "
-         "(sac-mesh: few, fat blocks; sac-paper: Eq. (1)) or a baseline (optimal: maximum return by exact search; "
-         "greedy; random).", 0),
-        ("App::PropertyFile", "PolicyFile", "Decomposition", "A policy file made by training (Train a policy); "
-         "used instead of Policy when set.", 0),
-        ("App::PropertyEnumeration", "RewardPreset", "Decomposition", "The reward the cuts are scored with: empty "
-         "for the policy's own (sac-mesh: mesh; sac-paper, the baselines: paper), paper (Eq. (1) of DiPrete et al. "
-         "2022) or mesh (few, fat blocks). The baselines maximise it.", 0),
-        ("App::PropertyInteger", "Seed", "Decomposition", "Seed of the random policies.", 0),
-        ("App::PropertyFloat", "TimeLimit", "Decomposition", "Seconds per face before greedy finishes the "
-         "remaining parts (optimal, auto and learned policies).", 0),
+    ] + DECOMPOSITION_PROPERTIES + [
         ("App::PropertyLength", "MeshSize", "Mesh", "Target quad size of the object's FEM mesh (0: automatic, 1/20 "
          "of the face's longer side).", 0),
-        ("App::PropertyInteger", "NumberOfBlocks", "Result", "Blocks in the partition (on a face with edges at "
-         "other angles: convex quadrilaterals and templates, see Status).", 8),
-        ("App::PropertyInteger", "MinimumBlocks", "Result", "Fewest rectangles of any partition of the face (a "
-         "lower bound; 0: unknown, a face with edges at other angles).", 8),
-        ("App::PropertyInteger", "NumberOfCuts", "Result", "Cuts the policy made.", 8),
-        ("App::PropertyFloat", "Return", "Result", "Sum of the cuts' rewards.", 8),
-        ("App::PropertyString", "Status", "Result", "Summary of the last decomposition.", 8),
-        ("App::PropertyString", "RewardUsed", "Result", "The reward preset the cuts were scored with.", 8),
-        ("App::PropertyString", "CutSequence", "Result", "The cuts (JSON, in the face's own frame), for "
-         "stepping through them.", 8),
-    ]
-    READ_ONLY = ("NumberOfBlocks", "MinimumBlocks", "NumberOfCuts", "Return", "Status", "RewardUsed")
+    ] + RESULT_PROPERTIES
+    READ_ONLY = RESULT_READ_ONLY
     HIDDEN = ("CutSequence",)
 
     def ensure_properties(self, obj):
@@ -99,13 +108,18 @@ class AutoBlockFeature:
             raise
         self.last_complete = result.complete
         obj.Shape = result.shape
+        self.set_results(obj, result, result.cut_sequence())
+
+    def set_results(self, obj, result, cut_sequence):
+        """Set the result properties from a DecompositionResult (a face's, or a solid's cap's) and its cut sequence
+        (JSON text), which is stored with the settings it was made with."""
         obj.NumberOfBlocks = result.n_blocks + (result.n_templates if result.general else 0)
         obj.MinimumBlocks = result.min_blocks or 0
         obj.NumberOfCuts = len(result.cuts)
         obj.Return = result.ret
         obj.Status = "{}: {}".format(result.policy, result.summary())
         obj.RewardUsed = result.reward
-        sequence = json.loads(result.cut_sequence())
+        sequence = json.loads(cut_sequence)
         sequence["settings"] = self.settings(obj)
         obj.CutSequence = json.dumps(sequence)
 
@@ -161,14 +175,8 @@ def make_autoblock(source, sub=None, policy=None, reward=None, mesh_size=None, s
     spec, reward = chosen_settings(policy, reward)
     doc = source.Document
     with new_objects(doc) as created:
-        obj = doc.addObject("Part::FeaturePython", name)
-        created.append(obj.Name)
-        AutoBlockFeature(obj)
-        if FreeCAD.GuiUp:
-            from ..viewproviders.view_autoblock import ViewProviderAutoBlock
-
-            ViewProviderAutoBlock(obj.ViewObject)
-        obj.Label = "{} {}".format(name, source.Label) + (" {}".format(sub) if sub else "")
+        obj = add_feature(doc, created, name, AutoBlockFeature, "ViewProviderAutoBlock",
+                          "{} {}".format(name, source.Label) + (" {}".format(sub) if sub else ""))
         set_settings(obj, spec, reward, seed, time_limit, mesh_size)
         obj.Source = (source, [sub] if sub else [])
         recompute_checked(obj)
@@ -200,6 +208,21 @@ def new_objects(doc):
             if doc.getObject(object_name) is not None:
                 doc.removeObject(object_name)
         raise
+
+
+def add_feature(doc, created, name, feature, view_provider, label):
+    """Add a Part::FeaturePython called `name` with proxy class `feature` (and, with the GUI up, the view provider
+    class named `view_provider` of view_autoblock.py) and label `label`; its name is appended to `created` (see
+    new_objects)."""
+    obj = doc.addObject("Part::FeaturePython", name)
+    created.append(obj.Name)
+    feature(obj)
+    if FreeCAD.GuiUp:
+        from ..viewproviders import view_autoblock
+
+        getattr(view_autoblock, view_provider)(obj.ViewObject)
+    obj.Label = label
+    return obj
 
 
 def chosen_settings(policy, reward):
@@ -239,16 +262,26 @@ def recompute_checked(obj):
 
 
 def stepper_of(obj):
-    """A Stepper over an AutoBlock object's cuts. Raises ValueError when the object is out of date (its source
-    changed since its last recompute) or has no result."""
-    if not is_autoblock(obj):
+    """A Stepper over an AutoBlock object's cuts (an AutoBlock solid object's: its cap's, drawn on the cap).
+    Raises ValueError when the object is out of date (its source changed since its last recompute) or has no
+    result."""
+    from .solid_blocks import cap_in_frame, is_autoblock_solid
+
+    solid = is_autoblock_solid(obj)
+    if not (solid or is_autoblock(obj)):
         raise ValueError("{} is not an AutoBlock object".format(getattr(obj, "Label", obj)))
     out_of_date = ValueError("{} is out of date or has no result: recompute it first".format(obj.Label))
     if "Touched" in obj.State or "Invalid" in obj.State or not obj.CutSequence or not obj.Source:
         raise out_of_date
-    source, subs = obj.Source
-    face, local, frame, label = console.local_face((source, list(subs)))
     data = json.loads(obj.CutSequence)
+    if solid:
+        try:
+            local, frame, label = cap_in_frame(obj, data)
+        except (ValueError, IndexError, KeyError):
+            raise out_of_date from None
+    else:
+        source, subs = obj.Source
+        face, local, frame, label = console.local_face((source, list(subs)))
     # The source may have changed without a recompute yet (FreeCAD marks dependents only when recomputing).
     if not console.same_face(data.get("face"), local):
         raise out_of_date

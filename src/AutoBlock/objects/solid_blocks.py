@@ -8,10 +8,9 @@ last hexahedral mesh for its mesh object (computed again when missing, e.g. afte
 make_autoblock_solid() is what the Auto-Block button runs on a solid (or on a cap face of one).
 """
 
-import FreeCAD
-
-from .. import console
-from .autoblock_feature import AutoBlockFeature, chosen_settings, new_objects, recompute_checked, set_settings
+from .. import console, faces
+from .autoblock_feature import (DECOMPOSITION_PROPERTIES, RESULT_PROPERTIES, RESULT_READ_ONLY, AutoBlockFeature,
+                                add_feature, chosen_settings, new_objects, recompute_checked, set_settings)
 
 TYPE = "AutoBlock::Solid"
 
@@ -22,34 +21,26 @@ def is_autoblock_solid(obj):
 
 
 class AutoBlockSolidFeature(AutoBlockFeature):
-    """As AutoBlockFeature (settings, enumerations from the core, no saved state), for a solid."""
+    """As AutoBlockFeature (settings, enumerations from the core, no saved state), for a solid; the decomposition's
+    results are its cap's (CutSequence: the cap's cuts, with the cap's face number and frame, for stepping)."""
 
     Type = TYPE
-    HIDDEN = ()
 
     PROPERTIES = [
         ("App::PropertyLinkGlobal", "Source", "Input", "The solid to split and mesh: a straight sweep of a planar face "
          "(caps congruent, planar sides along one direction). Recomputes when it changes.", 0),
-        ("App::PropertyEnumeration", "Policy", "Decomposition", "How the cap's cuts are chosen (as for a face: "
-         "auto, a shipped trained policy or a baseline).", 0),
-        ("App::PropertyFile", "PolicyFile", "Decomposition", "A policy file made by training; used instead of "
-         "Policy when set.", 0),
-        ("App::PropertyEnumeration", "RewardPreset", "Decomposition", "The reward the cap's cuts are scored with "
-         "(empty: the policy's own).", 0),
-        ("App::PropertyInteger", "Seed", "Decomposition", "Seed of the random policies.", 0),
-        ("App::PropertyFloat", "TimeLimit", "Decomposition", "Seconds for the cap before greedy finishes.", 0),
+    ] + DECOMPOSITION_PROPERTIES + [
         ("App::PropertyLength", "MeshSize", "Mesh", "Target hexahedron size (0: automatic, 1/20 of the solid's "
          "longest bounding-box side).", 0),
         ("App::PropertyInteger", "Layers", "Mesh", "Layers along the sweep (0: the sweep's length over the "
          "size).", 0),
         ("App::PropertyFloat", "Grading", "Mesh", "Each layer's thickness over the previous one's (1: "
          "uniform).", 0),
-        ("App::PropertyInteger", "NumberOfBlocks", "Result", "Prism blocks (the cap's blocks swept).", 8),
+    ] + RESULT_PROPERTIES + [
         ("App::PropertyIntegerList", "Caps", "Result", "The solid's cap faces (bottom, top: Face numbers).", 8),
         ("App::PropertyVector", "Sweep", "Result", "From the bottom cap to the top one.", 8),
-        ("App::PropertyString", "Status", "Result", "Summary of the last split and mesh.", 8),
     ]
-    READ_ONLY = ("NumberOfBlocks", "Caps", "Sweep", "Status")
+    READ_ONLY = RESULT_READ_ONLY + ("Caps", "Sweep")
 
     def __init__(self, obj):
         self.last_mesh = None
@@ -69,6 +60,7 @@ class AutoBlockSolidFeature(AutoBlockFeature):
             raise
         self.last_mesh = result
         obj.Shape = result.shape
+        self.set_results(obj, result.cap, result.cut_sequence())
         obj.NumberOfBlocks = result.n_blocks
         obj.Caps = list(result.caps)
         obj.Sweep = result.sweep
@@ -87,6 +79,19 @@ def mesh_solid_object(obj, out=None):
     return console.mesh_solid(obj.Source, size=float(obj.MeshSize), layers=obj.Layers, grading=obj.Grading,
                               policy=obj.PolicyFile or obj.Policy, reward=obj.RewardPreset, seed=obj.Seed,
                               time_limit=obj.TimeLimit, out=out)
+
+
+def cap_in_frame(obj, sequence):
+    """(cap face in its frame, frame, label) of an AutoBlock solid object whose stored cut sequence (parsed
+    CutSequence) is `sequence`: the cap of its source solid as it stands now, carried into the frame the cuts were
+    made in. IndexError when the solid has no such face."""
+    found = console.solid_of(obj.Source) if obj.Source is not None else None
+    if found is None:
+        raise ValueError("{}: its source holds no solid".format(obj.Label))
+    shape, label = found
+    cap = int(sequence["cap"])
+    frame = faces.placement_of(sequence["frame"])
+    return faces.into_frame(shape.Faces[cap - 1], frame), frame, "{}.Face{}".format(label, cap)
 
 
 def hex_mesh_of(obj):
@@ -115,14 +120,8 @@ def make_autoblock_solid(source, policy=None, reward=None, mesh_size=None, layer
     spec, reward = chosen_settings(policy, reward)
     doc = source.Document
     with new_objects(doc) as created:
-        obj = doc.addObject("Part::FeaturePython", name)
-        created.append(obj.Name)
-        AutoBlockSolidFeature(obj)
-        if FreeCAD.GuiUp:
-            from ..viewproviders.view_autoblock import ViewProviderAutoBlockSolid
-
-            ViewProviderAutoBlockSolid(obj.ViewObject)
-        obj.Label = "{} {}".format(name, source.Label)
+        obj = add_feature(doc, created, name, AutoBlockSolidFeature, "ViewProviderAutoBlockSolid",
+                          "{} {}".format(name, source.Label))
         set_settings(obj, spec, reward, seed, time_limit, mesh_size)
         obj.Layers = int(layers)
         obj.Grading = float(grading)

@@ -27,7 +27,8 @@ def current_panel():
 
 
 def open_step_panel(obj):
-    """Open the panel on AutoBlock object `obj` (what its view provider's setEdit does). Returns True when open."""
+    """Open the panel on AutoBlock object `obj` (what its view provider's setEdit does; an AutoBlock solid object:
+    its cap's cuts, drawn on the cap). Returns True when open."""
     global _panel
     from ..gui_utils import report_exception
     from ..objects.autoblock_feature import stepper_of
@@ -101,11 +102,13 @@ class StepThroughPanel:
         # Hide the object and its FEM mesh through their scene graphs only (no property changes: the document
         # stays as it is).
         from ..objects.fem_mesh import mesh_objects_of
+        from ..objects.solid_blocks import hex_mesh_objects_of, is_autoblock_solid
 
         self.switch = obj.ViewObject.SwitchNode
         self.saved_child = self.switch.whichChild.getValue()
+        meshes = hex_mesh_objects_of(obj) if is_autoblock_solid(obj) else mesh_objects_of(obj)
         self.hidden = [(o.ViewObject.SwitchNode, o.ViewObject.SwitchNode.whichChild.getValue())
-                       for o in mesh_objects_of(obj) if o.ViewObject is not None]
+                       for o in meshes if o.ViewObject is not None]
         self.scene = StepScene(self.view)
         self.switch.whichChild = -1
         for switch, _ in self.hidden:

@@ -92,7 +92,8 @@ class ViewProviderAutoBlock:
 
 class ViewProviderAutoBlockSolid(ViewProviderAutoBlock):
     """An AutoBlock solid object: every face coloured by its prism block (a face shared by two blocks takes
-    the first's). No step-through or write-back (those are the face object's)."""
+    the first's). Double-click and the context menu step through its cap's cuts (drawn on the cap), as for a
+    face; the context menu also offers write-back."""
 
     def getIcon(self):
         return paths.icon("AutoBlock_Object")
@@ -112,15 +113,3 @@ class ViewProviderAutoBlockSolid(ViewProviderAutoBlock):
                 obj.ViewObject.DiffuseColor = colours
         except Exception as error:  # never let colouring take anything down
             FreeCAD.Console.PrintWarning("AutoBlock: could not colour {}: {}\n".format(obj.Label, error))
-
-    def doubleClicked(self, vobj):
-        return False
-
-    def setupContextMenu(self, vobj, menu):
-        pass
-
-    def setEdit(self, vobj, mode=0):
-        return None
-
-    def unsetEdit(self, vobj, mode=0):
-        return None
