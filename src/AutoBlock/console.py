@@ -473,8 +473,8 @@ def cap_solid(target, sub=None):
     the selection gives it. The object holding that face (the Pad) is returned when its shape is one solid that
     is a straight sweep of a planar face (check_solid) and FaceN is one of its two caps; None for a side face, a
     face of a solid that is not such a sweep, a face alone or anything else. This is what Auto-Block does with a
-    selected face: a cap stands for its solid, make_autoblock_solid(cap_solid(object, "FaceN")) (unless the
-    preferences say otherwise), any other face is cut on its own (make_autoblock(object, "FaceN")).
+    selected face: a cap stands for its solid, make_autoblock_solid((object, "FaceN")) (unless the preferences
+    say otherwise), any other face is cut on its own (make_autoblock(object, "FaceN")).
     """
     if isinstance(target, tuple) and len(target) == 2 and sub is None:
         target, sub = target

@@ -1528,10 +1528,17 @@ class TestSolids(unittest.TestCase):
         self.assertIsNone(AutoBlock.cap_solid(cylinder, "Face2"))
         face = support.add_face(self.doc, support.read_face())
         self.assertIsNone(AutoBlock.cap_solid(face, "Face1"))  # a face alone
-        # The console keeps making a face object when asked for a cap face.
+        # The console keeps making a face object when asked for a cap face; make_autoblock_solid takes a cap
+        # (what Auto-Block echoes for a selected cap) and refuses a side face, leaving the document as it was.
         obj = AutoBlock.make_autoblock(extrusion, "Face{}".format(caps[0]))
         self.assertTrue(AutoBlock.is_autoblock(obj))
         self.assertFalse(AutoBlock.is_autoblock_solid(obj))
+        names = [o.Name for o in self.doc.Objects]
+        with self.assertRaisesRegex(ValueError, r"^Body\.Pad\.Face{} is not a cap face of a swept solid".format(side)):
+            AutoBlock.make_autoblock_solid((body, "Pad.Face{}".format(side)))
+        self.assertEqual([o.Name for o in self.doc.Objects], names)
+        solid = AutoBlock.make_autoblock_solid((body, "Pad.Face{}".format(pad_caps[1])), mesh=False)
+        self.assertIs(solid.Source, pad)
 
     def test_the_caps_cuts_step_on_the_cap(self):
         # A holed L in a tilted plane, swept along its normal: the cap's frame is not the model's.

@@ -56,7 +56,7 @@ class AutoBlockCommand(BaseCommand):
         # of a sweepable solid (console.cap_solid: the object holding it, e.g. the Pad of "Pad.Face6"), unless the
         # preferences say to mesh the face alone; any other face is a face. Several caps of one solid: one solid.
         problems = []
-        solids = {}  # (object name, sub) -> the object holding the solid
+        solids = {}  # (object name, sub) -> the object holding the solid (whole, or a cap of it selected)
         caps_mean_solids = preferences.cap_face() == "solid"
         for obj, sub, _ in targets:
             try:
@@ -85,7 +85,9 @@ class AutoBlockCommand(BaseCommand):
                 if solid is not None:
                     if (solid.Document.Name, solid.Name) not in made:
                         made.add((solid.Document.Name, solid.Name))
-                        echo("AutoBlock.make_autoblock_solid({})".format(object_ref(solid)))
+                        # A cap: its console twin names the selected face, (object, "FaceN").
+                        echo("AutoBlock.make_autoblock_solid({})".format(
+                            "({}, {!r})".format(object_ref(obj), sub) if sub else object_ref(solid)))
                 elif sub:
                     echo("AutoBlock.make_autoblock({}, {!r})".format(object_ref(obj), sub))
                 else:

@@ -105,7 +105,9 @@ def hex_mesh_of(obj):
 def make_autoblock_solid(source, policy=None, reward=None, mesh_size=None, layers=0, grading=1.0, seed=0,
                          time_limit=30.0, name="AutoBlockSolid", mesh=True):
     """Create the AutoBlock solid object of `source` (a document object whose shape is one swept solid: a Part
-    box or extrusion, a PartDesign Pad or Body) and compute it: the solid split into prism blocks. mesh: also
+    box or extrusion, a PartDesign Pad or Body; or (object, "FaceN") naming a cap face of one, also through a
+    container, (body, "Pad.Face8"), what Auto-Block does with a selected cap: the solid is the object holding
+    that face, see console.cap_solid) and compute it: the solid split into prism blocks. mesh: also
     make its hexa8 FEM mesh object (Fem::FemMeshObjectPython, fem_mesh.py), which follows it on recompute.
     policy, reward, seed, time_limit: the cap's decomposition (as make_autoblock); mesh_size (None: the
     preferred one; 0: automatic), layers (0: from the size), grading: the hexahedra.
@@ -114,6 +116,12 @@ def make_autoblock_solid(source, policy=None, reward=None, mesh_size=None, layer
     the core's one-line reason for a solid that is not a straight sweep of a planar face, or a bad option; the
     document is then left unchanged. Returns the solid object (its mesh objects: hex_mesh_objects_of).
     """
+    if isinstance(source, tuple) and len(source) == 2 and hasattr(source[0], "Document"):
+        holder = console.cap_solid(*source)
+        if holder is None:
+            raise ValueError("{}.{} is not a cap face of a swept solid (a straight sweep of a planar face): "
+                             "AutoBlock.make_autoblock cuts it as a face".format(source[0].Label, source[1]))
+        source = holder
     if not hasattr(source, "Document"):
         raise TypeError("make_autoblock_solid needs a document object, got {}".format(type(source).__name__))
     console.check_solid(source)  # before touching the document
