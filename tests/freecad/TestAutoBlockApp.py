@@ -1598,6 +1598,10 @@ class TestSolids(unittest.TestCase):
         self.assertEqual(len(obj.Shape.Solids), blocks)
         self.assertEqual((mesh.FemMesh.HexaCount, mesh.FemMesh.NodeCount), (hexes, nodes))
         self.check_hexa8(mesh.FemMesh, self.doc.getObject("Extrusion").Shape.Volume, hexes)
+        # The cap's cuts step from the saved cut sequence, without a recompute.
+        stepper = AutoBlock.stepper_of(obj)
+        self.assertEqual(stepper.steps, obj.NumberOfCuts)
+        self.assertEqual(stepper.step(stepper.steps).blocks, blocks)
         # And it recomputes after reopening.
         obj.MeshSize = 0.5
         self.doc.recompute()

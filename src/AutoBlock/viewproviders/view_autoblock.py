@@ -95,9 +95,6 @@ class ViewProviderAutoBlockSolid(ViewProviderAutoBlock):
     the first's). Double-click and the context menu step through its cap's cuts (drawn on the cap), as for a
     face; the context menu also offers write-back."""
 
-    def getIcon(self):
-        return paths.icon("AutoBlock_Object")
-
     def colour(self, obj=None):
         obj = obj or self.Object
         try:
