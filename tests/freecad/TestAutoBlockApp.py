@@ -1495,14 +1495,21 @@ class TestSolids(unittest.TestCase):
         self.assertAlmostEqual(obj.Shape.Volume, pad.Shape.Volume, places=9)
         hexa = AutoBlock.hex_mesh_objects_of(obj)[0]
         self.assertAlmostEqual(hexa.FemMesh.BoundBox.XMin, 46.0, places=9)
-        # A Body in an App::Part, moved again: both placements apply (moving a container does not touch the Pad,
-        # so the AutoBlock object is recomputed here).
-        part = self.doc.addObject("App::Part", "Part")
-        part.addObject(body)
-        part.Placement.Base = FreeCAD.Vector(0, 0, 10)
+        self.assertEqual(list(obj.Containers), [body])
+        # Moving the Body (the Pad itself does not change) recomputes the object and its mesh.
         body.Placement.Base = FreeCAD.Vector(-20, 0, 0)
         self.doc.recompute()
+        self.assertAlmostEqual(obj.Shape.BoundBox.XMin, -24.0, places=9)
+        self.assertAlmostEqual(hexa.FemMesh.BoundBox.XMin, -24.0, places=9)
+        # The Body put into an App::Part: once recomputed, the object follows the App::Part too, and both
+        # placements apply.
+        part = self.doc.addObject("App::Part", "Part")
+        part.addObject(body)
+        self.doc.recompute()
         obj.touch()
+        self.doc.recompute()
+        self.assertEqual(list(obj.Containers), [body, part])
+        part.Placement.Base = FreeCAD.Vector(0, 0, 10)
         self.doc.recompute()
         box = obj.Shape.BoundBox
         self.assertEqual([round(v, 9) for v in (box.XMin, box.XMax, box.YMin, box.YMax, box.ZMin, box.ZMax)],

@@ -39,8 +39,11 @@ class AutoBlockSolidFeature(AutoBlockFeature):
     ] + RESULT_PROPERTIES + [
         ("App::PropertyIntegerList", "Caps", "Result", "The solid's cap faces (bottom, top: Face numbers).", 8),
         ("App::PropertyVector", "Sweep", "Result", "From the bottom cap to the top one.", 8),
+        ("App::PropertyLinkListGlobal", "Containers", "Input", "The containers placing the source (its Body, an "
+         "App::Part): moving them recomputes this object. Follows Source.", 8),
     ]
     READ_ONLY = RESULT_READ_ONLY + ("Caps", "Sweep")
+    HIDDEN = AutoBlockFeature.HIDDEN + ("Containers",)
 
     def __init__(self, obj):
         self.last_mesh = None
@@ -49,6 +52,12 @@ class AutoBlockSolidFeature(AutoBlockFeature):
     def onDocumentRestored(self, obj):
         self.last_mesh = None
         super().onDocumentRestored(obj)
+
+    def onChanged(self, obj, prop):
+        if prop == "Source" and "Restoring" not in obj.State and "Containers" in obj.PropertiesList:
+            containers = containers_of(obj.Source)
+            if list(obj.Containers) != containers:
+                obj.Containers = containers
 
     def execute(self, obj):
         self.last_error = None
@@ -59,6 +68,9 @@ class AutoBlockSolidFeature(AutoBlockFeature):
             self.last_error = error
             raise
         self.last_mesh = result
+        containers = containers_of(obj.Source)
+        if list(obj.Containers) != containers:  # e.g. the Body put into an App::Part since
+            obj.Containers = containers
         obj.Shape = result.shape
         self.set_results(obj, result.cap, result.cut_sequence())
         obj.NumberOfBlocks = result.n_blocks
@@ -79,6 +91,16 @@ def mesh_solid_object(obj, out=None):
     return console.mesh_solid(obj.Source, size=float(obj.MeshSize), layers=obj.Layers, grading=obj.Grading,
                               policy=obj.PolicyFile or obj.Policy, reward=obj.RewardPreset, seed=obj.Seed,
                               time_limit=obj.TimeLimit, out=out)
+
+
+def containers_of(source):
+    """The containers that place document object `source` (its Body, the App::Part holding that, ...)."""
+    chain = []
+    parent = source.getParentGeoFeatureGroup() if source is not None else None
+    while parent is not None and parent not in chain:
+        chain.append(parent)
+        parent = parent.getParentGeoFeatureGroup()
+    return chain
 
 
 def cap_in_frame(obj, sequence):
