@@ -66,7 +66,22 @@ Point2 largest_inscribed_centre(const std::vector<Point2>& polygon) {
 }  // namespace
 
 bool is_side_vertex(const Ring& ring, size_t i, const BlockRules& rules) {
-  return std::fabs(interior_angle(ring, i) - M_PI) <= rules.flat_tolerance_degrees * kDegree;
+  // |interior angle - 180| <= tolerance is the turn from the incoming to the outgoing edge within
+  // the tolerance: a forward turn (positive dot product) whose |cross| <= tan(tolerance) dot (no
+  // trigonometry on this hot path).
+  const double tolerance = rules.flat_tolerance_degrees;
+  if (!(tolerance < 90.0)) return std::fabs(interior_angle(ring, i) - M_PI) <= tolerance * kDegree;
+  thread_local double cached_tolerance = -1.0, cached_tan = 0.0;
+  if (tolerance != cached_tolerance) {
+    cached_tolerance = tolerance;
+    cached_tan = std::tan(tolerance * kDegree);
+  }
+  const size_t n = ring.size();
+  const Point2 p = ring[(i + n - 1) % n], v = ring[i], q = ring[(i + 1) % n];
+  const double ax = v.x - p.x, ay = v.y - p.y, bx = q.x - v.x, by = q.y - v.y;
+  const double dot = ax * bx + ay * by, cross = ax * by - ay * bx;
+  if (!(dot > 0.0)) return false;
+  return std::fabs(cross) <= cached_tan * dot;
 }
 
 std::optional<std::array<int, 4>> block_corners(const Region& region, const BlockRules& rules) {
@@ -88,19 +103,32 @@ std::optional<std::array<int, 4>> block_corners(const Region& region, const Bloc
 
 bool template_applies(const Region& region) { return region.is_convex(); }
 
-std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& rules) {
-  const Ring& ring = region.outer();
-  const size_t n = ring.size();
-  // The template's corners: the part's corners (side vertices lie on the template's sides); all
-  // vertices when fewer than three are corners.
+namespace {
+
+// The template's corners: the ring's corners (side vertices lie on the template's sides); all
+// vertices when fewer than three are corners.
+std::vector<size_t> template_corners(const Ring& ring, const BlockRules& rules) {
   std::vector<size_t> corners;
-  for (size_t i = 0; i < n; ++i) {
+  for (size_t i = 0; i < ring.size(); ++i) {
     if (!is_side_vertex(ring, i, rules)) corners.push_back(i);
   }
   if (corners.size() < 3) {
     corners.clear();
-    for (size_t i = 0; i < n; ++i) corners.push_back(i);
+    for (size_t i = 0; i < ring.size(); ++i) corners.push_back(i);
   }
+  return corners;
+}
+
+}  // namespace
+
+size_t template_quad_count(const Region& region, const BlockRules& rules) {
+  return template_corners(region.outer(), rules).size();
+}
+
+std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& rules) {
+  const Ring& ring = region.outer();
+  const size_t n = ring.size();
+  const std::vector<size_t> corners = template_corners(ring, rules);
   const size_t m = corners.size();
   auto next = [n](size_t i) { return (i + 1) % n; };
   auto length = [](Point2 a, Point2 b) { return std::hypot(b.x - a.x, b.y - a.y); };

@@ -34,19 +34,23 @@ std::vector<Ring> Region::loops() const {
   return all;
 }
 
-double segment_distance(Point2 x, Point2 a, Point2 b) {
+double segment_distance_squared(Point2 x, Point2 a, Point2 b) {
   const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
   double t = len2 > 0.0 ? ((x.x - a.x) * dx + (x.y - a.y) * dy) / len2 : 0.0;
   t = std::max(0.0, std::min(1.0, t));
-  return std::hypot(x.x - (a.x + t * dx), x.y - (a.y + t * dy));
+  const double ex = x.x - (a.x + t * dx), ey = x.y - (a.y + t * dy);
+  return ex * ex + ey * ey;
 }
+
+double segment_distance(Point2 x, Point2 a, Point2 b) { return std::sqrt(segment_distance_squared(x, a, b)); }
 
 double region_perimeter(const Region& region) {
   double length = 0.0;
   for (int k = 0; k < region.loop_count(); ++k) {
     const Ring& ring = region.loop(k);
     for (size_t i = 0; i < ring.size(); ++i) {
-      length += std::hypot(ring[(i + 1) % ring.size()].x - ring[i].x, ring[(i + 1) % ring.size()].y - ring[i].y);
+      const double dx = ring[(i + 1) % ring.size()].x - ring[i].x, dy = ring[(i + 1) % ring.size()].y - ring[i].y;
+      length += std::sqrt(dx * dx + dy * dy);
     }
   }
   return length;
@@ -82,9 +86,9 @@ Ring canonical_ring(const Ring& ring, double quantum) {
     changed = false;
     for (size_t i = 0; i < out.size(); ++i) {
       const Point2 p = out[(i + out.size() - 1) % out.size()], v = out[i], n = out[(i + 1) % out.size()];
-      const double len = std::hypot(n.x - p.x, n.y - p.y);
-      if (len == 0.0 || std::fabs(cross(p, v, n)) <= quantum * len || segment_distance(p, v, n) <= quantum ||
-          segment_distance(n, v, p) <= quantum) {
+      // Squared comparisons: no square roots on this hot path.
+      const double len2 = (n.x - p.x) * (n.x - p.x) + (n.y - p.y) * (n.y - p.y), c = cross(p, v, n), q2 = quantum * quantum;
+      if (len2 == 0.0 || c * c <= q2 * len2 || segment_distance_squared(p, v, n) <= q2 || segment_distance_squared(n, v, p) <= q2) {
         out.erase(out.begin() + static_cast<std::ptrdiff_t>(i));
         merge_equal_points(&out);
         changed = true;
@@ -101,11 +105,10 @@ double interior_angle(const Ring& ring, size_t i) {
   const Point2 p = ring[(i + n - 1) % n], v = ring[i], q = ring[(i + 1) % n];
   // Angle from the direction to the next vertex, turning counter-clockwise, to the direction to the
   // previous one: the region lies on the ring's left, so that is the interior angle.
-  const double a_next = std::atan2(q.y - v.y, q.x - v.x);
-  const double a_prev = std::atan2(p.y - v.y, p.x - v.x);
-  double angle = a_prev - a_next;
-  while (angle <= 0.0) angle += 2.0 * M_PI;
-  while (angle > 2.0 * M_PI) angle -= 2.0 * M_PI;
+  // One atan2 of the two directions' cross and dot products (in (-pi, pi]), then into (0, 2 pi].
+  const double ax = q.x - v.x, ay = q.y - v.y, bx = p.x - v.x, by = p.y - v.y;
+  double angle = std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+  if (angle <= 0.0) angle += 2.0 * M_PI;
   return angle;
 }
 

@@ -82,6 +82,8 @@ double interior_angle(const Ring& ring, size_t i);
 
 // Inputs: point x, segment a-b. Output: the distance from x to the segment.
 double segment_distance(Point2 x, Point2 a, Point2 b);
+// The same, squared (no square root: for comparisons on hot paths).
+double segment_distance_squared(Point2 x, Point2 a, Point2 b);
 
 // Inputs: region. Output: the total length of its loops.
 double region_perimeter(const Region& region);

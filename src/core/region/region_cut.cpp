@@ -8,6 +8,7 @@
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
 
 namespace autoblock {
@@ -80,7 +81,7 @@ bool loops_touch(const Region& region) {
       const Ring& rb = region.loop(b);
       for (const Point2& v : ra) {
         for (size_t i = 0; i < rb.size(); ++i) {
-          if (segment_distance(v, rb[i], rb[(i + 1) % rb.size()]) <= q) return true;
+          if (segment_distance_squared(v, rb[i], rb[(i + 1) % rb.size()]) <= q * q) return true;
         }
       }
     }
@@ -165,18 +166,518 @@ bool exact_partial_end(const Region& region, Point2 origin, Point2 direction, KP
   return true;
 }
 
-// The partial cut of a region without holes: the chord from the origin to the exact end splits its
-// one loop into two chains (no arrangement needed). Returns false when the origin is not on the loop.
-bool split_simple(const Region& region, const RegionCut& cut, std::vector<Region>* pieces, Chord* chord) {
-  KPoint end;
-  size_t eh = 0;
-  if (!exact_partial_end(region, cut.origin, cut.direction, &end, &eh)) {
-    pieces->clear();
-    return true;
+
+// ---------------------------------------------------------------------------------------------
+// The fast path for a region without holes. The arrangement (below) is general but slow: every
+// point it constructs is a lazy exact number, and a cut through a vertex makes the interval filter
+// fail at once. On one loop the cut needs no arrangement. The cut line is the line through the
+// origin along the direction; a vertex lies on it when its distance from it is at most half a
+// quantum (the lattice cannot tell such a vertex from one on the line: a crossing that near it
+// would round onto it), otherwise strictly on one side. So a cut along an edge's extension runs
+// through the edge's far vertex even though the direction, a unit vector in doubles, misses it by
+// a rounding error (the arrangement reads such a cut by where that rounding error puts the line;
+// tests compare the two away from such vertices). The only constructions are the crossings with
+// edges whose ends lie on opposite sides, in doubles and rounded to the lattice, or exactly where
+// that rounding is in doubt. The point-in-loop test is CGAL's exact predicate on doubles. Where a
+// decision is too close to call (two crossings at nearly the same place along the line), the fast
+// path gives up and the arrangement decides.
+
+using FastKernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using FPoint = FastKernel::Point_2;
+
+FPoint fast(Point2 p) { return FPoint(p.x, p.y); }
+
+double cross(Point2 u, Point2 v) { return u.x * v.y - u.y * v.x; }
+Point2 minus(Point2 a, Point2 b) { return {a.x - b.x, a.y - b.y}; }
+double norm(Point2 u) { return std::sqrt(u.x * u.x + u.y * u.y); }
+
+// The cut line: origin o, unit direction u; sides with the half-quantum band as the line.
+struct CutLine {
+  Point2 o, u;
+  double half_q;
+  CutLine(Point2 origin, Point2 direction, double q) : o(origin), half_q(0.5 * q) {
+    const double length = norm(direction);
+    u = {direction.x / length, direction.y / length};
   }
+  // +1 left, -1 right, 0 on the line (within half a quantum).
+  int side(Point2 p) const {
+    const double s = cross(u, minus(p, o));
+    return s > half_q ? 1 : s < -half_q ? -1 : 0;
+  }
+  // The signed distance along the line from o.
+  double along(Point2 p) const { return (p.x - o.x) * u.x + (p.y - o.y) * u.y; }
+  Point2 far(double t) const { return {o.x + t * u.x, o.y + t * u.y}; }
+};
+
+// True when value / q lies clearly away from a half-integer (its rounding is not in doubt) by more
+// than err / q.
+bool clear_rounding(double value, double err, double q) {
+  const double k = value / q;
+  return std::fabs(k - std::floor(k) - 0.5) > err / q + 1e-9;
+}
+
+// The crossing of the line (o, f) with the edge (a, b), whose ends lie strictly on opposite sides of
+// it: raw, in doubles (for ordering along the line), and on the lattice (exact where the rounding
+// of the double value is in doubt).
+struct Crossing {
+  Point2 raw, snapped;
+};
+
+Crossing line_crossing(const CutLine& line, Point2 a, Point2 b, double q) {
+  const Point2 e = minus(b, a);
+  const double da = cross(line.u, minus(a, line.o)), db = cross(line.u, minus(b, line.o));
+  const double s = da / (da - db);
+  Crossing c;
+  c.raw = {a.x + s * e.x, a.y + s * e.y};
+  // Error bound (generous): the determinants' rounding, amplified by the angle between edge and line.
+  const double amplify = norm(e) / (std::fabs(da) + std::fabs(db));
+  const double err = 1e-13 * (norm(minus(a, line.o)) + norm(e) + std::fabs(c.raw.x) + std::fabs(c.raw.y)) * amplify;
+  if (clear_rounding(c.raw.x, err, q) && clear_rounding(c.raw.y, err, q)) {
+    c.snapped = {snap_to_lattice(c.raw.x, q), snap_to_lattice(c.raw.y, q)};
+    return c;
+  }
+  // The exact crossing of the edge with the line through o along u (u's doubles taken exactly).
+  const Kernel::Line_2 exact_line(exact(line.o), Kernel::Vector_2(line.u.x, line.u.y));
+  const auto hit = CGAL::intersection(exact_line, KSegment(exact(a), exact(b)));
+  const KPoint* p = hit ? boost::get<KPoint>(&*hit) : nullptr;
+  c.snapped = p ? rounded(*p, q) : Point2{snap_to_lattice(c.raw.x, q), snap_to_lattice(c.raw.y, q)};
+  return c;
+}
+
+// Where the ray from o along direction first meets the loop (a region without holes): Found (hit
+// on the lattice, the number of the edge it lies on: the first of the two at a vertex, as
+// exact_partial_end numbers them), None (the ray meets nothing, or runs outside or along the
+// boundary first), or Unsure.
+enum class FastVerdict { Found, None, Done, Unsure };
+
+// Inside the region (strictly: inside the outer loop, outside every hole), decided exactly on the
+// point's doubles: 1 inside, 0 on a loop, -1 outside.
+int inside_region(const Region& region, Point2 point) {
+  const FPoint x(point.x, point.y);
+  for (int k = 0; k < region.loop_count(); ++k) {
+    std::vector<FPoint> loop;
+    loop.reserve(region.loop(k).size());
+    for (const Point2& p : region.loop(k)) loop.push_back(fast(p));
+    const CGAL::Bounded_side side = CGAL::bounded_side_2(loop.begin(), loop.end(), x, FastKernel());
+    if (side == CGAL::ON_BOUNDARY) return 0;
+    if ((k == 0) != (side == CGAL::ON_BOUNDED_SIDE)) return -1;
+  }
+  return 1;
+}
+
+FastVerdict fast_partial_end(const Region& region, Point2 o, Point2 direction, Point2* hit, int* hit_loop, size_t* hit_edge) {
+  const double q = region.quantum();
+  const CutLine line(o, direction, q);
+  bool found = false, unsure = false;
+  double best_t = 0.0;
+  Point2 best_raw, best_snapped;
+  size_t best_edge = 0;
+  int best_loop = 0;
+  auto consider = [&](Point2 raw, Point2 snapped, int loop, size_t edge) {
+    const double t = line.along(raw);
+    if (!(t > line.half_q)) return;  // the origin itself, or behind it
+    if (found) {
+      // The same point again (a vertex, from its second edge) is a tie the first edge wins;
+      // distinct points too close along the line to order are left to the exact path.
+      const bool same = snapped == best_snapped;
+      if (!same && std::fabs(t - best_t) <= 1e-12 * (1.0 + std::fabs(t))) unsure = true;
+      if (same || t >= best_t) return;
+    }
+    found = true;
+    best_t = t;
+    best_raw = raw;
+    best_snapped = snapped;
+    best_loop = loop;
+    best_edge = edge;
+  };
+  for (int k = 0; k < region.loop_count(); ++k) {
+    const Ring& ring = region.loop(k);
+    const size_t n = ring.size();
+    for (size_t i = 0; i < n; ++i) {
+      const Point2 a = ring[i], b = ring[(i + 1) % n];
+      const int sa = line.side(a), sb = line.side(b);
+      if (sa == sb && sa != 0) continue;
+      if (sa == 0 || sb == 0) {
+        if (sa == 0) consider(a, a, k, i);
+        if (sb == 0) consider(b, b, k, i);
+        continue;
+      }
+      const Crossing c = line_crossing(line, a, b, q);
+      consider(c.raw, c.snapped, k, i);
+    }
+  }
+  if (unsure) return FastVerdict::Unsure;
+  if (!found) return FastVerdict::None;
+  // The ray must run through the interior before it meets the boundary: the midpoint (the open
+  // segment meets no boundary) strictly inside the region.
+  if (inside_region(region, {(o.x + best_raw.x) / 2.0, (o.y + best_raw.y) / 2.0}) != 1) return FastVerdict::None;
+  *hit = best_snapped;
+  *hit_loop = best_loop;
+  *hit_edge = best_edge;
+  return FastVerdict::Found;
+}
+
+// The full cut of a region without holes: the loop with the line's proper crossings inserted, the
+// chords (the stretches of the line between consecutive points on it that run through the
+// interior), and the pieces they cut the loop into. Unsure hands the cut to the arrangement.
+FastVerdict fast_full_cut(const Region& region, Point2 o, Point2 direction, std::vector<Region>* pieces, std::vector<Chord>* chords) {
   const Ring& ring = region.outer();
   const size_t n = ring.size();
   const double q = region.quantum();
+  const CutLine line(o, direction, q);
+  struct Node {
+    Point2 point;  // on the lattice
+    double t;      // along the line (from the unrounded point)
+    bool on_line;
+  };
+  std::vector<Node> nodes;
+  nodes.reserve(n + 8);
+  std::vector<int> side(n);
+  for (size_t i = 0; i < n; ++i) side[i] = line.side(ring[i]);
+  for (size_t i = 0; i < n; ++i) {
+    const Point2 v = ring[i];
+    nodes.push_back({v, line.along(v), side[i] == 0});
+    const size_t j = (i + 1) % n;
+    if (side[i] != 0 && side[j] != 0 && side[i] != side[j]) {
+      const Crossing c = line_crossing(line, v, ring[j], q);
+      nodes.push_back({c.snapped, line.along(c.raw), true});
+    }
+  }
+  std::vector<size_t> along;
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    if (nodes[k].on_line) along.push_back(k);
+  }
+  std::sort(along.begin(), along.end(), [&](size_t a, size_t b) { return nodes[a].t < nodes[b].t; });
+  const size_t m = nodes.size();
+  std::vector<FPoint> loop;
+  loop.reserve(n);
+  for (const Point2& p : ring) loop.push_back(fast(p));
+  std::vector<std::pair<size_t, size_t>> cuts;  // chords as node indices
+  for (size_t k = 0; k + 1 < along.size(); ++k) {
+    const size_t a = along[k], b = along[k + 1];
+    if (std::fabs(nodes[a].t - nodes[b].t) <= 1e-12 * (1.0 + std::fabs(nodes[a].t))) return FastVerdict::Unsure;
+    if ((a + 1) % m == b || (b + 1) % m == a) continue;  // along a boundary edge
+    const Point2 m = line.far(0.5 * (nodes[a].t + nodes[b].t));
+    const FPoint mid(m.x, m.y);
+    const CGAL::Bounded_side where = CGAL::bounded_side_2(loop.begin(), loop.end(), mid, FastKernel());
+    if (where == CGAL::ON_BOUNDARY) return FastVerdict::Unsure;
+    if (where == CGAL::ON_BOUNDED_SIDE) cuts.emplace_back(a, b);
+  }
+  pieces->clear();
+  chords->clear();
+  if (cuts.empty()) return FastVerdict::Done;
+  // Split the loop (node indices in order) by one chord at a time; the other chords go with the
+  // part that holds both their ends (chords do not cross).
+  struct Part {
+    std::vector<size_t> loop;
+    std::vector<std::pair<size_t, size_t>> cuts;
+  };
+  std::vector<Part> work(1);
+  for (size_t k = 0; k < m; ++k) work[0].loop.push_back(k);
+  work[0].cuts = cuts;
+  while (!work.empty()) {
+    Part part = std::move(work.back());
+    work.pop_back();
+    if (part.cuts.empty()) {
+      Ring r;
+      for (size_t k : part.loop) r.push_back(nodes[k].point);
+      Region piece(r, {}, q);
+      if (!piece.is_empty()) pieces->push_back(std::move(piece));
+      continue;
+    }
+    const auto [a, b] = part.cuts.back();
+    part.cuts.pop_back();
+    const auto ia = std::find(part.loop.begin(), part.loop.end(), a) - part.loop.begin();
+    const auto ib = std::find(part.loop.begin(), part.loop.end(), b) - part.loop.begin();
+    const size_t len = part.loop.size();
+    if (static_cast<size_t>(ia) == len || static_cast<size_t>(ib) == len) return FastVerdict::Unsure;
+    Part one, two;
+    for (size_t k = static_cast<size_t>(ia);; k = (k + 1) % len) {
+      one.loop.push_back(part.loop[k]);
+      if (k == static_cast<size_t>(ib)) break;
+    }
+    for (size_t k = static_cast<size_t>(ib);; k = (k + 1) % len) {
+      two.loop.push_back(part.loop[k]);
+      if (k == static_cast<size_t>(ia)) break;
+    }
+    for (const auto& c : part.cuts) {
+      auto holds = [&](const Part& p, size_t x) { return std::find(p.loop.begin(), p.loop.end(), x) != p.loop.end(); };
+      if (holds(one, c.first) && holds(one, c.second)) one.cuts.push_back(c);
+      else if (holds(two, c.first) && holds(two, c.second)) two.cuts.push_back(c);
+      else return FastVerdict::Unsure;
+    }
+    work.push_back(std::move(one));
+    work.push_back(std::move(two));
+  }
+  for (const auto& [a, b] : cuts) chords->push_back({nodes[a].point, nodes[b].point});
+  return FastVerdict::Done;
+}
+
+// Chords in a canonical order (each from its lexicographically smaller end, then sorted), so that
+// the fast path and the arrangement report the same outcome.
+void canonical_chords(std::vector<Chord>* chords) {
+  auto less = [](Point2 a, Point2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); };
+  for (Chord& c : *chords) {
+    if (less(c.b, c.a)) std::swap(c.a, c.b);
+  }
+  std::sort(chords->begin(), chords->end(), [&](const Chord& u, const Chord& v) {
+    if (!(u.a == v.a)) return less(u.a, v.a);
+    return less(u.b, v.b);
+  });
+}
+
+
+// The cut of a region with holes (full or partial), by tracing the faces of the planar graph of
+// its loops and the chords: every loop with the cut's points inserted (its vertices within half a
+// quantum of the line on it, the line's proper crossings, a partial cut's ends), the chords as
+// edges both ways, and at every node the walk turns onto the first edge clockwise from the one it
+// came along, so that the region lies on its left: each cycle is a piece's outer loop
+// (counter-clockwise) or a hole (clockwise, which goes to the piece around it). A cycle that runs
+// along a chord both ways is a slit: the cut separates nothing there, and the region is unchanged,
+// as the arrangement decides. Unsure hands the cut to the arrangement.
+FastVerdict fast_cut_with_holes(const Region& region, const RegionCut& cut, std::vector<Region>* pieces, std::vector<Chord>* chords) {
+  const double q = region.quantum();
+  const CutLine line(cut.origin, cut.direction, q);
+  const int loops = region.loop_count();
+  struct Node {
+    Point2 point;
+    double t;
+    bool on_line;
+  };
+  std::vector<std::vector<Node>> nodes(static_cast<size_t>(loops));
+  std::vector<std::pair<std::pair<int, size_t>, std::pair<int, size_t>>> cuts;  // chords as (loop, node) pairs
+  pieces->clear();
+  chords->clear();
+  if (cut.kind == CutKind::Full) {
+    for (int k = 0; k < loops; ++k) {
+      const Ring& ring = region.loop(k);
+      const size_t n = ring.size();
+      std::vector<int> side(n);
+      for (size_t i = 0; i < n; ++i) side[i] = line.side(ring[i]);
+      auto& list = nodes[static_cast<size_t>(k)];
+      for (size_t i = 0; i < n; ++i) list.push_back({ring[i], line.along(ring[i]), side[i] == 0});
+      for (size_t i = n; i-- > 0;) {  // back to front, so that the indices before stay valid
+        const size_t j = (i + 1) % n;
+        if (side[i] == 0 || side[j] == 0 || side[i] == side[j]) continue;
+        const Crossing c = line_crossing(line, ring[i], ring[j], q);
+        if (c.snapped == ring[i] || c.snapped == ring[j]) return FastVerdict::Unsure;
+        list.insert(list.begin() + static_cast<std::ptrdiff_t>(i + 1), Node{c.snapped, line.along(c.raw), true});
+      }
+    }
+    std::vector<std::pair<int, size_t>> along;
+    for (int k = 0; k < loops; ++k) {
+      for (size_t i = 0; i < nodes[static_cast<size_t>(k)].size(); ++i) {
+        if (nodes[static_cast<size_t>(k)][i].on_line) along.emplace_back(k, i);
+      }
+    }
+    auto node = [&](const std::pair<int, size_t>& id) -> const Node& { return nodes[static_cast<size_t>(id.first)][id.second]; };
+    std::sort(along.begin(), along.end(), [&](const auto& a, const auto& b) { return node(a).t < node(b).t; });
+    for (size_t k = 0; k + 1 < along.size(); ++k) {
+      const auto a = along[k], b = along[k + 1];
+      if (std::fabs(node(a).t - node(b).t) <= 1e-12 * (1.0 + std::fabs(node(a).t))) return FastVerdict::Unsure;
+      const size_t m = nodes[static_cast<size_t>(a.first)].size();
+      if (a.first == b.first && ((a.second + 1) % m == b.second || (b.second + 1) % m == a.second)) continue;  // along a loop's edge
+      const int where = inside_region(region, line.far(0.5 * (node(a).t + node(b).t)));
+      if (where == 0) return FastVerdict::Unsure;
+      if (where == 1) cuts.push_back({a, b});
+    }
+  } else {
+    Point2 hit;
+    int hit_loop = 0;
+    size_t hit_edge = 0;
+    const FastVerdict end = fast_partial_end(region, cut.origin, cut.direction, &hit, &hit_loop, &hit_edge);
+    if (end != FastVerdict::Found) return end == FastVerdict::None ? FastVerdict::Done : FastVerdict::Unsure;
+    for (int k = 0; k < loops; ++k) {
+      for (const Point2& p : region.loop(k)) nodes[static_cast<size_t>(k)].push_back({p, 0.0, false});
+    }
+    // The origin: a vertex, or a point within a quantum of an edge (inserted there).
+    std::pair<int, size_t> from{-1, 0};
+    for (int k = 0; k < loops && from.first < 0; ++k) {
+      const Ring& ring = region.loop(k);
+      for (size_t i = 0; i < ring.size(); ++i) {
+        if (ring[i] == cut.origin) {
+          from = {k, i};
+          break;
+        }
+      }
+    }
+    std::pair<int, size_t> on_edge{-1, 0};
+    if (from.first < 0) {
+      double nearest = q * q;
+      for (int k = 0; k < loops; ++k) {
+        const Ring& ring = region.loop(k);
+        for (size_t i = 0; i < ring.size(); ++i) {
+          const double d = segment_distance_squared(cut.origin, ring[i], ring[(i + 1) % ring.size()]);
+          if (d <= nearest) {
+            nearest = d;
+            on_edge = {k, i};
+          }
+        }
+      }
+      if (on_edge.first < 0) return FastVerdict::Unsure;
+    }
+    // The end: a vertex of its edge, or inserted into it.
+    const Ring& hit_ring = region.loop(hit_loop);
+    std::pair<int, size_t> to{hit_loop, hit_edge};
+    const bool hit_vertex = hit == hit_ring[hit_edge] || hit == hit_ring[(hit_edge + 1) % hit_ring.size()];
+    if (hit_vertex) to.second = hit == hit_ring[hit_edge] ? hit_edge : (hit_edge + 1) % hit_ring.size();
+    // Insert the later index first in a shared loop, so that the earlier stays valid.
+    struct Insert {
+      int loop;
+      size_t after;
+      Point2 point;
+      bool is_origin;
+    };
+    std::vector<Insert> inserts;
+    if (from.first < 0) inserts.push_back({on_edge.first, on_edge.second, cut.origin, true});
+    if (!hit_vertex) inserts.push_back({hit_loop, hit_edge, hit, false});
+    if (inserts.size() == 2 && inserts[0].loop == inserts[1].loop && inserts[0].after == inserts[1].after) return FastVerdict::Unsure;
+    std::sort(inserts.begin(), inserts.end(), [](const Insert& a, const Insert& b) {
+      return a.loop != b.loop ? a.loop < b.loop : a.after > b.after;
+    });
+    for (const Insert& ins : inserts) {
+      auto& list = nodes[static_cast<size_t>(ins.loop)];
+      list.insert(list.begin() + static_cast<std::ptrdiff_t>(ins.after + 1), Node{ins.point, 0.0, true});
+    }
+    // Find both ends by their points in their loops now that the insertions are done.
+    auto find = [&](int k, Point2 p) -> std::pair<int, size_t> {
+      const auto& list = nodes[static_cast<size_t>(k)];
+      for (size_t i = 0; i < list.size(); ++i) {
+        if (list[i].point == p) return {k, i};
+      }
+      return {-1, 0};
+    };
+    const std::pair<int, size_t> a = find(from.first >= 0 ? from.first : on_edge.first, cut.origin), b = find(hit_loop, hit);
+    if (a.first < 0 || b.first < 0 || (a == b)) return FastVerdict::Unsure;
+    cuts.push_back({a, b});
+  }
+  if (cuts.empty()) return FastVerdict::Done;
+
+  // The planar graph: node ids per loop, edges along the loops (region on their left) and chords
+  // both ways.
+  std::vector<size_t> offset(static_cast<size_t>(loops) + 1, 0);
+  for (int k = 0; k < loops; ++k) offset[static_cast<size_t>(k) + 1] = offset[static_cast<size_t>(k)] + nodes[static_cast<size_t>(k)].size();
+  const size_t count = offset.back();
+  std::vector<Point2> point(count);
+  for (int k = 0; k < loops; ++k) {
+    for (size_t i = 0; i < nodes[static_cast<size_t>(k)].size(); ++i) point[offset[static_cast<size_t>(k)] + i] = nodes[static_cast<size_t>(k)][i].point;
+  }
+  struct Edge {
+    size_t from, to;
+    int chord;  // -1 along a loop, else the chord's number
+  };
+  std::vector<Edge> edges;
+  for (int k = 0; k < loops; ++k) {
+    const size_t m = nodes[static_cast<size_t>(k)].size();
+    for (size_t i = 0; i < m; ++i) edges.push_back({offset[static_cast<size_t>(k)] + i, offset[static_cast<size_t>(k)] + (i + 1) % m, -1});
+  }
+  for (size_t c = 0; c < cuts.size(); ++c) {
+    const size_t a = offset[static_cast<size_t>(cuts[c].first.first)] + cuts[c].first.second;
+    const size_t b = offset[static_cast<size_t>(cuts[c].second.first)] + cuts[c].second.second;
+    if (point[a] == point[b]) return FastVerdict::Unsure;
+    edges.push_back({a, b, static_cast<int>(c)});
+    edges.push_back({b, a, static_cast<int>(c)});
+    chords->push_back({point[a], point[b]});
+  }
+  std::vector<std::vector<size_t>> out(count);
+  std::vector<double> angle(edges.size());
+  for (size_t e = 0; e < edges.size(); ++e) {
+    const Point2 u = point[edges[e].from], v = point[edges[e].to];
+    if (u == v) return FastVerdict::Unsure;
+    angle[e] = std::atan2(v.y - u.y, v.x - u.x);
+    out[edges[e].from].push_back(e);
+  }
+  // The next edge of the cycle on the left of e: at e's end, the first outgoing edge clockwise from
+  // the way back.
+  auto next = [&](size_t e) {
+    const Point2 u = point[edges[e].from], v = point[edges[e].to];
+    const double back = std::atan2(u.y - v.y, u.x - v.x);
+    size_t best = edges.size();
+    double best_turn = 0.0;
+    for (size_t f : out[edges[e].to]) {
+      double turn = std::fmod(back - angle[f] + 4.0 * M_PI, 2.0 * M_PI);
+      if (turn <= 0.0) turn = 2.0 * M_PI;  // straight back: only when nothing else
+      if (best == edges.size() || turn < best_turn) {
+        best = f;
+        best_turn = turn;
+      }
+    }
+    return best;
+  };
+  std::vector<bool> used(edges.size(), false);
+  std::vector<Ring> outers, holes;
+  for (size_t first = 0; first < edges.size(); ++first) {
+    if (used[first]) continue;
+    Ring cycle;
+    std::vector<int> chord_uses(cuts.size(), 0);
+    size_t e = first, steps = 0;
+    do {
+      if (e == edges.size() || used[e] || ++steps > edges.size()) return FastVerdict::Unsure;
+      used[e] = true;
+      cycle.push_back(point[edges[e].from]);
+      if (edges[e].chord >= 0 && ++chord_uses[static_cast<size_t>(edges[e].chord)] == 2) {
+        // A slit: the cut separates nothing.
+        pieces->clear();
+        chords->clear();
+        return FastVerdict::Done;
+      }
+      e = next(e);
+    } while (e != first);
+    const double area = signed_area(cycle);
+    if (area > 0.0) outers.push_back(std::move(cycle));
+    else if (area < 0.0) holes.push_back(std::move(cycle));
+  }
+  // Each hole goes to the piece whose outer loop holds its first vertex.
+  std::vector<std::vector<Ring>> piece_holes(outers.size());
+  for (Ring& hole : holes) {
+    size_t owner = outers.size();
+    for (size_t k = 0; k < outers.size() && owner == outers.size(); ++k) {
+      std::vector<FPoint> loop;
+      for (const Point2& p : outers[k]) loop.push_back(fast(p));
+      for (const Point2& v : hole) {
+        const CGAL::Bounded_side side = CGAL::bounded_side_2(loop.begin(), loop.end(), fast(v), FastKernel());
+        if (side == CGAL::ON_BOUNDED_SIDE) owner = k;
+        if (side != CGAL::ON_BOUNDARY) break;
+      }
+    }
+    if (owner == outers.size()) return FastVerdict::Unsure;
+    piece_holes[owner].push_back(std::move(hole));
+  }
+  for (size_t k = 0; k < outers.size(); ++k) {
+    Region piece(outers[k], piece_holes[k], q);
+    if (piece.is_empty()) continue;
+    if (!piece.holes().empty() && loops_touch(piece)) {
+      pieces->clear();
+      chords->clear();
+      return FastVerdict::Done;
+    }
+    pieces->push_back(std::move(piece));
+  }
+  return FastVerdict::Done;
+}
+
+// The partial cut of a region without holes: the chord from the origin to the exact end splits its
+// one loop into two chains (no arrangement needed). Returns false when the origin is not on the loop.
+bool split_simple(const Region& region, const RegionCut& cut, std::vector<Region>* pieces, Chord* chord) {
+  const Ring& ring = region.outer();
+  const size_t n = ring.size();
+  const double q = region.quantum();
+  size_t eh = 0;
+  Point2 hit;
+  int hit_loop = 0;
+  const FastVerdict verdict = fast_partial_end(region, cut.origin, cut.direction, &hit, &hit_loop, &eh);
+  if (verdict == FastVerdict::None) {
+    pieces->clear();
+    return true;
+  }
+  if (verdict == FastVerdict::Unsure) {
+    KPoint end;
+    if (!exact_partial_end(region, cut.origin, cut.direction, &end, &eh)) {
+      pieces->clear();
+      return true;
+    }
+    hit = rounded(end, q);
+  }
   // The edge the origin lies on (a vertex: the edge it starts).
   size_t eo = n;
   double nearest = q;
@@ -192,7 +693,6 @@ bool split_simple(const Region& region, const RegionCut& cut, std::vector<Region
     }
   }
   if (eo == n || eo == eh) return false;
-  const Point2 hit = rounded(end, q);
   Ring a{cut.origin}, b{hit};
   for (size_t k = (eo + 1) % n;; k = (k + 1) % n) {
     a.push_back(ring[k]);
@@ -250,7 +750,7 @@ bool acceptable(const Region& region, const std::vector<Region>& pieces, const s
     for (const Point2& v : region.loop(k)) {
       for (const Chord& c : chords) {
         if ((v.x == c.a.x && v.y == c.a.y) || (v.x == c.b.x && v.y == c.b.y)) continue;
-        if (segment_distance(v, c.a, c.b) <= 2.0 * q) return false;
+        if (segment_distance_squared(v, c.a, c.b) <= 4.0 * q * q) return false;
       }
     }
   }
@@ -315,18 +815,40 @@ CutOutcome cut_region_by_arrangement(const Region& region, const RegionCut& cut)
     outcome.chords.push_back({rounded(edge->source()->point(), q), rounded(edge->target()->point(), q)});
   }
   if (!acceptable(region, outcome.pieces, outcome.chords, cut.forced)) return unchanged;
+  canonical_chords(&outcome.chords);
   return outcome;
 }
 
+
 CutOutcome cut_region(const Region& region, const RegionCut& cut) {
   if (region.is_empty()) throw std::invalid_argument("cut_region: empty region");
-  if (cut.kind == CutKind::Partial && region.holes().empty() && std::hypot(cut.direction.x, cut.direction.y) > 0.0) {
+  const bool simple = region.holes().empty() && std::hypot(cut.direction.x, cut.direction.y) > 0.0;
+  if (simple && cut.kind == CutKind::Partial) {
     CutOutcome outcome;
     Chord chord;
     if (split_simple(region, cut, &outcome.pieces, &chord)) {
       if (outcome.pieces.size() < 2 || !acceptable(region, outcome.pieces, {chord}, cut.forced)) return {{region}, {}};
       std::sort(outcome.pieces.begin(), outcome.pieces.end(), lower_left);
       outcome.chords.push_back(chord);
+      canonical_chords(&outcome.chords);
+      return outcome;
+    }
+  }
+  if (simple && cut.kind == CutKind::Full) {
+    CutOutcome outcome;
+    if (fast_full_cut(region, cut.origin, cut.direction, &outcome.pieces, &outcome.chords) == FastVerdict::Done) {
+      if (outcome.pieces.size() < 2 || !acceptable(region, outcome.pieces, outcome.chords, cut.forced)) return {{region}, {}};
+      std::sort(outcome.pieces.begin(), outcome.pieces.end(), lower_left);
+      canonical_chords(&outcome.chords);
+      return outcome;
+    }
+  }
+  if (!region.holes().empty() && std::hypot(cut.direction.x, cut.direction.y) > 0.0) {
+    CutOutcome outcome;
+    if (fast_cut_with_holes(region, cut, &outcome.pieces, &outcome.chords) == FastVerdict::Done) {
+      if (outcome.pieces.size() < 2 || !acceptable(region, outcome.pieces, outcome.chords, cut.forced)) return {{region}, {}};
+      std::sort(outcome.pieces.begin(), outcome.pieces.end(), lower_left);
+      canonical_chords(&outcome.chords);
       return outcome;
     }
   }

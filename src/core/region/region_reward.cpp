@@ -51,8 +51,8 @@ double region_cut_reward(RewardPreset preset, const CutOutcome& outcome, double 
 }
 
 double region_template_reward(RewardPreset preset, const Region& part, double face_size) {
+  if (preset == RewardPreset::Mesh) return -static_cast<double>(template_quad_count(part) - 1) - kTemplatePenalty;
   const auto quads = template_quads(part);
-  if (preset == RewardPreset::Mesh) return -static_cast<double>(quads.size() - 1) - kTemplatePenalty;
   const double scale = 1.0 / (face_size * face_size);
   std::vector<double> areas, ratios;
   for (const auto& q : quads) {

@@ -54,7 +54,7 @@ void check_decomposition(const Region& face, const RegionDecomposition& d, std::
     if (f.is_template) {
       CHECK(template_applies(f.region));
     } else {
-      CHECK(is_block(f.region));
+      CHECK(is_block(f.region, d.rules));  // by the rules the decomposition ran with (face-adaptive for the mesh preset)
     }
   }
   // Each cut moves its new points by at most q / sqrt(2) (region.h).
