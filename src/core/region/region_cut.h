@@ -5,9 +5,11 @@
 //   partial  the ray from `origin` along `direction`, ending at the first boundary it meets (a
 //            T-junction there): the region is cut along that one segment.
 // `origin` is a point on the region's boundary (a vertex, or a point on an edge); `direction` is any
-// non-zero vector, so the angle is a real number. The split is computed exactly (CGAL's exact
-// kernel, an arrangement of the boundary and the cut) and the pieces are rounded to the region's
-// lattice (see region.h). A cut that separates nothing (it misses the interior, runs along the
+// non-zero vector, so the angle is a real number. The split is decided by exact predicates and
+// the pieces are rounded to the region's lattice (see region.h): a fast path on doubles (CGAL's
+// exact predicates, crossings rounded to the lattice, exact constructions where that rounding is in
+// doubt, a vertex within half a quantum of the cut line on it; region_cut.cpp) and, for whatever
+// it cannot call, an arrangement of the boundary and the cut in CGAL's exact kernel. A cut that separates nothing (it misses the interior, runs along the
 // boundary, or only joins the outer boundary to a hole, leaving a slit) changes nothing: the result
 // is the region itself, N = 1. So does a cut that would leave a piece whose hole comes within one
 // quantum of another of its loops (a cut nearly, but not exactly, along a hole's edge): rounding
@@ -52,9 +54,9 @@ struct CutOutcome {
 };
 
 // Inputs:  region (not empty); cut, its origin on or near the region's boundary.
-// Outputs: the pieces and the chords, as above. A partial cut of a region without holes splits its
-//          loop in two at the chord's exact ends (fast); every other cut goes through the
-//          arrangement (cut_region_by_arrangement).
+// Outputs: the pieces and the chords (in a canonical order: each from its lexicographically smaller
+//          end, sorted), as above. The fast path splits the loops along the chords without an
+//          arrangement; what it cannot call goes through cut_region_by_arrangement.
 CutOutcome cut_region(const Region& region, const RegionCut& cut);
 
 // The same by the arrangement for every cut (the general path; tests compare the two).
