@@ -257,6 +257,9 @@ void run_set(const std::string& title, int count, int min_rects, int max_rects, 
   for (const std::string& method : methods) print_row(method, samples[method]);
 }
 
+// With --keep: the folder where every general face and its report are kept (for reading the worst).
+std::string keep_folder, keep_tag;
+
 // `autoblock mesh` on a general face, as a user runs it (the whole process), its figures from --json.
 Sample cli_sample(const Face& f, const std::string& autoblock, const std::string& folder, int k) {
   const std::string json = folder + "/report" + std::to_string(k) + ".json";
@@ -281,6 +284,11 @@ Sample cli_sample(const Face& f, const std::string& autoblock, const std::string
   }
   std::ifstream in(json);
   const nlohmann::json r = nlohmann::json::parse(in);
+  if (!keep_folder.empty()) {
+    const std::string name = keep_folder + "/" + keep_tag + "-face" + std::to_string(k);
+    std::filesystem::copy_file(f.brep, name + ".brep", std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::copy_file(json, name + ".json", std::filesystem::copy_options::overwrite_existing);
+  }
   s.seconds = r["seconds"].get<double>();
   s.min_sj = r["quality"]["min_scaled_jacobian"].get<double>();
   s.mean_sj = r["quality"]["mean_scaled_jacobian"].get<double>();
@@ -329,6 +337,8 @@ void print_general_row(const std::string& method, const std::vector<Sample>& sam
 void run_general_set(const std::string& title, const std::vector<GeneralOptions>& kinds, int count, std::uint64_t seed,
                      const std::string& autoblock, const std::string& folder) {
   std::mt19937_64 rng(seed);
+  keep_tag = "seed" + std::to_string(seed);
+  if (!keep_folder.empty()) std::filesystem::create_directories(keep_folder);
   std::vector<Face> faces;
   for (int k = 0; k < count; ++k) {
     const GeneralShape shape = generate_general_shape(rng, kinds[static_cast<size_t>(k) % kinds.size()]);
@@ -388,6 +398,7 @@ int main(int argc, char** argv) {
   app.add_flag("--general", general,
                "general faces instead (edges at any angle): --small polygons of 5-12 vertices, --large of 13-40, a "
                "quarter with holes, and --chamfered chamfered unions of rectangles; AutoBlock runs as `autoblock mesh`");
+  app.add_option("--keep", keep_folder, "with --general: keep every face (.brep) and AutoBlock's report (.json) in this folder");
   app.add_option("--chamfered", chamfered_count, "with --general: chamfered unions of 2-6 rectangles (default: as many as --small)");
   CLI11_PARSE(app, argc, argv);
   try {
