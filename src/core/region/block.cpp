@@ -121,10 +121,6 @@ std::vector<size_t> template_corners(const Ring& ring, const BlockRules& rules) 
 
 }  // namespace
 
-size_t template_quad_count(const Region& region, const BlockRules& rules) {
-  return template_corners(region.outer(), rules).size();
-}
-
 std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& rules) {
   const Ring& ring = region.outer();
   const size_t n = ring.size();

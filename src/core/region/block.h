@@ -51,11 +51,6 @@ bool template_applies(const Region& region);
 //          here give as chords.
 std::vector<std::array<Point2, 4>> template_quads(const Region& region, const BlockRules& rules = {});
 
-// Inputs:  region, convex (template_applies); rules.
-// Outputs: the number of the template's quadrilaterals (its corners: the region's vertices that are
-//          not side vertices, or all of them when fewer than three are corners), without building them.
-size_t template_quad_count(const Region& region, const BlockRules& rules = {});
-
 // A four-sided piece of a finished part: its loop (counter-clockwise, side vertices included) and
 // the positions of its four corners in the loop, in order. A block is one piece; a template is one
 // piece per corner of the part.

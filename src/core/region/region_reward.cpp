@@ -51,8 +51,21 @@ double region_cut_reward(RewardPreset preset, const CutOutcome& outcome, double 
 }
 
 double region_template_reward(RewardPreset preset, const Region& part, double face_size) {
-  if (preset == RewardPreset::Mesh) return -static_cast<double>(template_quad_count(part) - 1) - kTemplatePenalty;
   const auto quads = template_quads(part);
+  if (preset == RewardPreset::Mesh) {
+    // The shape term for the corners the template creates (at its feet and its centre; the part's
+    // own corners were paid for by the cuts that made them, or are the face's).
+    double j_new = 1.0;
+    for (const auto& q : quads) {
+      for (size_t k = 1; k < 4; ++k) {
+        const Point2 v = q[k], next = q[(k + 1) % 4], prev = q[(k + 3) % 4];
+        const double ax = next.x - v.x, ay = next.y - v.y, bx = prev.x - v.x, by = prev.y - v.y;
+        const double length = std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by));
+        j_new = std::min(j_new, length > 0.0 ? (ax * by - ay * bx) / length : -1.0);
+      }
+    }
+    return -static_cast<double>(quads.size() - 1) - kTemplatePenalty - kMeshShapeWeight * (1.0 - j_new);
+  }
   const double scale = 1.0 / (face_size * face_size);
   std::vector<double> areas, ratios;
   for (const auto& q : quads) {

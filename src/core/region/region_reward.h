@@ -10,7 +10,10 @@
 // 180 degrees, do not count): 1 when the cut meets the boundary at right angles, near 0 for a
 // sliver. The face's own corners are not the cut's doing and do not count.
 // Finishing a convex part with the template (block.h) is an action too: it earns Eq. (1)
-// over its n quads minus kTemplatePenalty (paper), or -(n - 1) - kTemplatePenalty (mesh).
+// over its n quads minus kTemplatePenalty (paper), or -(n - 1) - kTemplatePenalty - kMeshShapeWeight
+// (1 - J_new) (mesh), J_new the smallest sine of its quads' corners at the feet and the centre (the
+// corners it creates; a quad's corner at the centre is 180 degrees minus the part's corner, so a
+// template on a part with a sharp or a nearly flat corner pays for it).
 #pragma once
 
 #include <vector>
