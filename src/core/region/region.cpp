@@ -112,6 +112,16 @@ double interior_angle(const Ring& ring, size_t i) {
   return angle;
 }
 
+bool is_reflex_vertex(const Ring& ring, size_t i) {
+  const size_t n = ring.size();
+  const Point2 p = ring[(i + n - 1) % n], v = ring[i], q = ring[(i + 1) % n];
+  const double ax = q.x - v.x, ay = q.y - v.y, bx = p.x - v.x, by = p.y - v.y;
+  const double cross = ax * by - ay * bx, dot = ax * bx + ay * by;
+  // interior_angle is atan2(cross, dot) taken into (0, 2 pi]: above pi for a negative cross
+  // product, and 2 pi for a spike (cross 0, dot > 0); exactly pi for cross 0, dot < 0.
+  return cross < 0.0 || (cross == 0.0 && dot >= 0.0);
+}
+
 Point2 ring_centroid(const Ring& ring) {
   double a = 0.0, cx = 0.0, cy = 0.0;
   const size_t n = ring.size();

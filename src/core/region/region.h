@@ -80,6 +80,10 @@ Ring canonical_ring(const Ring& ring, double quantum);
 //         vertex in radians, (0, 2 pi), for the region on the ring's left.
 double interior_angle(const Ring& ring, size_t i);
 
+// Inputs: ring, its vertex number i. Output: interior_angle(ring, i) > pi, decided by the sign of a
+//         cross product (no trigonometry).
+bool is_reflex_vertex(const Ring& ring, size_t i);
+
 // Inputs: point x, segment a-b. Output: the distance from x to the segment.
 double segment_distance(Point2 x, Point2 a, Point2 b);
 // The same, squared (no square root: for comparisons on hot paths).

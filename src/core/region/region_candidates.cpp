@@ -44,7 +44,7 @@ Complexity part_complexity(const Region& part, const BlockRules& rules) {
     const Ring& ring = part.loop(k);
     for (size_t i = 0; i < ring.size(); ++i) {
       if (is_side_vertex(ring, i, rules)) continue;
-      if (interior_angle(ring, i) > M_PI) ++c.reflex;
+      if (is_reflex_vertex(ring, i)) ++c.reflex;
       ++c.corners;
     }
   }
@@ -52,8 +52,11 @@ Complexity part_complexity(const Region& part, const BlockRules& rules) {
 }
 
 bool makes_progress(const Region& part, const std::vector<Region>& pieces, const BlockRules& rules) {
+  return makes_progress(part_complexity(part, rules), pieces, rules);
+}
+
+bool makes_progress(const Complexity& before, const std::vector<Region>& pieces, const BlockRules& rules) {
   if (pieces.size() < 2) return false;
-  const Complexity before = part_complexity(part, rules);
   for (const Region& piece : pieces) {
     if (!(part_complexity(piece, rules) < before) && !is_block(piece, rules)) return false;
   }
@@ -127,7 +130,7 @@ RegionAction progress_action(const Region& part, const BlockRules& rules) {
   const size_t m = ring.size();
   if (part.holes().empty()) {
     for (size_t i = 0; i < m; ++i) {
-      if (interior_angle(ring, i) <= M_PI) continue;
+      if (!is_reflex_vertex(ring, i)) continue;
       const Point2 p = ring[(i + m - 1) % m], v = ring[i], n = ring[(i + 1) % m];
       tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - p.x, v.y - p.y}}});
       tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - n.x, v.y - n.y}}});

@@ -39,6 +39,8 @@ Complexity part_complexity(const Region& part, const BlockRules& rules = {});
 
 // Inputs: part; pieces, what a cut of it left; rules. Output: true when the cut makes progress.
 bool makes_progress(const Region& part, const std::vector<Region>& pieces, const BlockRules& rules = {});
+// The same with the part's complexity given (scoring many cuts of one part computes it once).
+bool makes_progress(const Complexity& part, const std::vector<Region>& pieces, const BlockRules& rules = {});
 
 // Inputs:  part, not finished (not a block under rules).
 // Outputs: an action that makes progress towards blocks, for policies that must finish: while the

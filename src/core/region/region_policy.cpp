@@ -16,6 +16,7 @@ std::unique_lock<std::mutex> lock_general_engine() {
 std::vector<ScoredAction> score_candidates(const Region& part, double face_size, const RegionEpisodeOptions& options,
                                           const std::chrono::steady_clock::time_point* deadline) {
   std::vector<ScoredAction> scored;
+  const Complexity complexity = part_complexity(part, options.rules);
   for (const RegionAction& action : region_candidates(part)) {
     if (deadline && !scored.empty() && std::chrono::steady_clock::now() > *deadline) break;
     ScoredAction s{action, {}, 0.0};
@@ -24,7 +25,7 @@ std::vector<ScoredAction> score_candidates(const Region& part, double face_size,
       s.reward = region_template_reward(options.reward, part, face_size);
     } else {
       s.outcome = cut_region(part, action.cut);
-      if (!makes_progress(part, s.outcome.pieces, options.rules)) continue;
+      if (!makes_progress(complexity, s.outcome.pieces, options.rules)) continue;
       s.reward = region_cut_reward(options.reward, s.outcome, face_size, options.rules);
     }
     scored.push_back(std::move(s));
