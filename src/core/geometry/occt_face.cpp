@@ -1,11 +1,14 @@
 #include "core/geometry/occt_face.h"
 
+#include "core/geometry/occt_properties.h"
+
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
+#include <TopLoc_Location.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
@@ -246,7 +249,11 @@ TopoDS_Shape shape_to_model(const TopoDS_Shape& shape, const Placement& frame) {
   if (frame.identity()) return shape;
   BRepBuilderAPI_Transform move(shape, frame.to_model(), true);
   if (!move.IsDone()) throw std::runtime_error("OpenCASCADE could not carry a shape back into the model");
-  return move.Shape();
+  if (occt_shape_valid(move.Shape()) || !occt_shape_valid(shape)) return move.Shape();
+  // Copying the geometry through the rotation can leave an edge whose tolerance no longer covers
+  // its vertices (a general face's cut ends lie a lattice step apart): the shape moved by a
+  // location instead keeps its geometry, and so its validity.
+  return shape.Moved(TopLoc_Location(frame.to_model()));
 }
 
 TopoDS_Face occt_face_from_polygon(const RectilinearPolygon& polygon, double z, bool normal_up) {

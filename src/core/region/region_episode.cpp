@@ -36,7 +36,7 @@ CutOutcome RegionEpisode::outcome_of(const RegionAction& action) const {
 }
 
 double RegionEpisode::reward_of(const RegionAction& action, const CutOutcome& outcome) const {
-  if (action.kind == RegionAction::Kind::Template) return region_template_reward(options_.reward, current_part(), face_size_);
+  if (action.kind == RegionAction::Kind::Template) return region_template_reward(options_.reward, current_part(), face_size_, options_.rules);
   return region_cut_reward(options_.reward, outcome, face_size_, options_.rules);
 }
 

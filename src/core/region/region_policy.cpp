@@ -22,7 +22,7 @@ std::vector<ScoredAction> score_candidates(const Region& part, double face_size,
     ScoredAction s{action, {}, 0.0};
     if (action.kind == RegionAction::Kind::Template) {
       s.outcome = {{part}, {}};
-      s.reward = region_template_reward(options.reward, part, face_size);
+      s.reward = region_template_reward(options.reward, part, face_size, options.rules);
     } else {
       s.outcome = cut_region(part, action.cut);
       if (!makes_progress(complexity, s.outcome.pieces, options.rules)) continue;

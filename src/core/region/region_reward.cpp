@@ -50,13 +50,18 @@ double region_cut_reward(RewardPreset preset, const CutOutcome& outcome, double 
   return equation_one(areas, ratios, blocks);
 }
 
-double region_template_reward(RewardPreset preset, const Region& part, double face_size) {
+double region_template_reward(RewardPreset preset, const Region& part, double face_size, const BlockRules& rules) {
   const auto quads = template_quads(part);
   if (preset == RewardPreset::Mesh) {
-    // The shape term for the corners the template creates (at its feet and its centre; the part's
-    // own corners were paid for by the cuts that made them, or are the face's).
+    // The shape term for the corners the template creates (at its feet and its centre) and for the
+    // part's corners it keeps whole that a block could not have (above the rules' largest corner;
+    // the part's other corners were paid for by the cuts that made them, or are the face's).
     double j_new = 1.0;
     for (const auto& q : quads) {
+      const Point2 corner = q[0], next = q[1], prev = q[3];
+      const double ux = next.x - corner.x, uy = next.y - corner.y, wx = prev.x - corner.x, wy = prev.y - corner.y;
+      const double angle = std::atan2(ux * wy - uy * wx, ux * wx + uy * wy) * 180.0 / M_PI;
+      if (angle > rules.max_corner_degrees) j_new = std::min(j_new, std::sin(angle * M_PI / 180.0));
       for (size_t k = 1; k < 4; ++k) {
         const Point2 v = q[k], next = q[(k + 1) % 4], prev = q[(k + 3) % 4];
         const double ax = next.x - v.x, ay = next.y - v.y, bx = prev.x - v.x, by = prev.y - v.y;

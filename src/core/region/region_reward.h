@@ -13,7 +13,8 @@
 // over its n quads minus kTemplatePenalty (paper), or -(n - 1) - kTemplatePenalty - kMeshShapeWeight
 // (1 - J_new) (mesh), J_new the smallest sine of its quads' corners at the feet and the centre (the
 // corners it creates; a quad's corner at the centre is 180 degrees minus the part's corner, so a
-// template on a part with a sharp or a nearly flat corner pays for it).
+// template on a part with a sharp or a nearly flat corner pays for it) and at the part's corners
+// larger than a block may have (kept whole in one quad).
 #pragma once
 
 #include <vector>
@@ -32,7 +33,9 @@ constexpr double kTemplatePenalty = 2.0;
 // Outputs: the preset's reward for the cut.
 double region_cut_reward(RewardPreset preset, const CutOutcome& outcome, double face_size, const BlockRules& rules = {});
 
-// Inputs: preset; part, convex; face_size. Output: the reward of finishing it with the template.
-double region_template_reward(RewardPreset preset, const Region& part, double face_size);
+// Inputs: preset; part, convex; face_size; rules, what a block is (a corner above its largest a
+//         template keeps whole in one quad, and pays for). Output: the reward of finishing it with
+//         the template.
+double region_template_reward(RewardPreset preset, const Region& part, double face_size, const BlockRules& rules = {});
 
 }  // namespace autoblock

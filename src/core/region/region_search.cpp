@@ -22,7 +22,7 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
     best.action = progress_action(part, options.rules);
     // Nothing listed makes progress: the fallback action, valued like any other.
     if (best.action.kind == RegionAction::Kind::Template) {
-      best.value = region_template_reward(options.reward, part, face_size);
+      best.value = region_template_reward(options.reward, part, face_size, options.rules);
     } else {
       const CutOutcome outcome = cut_region(part, best.action.cut);
       best.value = region_cut_reward(options.reward, outcome, face_size, options.rules);

@@ -42,3 +42,25 @@ TEST_CASE("the mesh preset charges the sharp corners a cut creates", "[region][r
   const Region triangle(Ring{{0, 0}, {4, 0}, {0, 4}}, {}, 1e-7);
   CHECK(region_template_reward(RewardPreset::Mesh, triangle, 4.0) < -1.0);
 }
+
+TEST_CASE("the mesh preset charges a template for the corners it makes and the obtuse ones it keeps", "[region][reward]") {
+  constexpr double kQ = 1e-7;
+  // A square's template: four quads with right angles at the feet and the centre, nothing to charge
+  // beyond the template's own cost.
+  const Region square(Ring{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {}, kQ);
+  CHECK(region_template_reward(RewardPreset::Mesh, square, 2.0) == Approx(-3.0 - kTemplatePenalty));
+  // A quadrilateral with a 155-degree corner: its quad there keeps the whole 155 degrees (sine 0.42),
+  // which a block may not have under rules whose largest corner is 129 degrees, and its centre corner
+  // is small: charged under both rules, more when the obtuse corner counts.
+  const double t = 155.0 * M_PI / 180.0;
+  const Region kite(Ring{{0, 0}, {4, 0}, {4 + 2 * std::cos(M_PI - t), 2 * std::sin(M_PI - t)}, {0, 3}}, {}, kQ);
+  BlockRules loose, strict;
+  loose.max_corner_degrees = 170.0;
+  strict.max_corner_degrees = 129.0;
+  const double with_loose = region_template_reward(RewardPreset::Mesh, kite, 4.0, loose);
+  const double with_strict = region_template_reward(RewardPreset::Mesh, kite, 4.0, strict);
+  CHECK(with_loose < -3.0 - kTemplatePenalty);
+  CHECK(with_strict <= with_loose);
+  // The paper preset (Eq. 1) ignores the rules' angles.
+  CHECK(region_template_reward(RewardPreset::Paper, kite, 4.0, loose) == Approx(region_template_reward(RewardPreset::Paper, kite, 4.0, strict)));
+}
