@@ -757,6 +757,15 @@ bool acceptable(const Region& region, const std::vector<Region>& pieces, const s
   return true;
 }
 
+// The outcome of a cut, whichever path split the region: the region itself when the cut separates
+// nothing or is not acceptable; else the pieces in lower-left order and the chords in canonical order.
+CutOutcome finished_outcome(const Region& region, CutOutcome outcome, bool forced) {
+  if (outcome.pieces.size() < 2 || !acceptable(region, outcome.pieces, outcome.chords, forced)) return {{region}, {}};
+  std::sort(outcome.pieces.begin(), outcome.pieces.end(), lower_left);
+  canonical_chords(&outcome.chords);
+  return outcome;
+}
+
 }  // namespace
 
 CutOutcome cut_region_by_arrangement(const Region& region, const RegionCut& cut) {
@@ -804,7 +813,6 @@ CutOutcome cut_region_by_arrangement(const Region& region, const RegionCut& cut)
     outcome.pieces.push_back(std::move(piece));
   }
   if (outcome.pieces.size() < 2) return unchanged;
-  std::sort(outcome.pieces.begin(), outcome.pieces.end(), lower_left);
   // The chords: cut edges with the interior on at least one side.
   for (auto edge = arrangement.edges_begin(); edge != arrangement.edges_end(); ++edge) {
     const auto& data = edge->curve().data();
@@ -814,43 +822,25 @@ CutOutcome cut_region_by_arrangement(const Region& region, const RegionCut& cut)
     if (edge->face()->is_unbounded() && edge->twin()->face()->is_unbounded()) continue;
     outcome.chords.push_back({rounded(edge->source()->point(), q), rounded(edge->target()->point(), q)});
   }
-  if (!acceptable(region, outcome.pieces, outcome.chords, cut.forced)) return unchanged;
-  canonical_chords(&outcome.chords);
-  return outcome;
+  return finished_outcome(region, std::move(outcome), cut.forced);
 }
 
 
 CutOutcome cut_region(const Region& region, const RegionCut& cut) {
   if (region.is_empty()) throw std::invalid_argument("cut_region: empty region");
-  const bool simple = region.holes().empty() && std::hypot(cut.direction.x, cut.direction.y) > 0.0;
-  if (simple && cut.kind == CutKind::Partial) {
+  if (std::hypot(cut.direction.x, cut.direction.y) > 0.0) {
     CutOutcome outcome;
-    Chord chord;
-    if (split_simple(region, cut, &outcome.pieces, &chord)) {
-      if (outcome.pieces.size() < 2 || !acceptable(region, outcome.pieces, {chord}, cut.forced)) return {{region}, {}};
-      std::sort(outcome.pieces.begin(), outcome.pieces.end(), lower_left);
-      outcome.chords.push_back(chord);
-      canonical_chords(&outcome.chords);
-      return outcome;
+    bool done = false;
+    if (!region.holes().empty()) {
+      done = fast_cut_with_holes(region, cut, &outcome.pieces, &outcome.chords) == FastVerdict::Done;
+    } else if (cut.kind == CutKind::Full) {
+      done = fast_full_cut(region, cut.origin, cut.direction, &outcome.pieces, &outcome.chords) == FastVerdict::Done;
+    } else {
+      Chord chord;
+      done = split_simple(region, cut, &outcome.pieces, &chord);
+      if (done && outcome.pieces.size() >= 2) outcome.chords.push_back(chord);
     }
-  }
-  if (simple && cut.kind == CutKind::Full) {
-    CutOutcome outcome;
-    if (fast_full_cut(region, cut.origin, cut.direction, &outcome.pieces, &outcome.chords) == FastVerdict::Done) {
-      if (outcome.pieces.size() < 2 || !acceptable(region, outcome.pieces, outcome.chords, cut.forced)) return {{region}, {}};
-      std::sort(outcome.pieces.begin(), outcome.pieces.end(), lower_left);
-      canonical_chords(&outcome.chords);
-      return outcome;
-    }
-  }
-  if (!region.holes().empty() && std::hypot(cut.direction.x, cut.direction.y) > 0.0) {
-    CutOutcome outcome;
-    if (fast_cut_with_holes(region, cut, &outcome.pieces, &outcome.chords) == FastVerdict::Done) {
-      if (outcome.pieces.size() < 2 || !acceptable(region, outcome.pieces, outcome.chords, cut.forced)) return {{region}, {}};
-      std::sort(outcome.pieces.begin(), outcome.pieces.end(), lower_left);
-      canonical_chords(&outcome.chords);
-      return outcome;
-    }
+    if (done) return finished_outcome(region, std::move(outcome), cut.forced);
   }
   return cut_region_by_arrangement(region, cut);
 }
