@@ -76,6 +76,7 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
     std::unique_ptr<RegionPolicy> policy = general_policy(settings.policy, settings.policy_settings);
     RegionEpisodeOptions options;
     options.max_steps = settings.max_steps;
+    options.corner_fraction = settings.corner_fraction;
     // The policy's own preset, as on the grid: mesh for auto and search, paper for the baselines.
     const bool searching = policy->name() == "search";
     options.reward = !settings.reward.empty() ? reward_preset_by_name(settings.reward)

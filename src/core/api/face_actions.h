@@ -26,6 +26,8 @@ struct DecomposeSettings {
   PolicySettings policy_settings;
   int max_steps = 0;                           // 0: automatic (see EpisodeOptions)
   bool occt_blocks = true;                     // cut the blocks from the face with OpenCASCADE and merge them
+  double corner_fraction = kMeshCornerFraction;  // general faces, mesh preset: a block's corners within
+                                                 // [asin(f B), 180 - asin(f B)] degrees (block.h)
 };
 
 struct FaceDecomposition {

@@ -12,12 +12,34 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
   DecomposeSettings decompose = settings;
   decompose.occt_blocks = false;
   FaceMeshing out;
+  out.corner_fraction = settings.corner_fraction;
   out.decomposition = decompose_input_face(face, decompose);
   if (face.is_general()) {
-    const RegionDecomposition& d = out.decomposition.region;
     options.general.max_steps = settings.max_steps;
-    options.general.reward = d.reward;
-    out.result = mesh_region_decomposition(face, d, options);
+    options.general.reward = out.decomposition.region.reward;
+    options.general.corner_fraction = settings.corner_fraction;
+    out.result = mesh_region_decomposition(face, out.decomposition.region, options);
+    // A poor mesh from the search: other block rules may do better (a face whose good blocks need
+    // corners just outside the rules, or whose rules forbid the cut that matters).
+    auto ratio = [](const MeshResult& r) {
+      return r.conformity.conformal ? r.quality.min_scaled_jacobian / r.bound : -1e300;
+    };
+    const bool searched = out.decomposition.region.policy == "search";
+    for (const double fraction : kRetryFractions) {
+      if (!searched || ratio(out.result) >= kRetryBelow) break;
+      if (fraction == settings.corner_fraction) continue;
+      decompose.corner_fraction = fraction;
+      FaceDecomposition again = decompose_input_face(face, decompose);
+      MeshOptions retry = options;
+      retry.general.corner_fraction = fraction;  // the replay's block rules are the search's
+      MeshResult meshed = mesh_region_decomposition(face, again.region, retry);
+      ++out.attempts;
+      if (ratio(meshed) > ratio(out.result)) {
+        out.decomposition = std::move(again);
+        out.result = std::move(meshed);
+        out.corner_fraction = fraction;
+      }
+    }
   } else {
     const Decomposition& d = out.decomposition.decomposition;
     options.episode.max_steps = settings.max_steps;
@@ -42,8 +64,11 @@ FaceMeshing face_mesh_general(const InputFace& face, const std::vector<RegionAct
 }
 
 nlohmann::json face_meshing_json(const std::string& input, const FaceMeshing& m) {
-  return m.general() ? mesh_report_json(input, m.decomposition.region, m.result, m.seconds)
-                     : mesh_report_json(input, m.decomposition.decomposition, m.result, m.seconds);
+  if (!m.general()) return mesh_report_json(input, m.decomposition.decomposition, m.result, m.seconds);
+  nlohmann::json report = mesh_report_json(input, m.decomposition.region, m.result, m.seconds);
+  report["attempts"] = m.attempts;
+  report["corner_fraction"] = m.corner_fraction;
+  return report;
 }
 
 std::string face_meshing_svg(const FaceMeshing& m, const std::string& title) {

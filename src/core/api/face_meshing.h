@@ -16,6 +16,8 @@ struct FaceMeshing {
   FaceDecomposition decomposition;  // decomposition (rectilinear) or region (general); no OCCT blocks
   MeshResult result;
   double seconds = 0.0;             // decomposition and meshing, wall time
+  int attempts = 1;                 // a general face's decompositions tried (see mesh_input_face)
+  double corner_fraction = kMeshCornerFraction;  // the block rules of the one kept (face_actions.h)
   bool general() const { return decomposition.general(); }
   const std::string& policy() const {
     return general() ? decomposition.region.policy : decomposition.decomposition.policy;
@@ -29,8 +31,13 @@ struct FaceMeshing {
 //          mesh pipeline replays the cuts itself); options (size, fixed intervals, quad limit; the
 //          episode options are set from settings).
 // Outputs: the decomposition and its mesh, returned even when the conformity check fails (the caller
-//          reports it: FaceMeshing::result.conformity).
+//          reports it: FaceMeshing::result.conformity). A general face searched (auto, search) whose
+//          mesh stays below kRetryBelow of its bound is decomposed again with stricter and with looser
+//          block rules (kRetryFractions), and the conformal mesh with the best minimum scaled Jacobian
+//          is kept (attempts and corner_fraction say which); each search has the time limit.
 // Throws InputError for a bad policy, reward or request (see decompose_input_face, mesh_decomposition).
+constexpr double kRetryBelow = 0.85;
+constexpr double kRetryFractions[] = {0.95, 0.75};
 FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& settings, MeshOptions options);
 
 // Inputs:  face, a general face; actions, a whole cut sequence of it (as the workbench stores it, see

@@ -2,13 +2,9 @@
 
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
-#include <IFSelect_ReturnStatus.hxx>
-#include <Interface_Static.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
-#include <STEPControl_Reader.hxx>
-#include <STEPControl_Writer.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -23,6 +19,7 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/plugin.h"
 #include "core/io/atomic_file.h"
 #include "core/io/isolated_call.h"
 
@@ -110,22 +107,21 @@ TopoDS_Shape read_brep_or_throw(std::istream& in, const std::string& message) {
   return shape;
 }
 
+// STEP goes through libautoblock_step.so (step_exchange.h), loaded now: a process that reads and
+// writes only BREP never loads OpenCASCADE's STEP translator. (A read runs in a child process, so
+// there only the child loads it.)
 TopoDS_Shape read_step_or_throw(const std::string& path) {
-  STEPControl_Reader reader;
-  IFSelect_ReturnStatus status = IFSelect_RetFail;
+  using Entry = void (*)(const std::string&, TopoDS_Shape&);
+  auto entry = reinterpret_cast<Entry>(plugin_symbol("libautoblock_step.so", "autoblock_read_step_file", "AUTOBLOCK_STEP_LIBRARY"));
   TopoDS_Shape shape;
-  try {
-    status = reader.ReadFile(path.c_str());
-    if (status == IFSelect_RetDone) {
-      reader.TransferRoots();
-      shape = reader.OneShape();
-    }
-  } catch (const Standard_Failure&) {
-    status = IFSelect_RetFail;
-  }
-  if (status != IFSelect_RetDone) throw InputError(path + ": not a readable STEP file");
-  if (shape.IsNull()) throw InputError(path + ": the STEP file holds no shape");
+  entry(path, shape);
   return shape;
+}
+
+bool write_step(const TopoDS_Shape& shape, const std::string& path) {
+  using Entry = bool (*)(const TopoDS_Shape&, const std::string&);
+  auto entry = reinterpret_cast<Entry>(plugin_symbol("libautoblock_step.so", "autoblock_write_step_file", "AUTOBLOCK_STEP_LIBRARY"));
+  return entry(shape, path);
 }
 
 }  // namespace
@@ -172,9 +168,7 @@ void write_shape_file(const std::string& path, const TopoDS_Shape& shape) {
   write_file_atomically(path, [&](const std::string& temporary) {
     try {
       if (ext == ".brep" || ext == ".brp") return static_cast<bool>(BRepTools::Write(shape, temporary.c_str()));
-      STEPControl_Writer writer;
-      return writer.Transfer(shape, STEPControl_AsIs) == IFSelect_RetDone &&
-             writer.Write(temporary.c_str()) == IFSelect_RetDone;
+      return write_step(shape, temporary);
     } catch (const Standard_Failure&) {
       return false;
     }

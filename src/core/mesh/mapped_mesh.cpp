@@ -27,7 +27,7 @@ struct GridPoint {
 int grid_index(const std::vector<double>& values, double v, double tolerance) {
   const auto it = std::lower_bound(values.begin(), values.end(), v - tolerance);
   if (it == values.end() || std::fabs(*it - v) > tolerance) {
-    throw std::logic_error("mapped_mesh: a model vertex is not on the face's grid");
+    throw std::logic_error("mapped_mesh: a model vertex is not on the face's grid (" + std::to_string(v) + ", tolerance " + std::to_string(tolerance) + ")");
   }
   return static_cast<int>(it - values.begin());
 }
@@ -43,10 +43,11 @@ struct EdgeNodes {
 }  // namespace
 
 QuadMesh mapped_mesh(const ConformalBlocks& model, const std::vector<Box>& blocks, const GridFace& face,
-                     const StripLayout& layout, const IntervalAssignment& intervals, double z) {
+                     const StripLayout& layout, const IntervalAssignment& intervals, double z,
+                     double tolerance) {
   if (model.faces.size() != blocks.size()) throw std::logic_error("mapped_mesh: one face per block expected");
   const Grid& g = *layout.grid;
-  const double tolerance = 1e-9 * face.size;
+  tolerance = std::max(tolerance, 1e-9 * face.size);
   QuadMesh mesh;
   mesh.z = z;
   mesh.blocks = static_cast<int>(blocks.size());

@@ -20,11 +20,13 @@ namespace autoblock {
 
 // Inputs:  model, the merged blocks (faces in block order); blocks, the same as boxes; face, the
 //          input face on its grid (for its size); layout, strip_layout(face, blocks); intervals, counts per strip;
-//          z, the face's plane.
+//          z, the face's plane; tolerance, how far a model vertex may be from its grid point (the
+//          face's tolerance, as validated; at least 1e-9 of the face's size). Nodes sit on the grid.
 // Outputs: the quad mesh, quads block by block, each block's quads row by row.
 // Throws std::logic_error when the model does not match the blocks or the grid (a face with a
 //        hole, an edge that is not on a block side, opposite sides with different node counts).
 QuadMesh mapped_mesh(const ConformalBlocks& model, const std::vector<Box>& blocks, const GridFace& face,
-                     const StripLayout& layout, const IntervalAssignment& intervals, double z);
+                     const StripLayout& layout, const IntervalAssignment& intervals, double z,
+                     double tolerance = 0.0);
 
 }  // namespace autoblock

@@ -16,6 +16,7 @@
 #include "core/common/format.h"
 #include "core/env/occt_replay.h"
 #include "core/env/region_replay.h"
+#include "core/geometry/occt_face.h"
 #include "core/mesh/block_mesh.h"
 #include "core/mesh/edge_intervals.h"
 #include "core/mesh/mapped_mesh.h"
@@ -25,6 +26,19 @@ namespace {
 
 double since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The face to replay the cuts on: the input face, or, when it has flat vertices (where two collinear
+// edges meet, as a face of a conformal compound has where a neighbour's edge ends), the validated
+// polygon it stands for (flat vertices merged, corners on the grid): the grid mesher puts nodes on
+// the grid of the face's corners only, so a flat vertex would be a model vertex between nodes.
+TopoDS_Face face_to_replay(const InputFace& face) {
+  size_t corners = face.planar.polygon.outer.size();
+  for (const Ring& hole : face.planar.polygon.holes) corners += hole.size();
+  TopTools_IndexedMapOfShape vertices;
+  TopExp::MapShapes(face.occt, TopAbs_VERTEX, vertices);
+  if (static_cast<size_t>(vertices.Extent()) <= corners) return face.occt;
+  return occt_face_from_polygon(face.planar.polygon, face.planar.z, face.planar.normal_up);
 }
 
 // The face's box from its vertices.
@@ -94,11 +108,11 @@ MeshResult mesh_decomposition(const InputFace& face, const Decomposition& d, con
   result.interval_seconds = since(start);
 
   start = std::chrono::steady_clock::now();
-  const std::vector<TopoDS_Face> block_faces = replay_cuts_occt(face.occt, face.grid, d.cuts, options.episode);
+  const std::vector<TopoDS_Face> block_faces = replay_cuts_occt(face_to_replay(face), face.grid, d.cuts, options.episode);
   if (block_faces.size() != d.blocks.size()) throw std::logic_error("mesh: the replay gave a different number of blocks");
   for (size_t b = 0; b < d.blocks.size(); ++b) {
     const Box got = vertex_box(block_faces[b]), want = d.blocks[b];
-    const double tol = 1e-7 * face.grid.size;
+    const double tol = std::max(face.planar.tolerance, 1e-7 * face.grid.size);
     if (std::fabs(got.xmin - want.xmin) > tol || std::fabs(got.xmax - want.xmax) > tol ||
         std::fabs(got.ymin - want.ymin) > tol || std::fabs(got.ymax - want.ymax) > tol) {
       throw std::logic_error("mesh: replayed block " + std::to_string(b + 1) + " is not the decomposition's");
@@ -108,7 +122,8 @@ MeshResult mesh_decomposition(const InputFace& face, const Decomposition& d, con
   result.merge_seconds = since(start);
 
   start = std::chrono::steady_clock::now();
-  result.mesh = mapped_mesh(result.model, d.blocks, face.grid, result.layout, result.intervals, face.planar.z);
+  result.mesh = mapped_mesh(result.model, d.blocks, face.grid, result.layout, result.intervals, face.planar.z,
+                            face.planar.tolerance);
   result.mesh_seconds = since(start);
 
   start = std::chrono::steady_clock::now();

@@ -89,15 +89,18 @@ std::optional<std::array<int, 4>> block_corners(const Region& region, const Bloc
   const Ring& ring = region.outer();
   std::array<int, 4> corners{};
   int count = 0;
+  // Four corners first (side vertices by cross and dot products), then their angles.
   for (size_t i = 0; i < ring.size(); ++i) {
     if (is_side_vertex(ring, i, rules)) continue;
-    const double angle = interior_angle(ring, i);
-    if (angle > M_PI) return std::nullopt;                                              // reflex
-    if (angle < rules.min_corner_degrees * kDegree || angle > rules.max_corner_degrees * kDegree) return std::nullopt;
     if (count == 4) return std::nullopt;
     corners[static_cast<size_t>(count++)] = static_cast<int>(i);
   }
   if (count != 4) return std::nullopt;
+  for (const int c : corners) {
+    const double angle = interior_angle(ring, static_cast<size_t>(c));
+    if (angle > M_PI) return std::nullopt;                                              // reflex
+    if (angle < rules.min_corner_degrees * kDegree || angle > rules.max_corner_degrees * kDegree) return std::nullopt;
+  }
   return corners;
 }
 
@@ -262,9 +265,12 @@ OrientedRectangle min_area_rectangle(const Region& region) {
       vmax = std::max(vmax, v);
     }
     const double area = (umax - umin) * (vmax - vmin);
+    // Prefer the smaller area; within a relative 1e-12 of it, the axis nearest X or Y (the tilt
+    // computed only when it decides).
+    const bool smaller = best_area < 0.0 || area < best_area * (1.0 - 1e-12);
+    if (!smaller && !(area <= best_area * (1.0 + 1e-12))) continue;
     const double tilt = std::min(std::atan2(uy, ux), M_PI / 2 - std::atan2(uy, ux));
-    // Prefer the smaller area; within a relative 1e-12 of it, the axis nearest X or Y.
-    if (best_area < 0.0 || area < best_area * (1.0 - 1e-12) || (area <= best_area * (1.0 + 1e-12) && tilt < best_tilt)) {
+    if (smaller || tilt < best_tilt) {
       best_area = area;
       best_tilt = tilt;
       const double cu = 0.5 * (umin + umax), cv = 0.5 * (vmin + vmax);

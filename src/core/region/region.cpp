@@ -81,20 +81,28 @@ Ring canonical_ring(const Ring& ring, double quantum) {
   // collinear vertex, or the tip of a spike of zero width), and every tip of a wedge thinner than one
   // quantum (p within one quantum of the edge v-n, or n of the edge v-p), one at a time, until none
   // is left.
-  bool changed = true;
-  while (changed && out.size() >= 3) {
-    changed = false;
-    for (size_t i = 0; i < out.size(); ++i) {
-      const Point2 p = out[(i + out.size() - 1) % out.size()], v = out[i], n = out[(i + 1) % out.size()];
-      // Squared comparisons: no square roots on this hot path.
-      const double len2 = (n.x - p.x) * (n.x - p.x) + (n.y - p.y) * (n.y - p.y), c = cross(p, v, n), q2 = quantum * quantum;
-      if (len2 == 0.0 || c * c <= q2 * len2 || segment_distance_squared(p, v, n) <= q2 || segment_distance_squared(n, v, p) <= q2) {
-        out.erase(out.begin() + static_cast<std::ptrdiff_t>(i));
-        merge_equal_points(&out);
-        changed = true;
-        break;
-      }
+  // After a removal the scan resumes at the vertex before it (the vertices before that keep their
+  // neighbours), or starts over when the removal touched the ring's wrap or merged points: the same
+  // removals, in the same order, as starting over every time.
+  const double q2 = quantum * quantum;
+  size_t i = 0;
+  while (out.size() >= 3 && i < out.size()) {
+    const size_t m = out.size();
+    const Point2 p = out[(i + m - 1) % m], v = out[i], n = out[(i + 1) % m];
+    // Squared comparisons: no square roots on this hot path. A point farther than one quantum from
+    // a segment's line (|cross| over the segment's length) is farther from the segment too.
+    const double len2 = (n.x - p.x) * (n.x - p.x) + (n.y - p.y) * (n.y - p.y), c = cross(p, v, n), c2 = c * c;
+    const double vn2 = (n.x - v.x) * (n.x - v.x) + (n.y - v.y) * (n.y - v.y),
+                 vp2 = (p.x - v.x) * (p.x - v.x) + (p.y - v.y) * (p.y - v.y);
+    const bool remove = len2 == 0.0 || c2 <= q2 * len2 || (c2 <= q2 * vn2 && segment_distance_squared(p, v, n) <= q2) ||
+                        (c2 <= q2 * vp2 && segment_distance_squared(n, v, p) <= q2);
+    if (!remove) {
+      ++i;
+      continue;
     }
+    out.erase(out.begin() + static_cast<std::ptrdiff_t>(i));
+    merge_equal_points(&out);
+    i = (out.size() + 1 == m && i != 0 && i != m - 1) ? i - 1 : 0;
   }
   if (out.size() < 3 || signed_area(out) == 0.0) return {};
   return out;

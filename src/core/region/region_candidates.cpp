@@ -14,19 +14,23 @@ double cross(Point2 a, Point2 b) { return a.x * b.y - a.y * b.x; }
 double dot(Point2 a, Point2 b) { return a.x * b.x + a.y * b.y; }
 
 // True when the direction d at vertex v points strictly into the region, whose boundary arrives
-// from p and leaves towards n with the region on the left.
+// from p and leaves towards n with the region on the left: d lies strictly inside the interior angle,
+// swept counter-clockwise from the outgoing edge to the incoming one (reversed). By the signs of
+// cross products of unit vectors (no trigonometry on this hot path), each kept 1e-12 clear of the
+// edges' directions.
 bool points_inside(Point2 p, Point2 v, Point2 n, Point2 d) {
-  const Point2 in{p.x - v.x, p.y - v.y}, out{n.x - v.x, n.y - v.y};
-  // Interior: the directions swept counter-clockwise from `out` to `in`.
-  const double a_out = std::atan2(out.y, out.x), a_in = std::atan2(in.y, in.x), a_d = std::atan2(d.y, d.x);
-  auto ccw = [](double from, double to) {
-    double t = to - from;
-    while (t < 0.0) t += 2.0 * M_PI;
-    while (t >= 2.0 * M_PI) t -= 2.0 * M_PI;
-    return t;
-  };
-  const double span = ccw(a_out, a_in), at = ccw(a_out, a_d);
-  return at > 1e-12 && at < span - 1e-12;
+  const Point2 in = unit({p.x - v.x, p.y - v.y}), out = unit({n.x - v.x, n.y - v.y}), u = unit(d);
+  constexpr double margin = 1e-12;
+  const double turn = cross(out, in);
+  if (turn > 0.0 || (turn == 0.0 && dot(out, in) < 0.0)) {
+    // A convex (or flat) corner: d left of `out` and right of `in`.
+    return cross(out, u) > margin && cross(u, in) > margin;
+  }
+  // A reflex corner: anything but the closed exterior wedge from `in` to `out`; a direction along
+  // either edge is not inside.
+  if (dot(u, in) > 0.0 && std::fabs(cross(u, in)) <= margin) return false;
+  if (dot(u, out) > 0.0 && std::fabs(cross(out, u)) <= margin) return false;
+  return !(cross(in, u) >= 0.0 && cross(u, out) >= 0.0);
 }
 
 }  // namespace
@@ -88,14 +92,23 @@ std::vector<RegionAction> region_candidates(const Region& part) {
           directions.push_back({w.x - v.x, w.y - v.y});
         }
       }
-      std::vector<Point2> partial, full;
+      // Each direction once (as a ray for partial cuts, as a line for full ones), compared as unit
+      // vectors.
+      std::vector<Point2> partial, full, partial_unit, full_unit;
       for (const Point2& d : directions) {
+        const Point2 u = unit(d);
         bool seen = false;
-        for (const Point2& q : partial) seen = seen || (std::fabs(cross(unit(q), unit(d))) < 1e-9 && dot(q, d) > 0.0);
-        if (!seen && points_inside(p, v, n, d)) partial.push_back(d);
+        for (const Point2& q : partial_unit) seen = seen || (std::fabs(cross(q, u)) < 1e-9 && dot(q, u) > 0.0);
+        if (!seen && points_inside(p, v, n, d)) {
+          partial.push_back(d);
+          partial_unit.push_back(u);
+        }
         bool seen_line = false;
-        for (const Point2& q : full) seen_line = seen_line || std::fabs(cross(unit(q), unit(d))) < 1e-9;
-        if (!seen_line && !convex) full.push_back(d);  // on a convex part a full cut is a partial one
+        for (const Point2& q : full_unit) seen_line = seen_line || std::fabs(cross(q, u)) < 1e-9;
+        if (!seen_line && !convex) {  // on a convex part a full cut is a partial one
+          full.push_back(d);
+          full_unit.push_back(u);
+        }
       }
       for (const Point2& d : partial) actions.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, d}});
       for (const Point2& d : full) actions.push_back({RegionAction::Kind::Cut, {CutKind::Full, v, d}});

@@ -32,6 +32,7 @@ struct RegionEpisodeOptions {
   RewardPreset reward = RewardPreset::Paper;
   BlockRules rules;           // what a block is (block.h); see face_rules
   bool face_rules = true;     // the mesh preset: rules = mesh_block_rules(the face's loops) instead
+  double corner_fraction = kMeshCornerFraction;  // face_rules: mesh_block_rules' fraction
 };
 
 struct RegionPiece {

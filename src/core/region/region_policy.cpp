@@ -1,7 +1,11 @@
 #include "core/region/region_policy.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
+#include <map>
+#include <tuple>
 
 #include "core/region/region_candidates.h"
 #include "core/region/region_reward.h"
@@ -17,6 +21,11 @@ std::vector<ScoredAction> score_candidates(const Region& part, double face_size,
                                           const std::chrono::steady_clock::time_point* deadline) {
   std::vector<ScoredAction> scored;
   const Complexity complexity = part_complexity(part, options.rules);
+  // A full cut is a line: the candidates list an edge's line from both its ends, an axis through
+  // aligned vertices from each of them. The line is cut once; the others take its outcome. Lines
+  // are keyed by their direction (to 1e-9) and their offset from the origin (to the part's quantum);
+  // the value is the outcome's place in scored, or -1 when it made no progress.
+  std::map<std::array<long long, 3>, long> lines;
   for (const RegionAction& action : region_candidates(part)) {
     if (deadline && !scored.empty() && std::chrono::steady_clock::now() > *deadline) break;
     ScoredAction s{action, {}, 0.0};
@@ -24,9 +33,27 @@ std::vector<ScoredAction> score_candidates(const Region& part, double face_size,
       s.outcome = {{part}, {}};
       s.reward = region_template_reward(options.reward, part, face_size, options.rules);
     } else {
+      std::map<std::array<long long, 3>, long>::iterator line = lines.end();
+      if (action.cut.kind == CutKind::Full && !action.cut.forced) {
+        const double length = std::hypot(action.cut.direction.x, action.cut.direction.y);
+        Point2 u{action.cut.direction.x / length, action.cut.direction.y / length};
+        if (u.x < -1e-12 || (std::fabs(u.x) <= 1e-12 && u.y < 0.0)) u = {-u.x, -u.y};
+        const double offset = u.x * action.cut.origin.y - u.y * action.cut.origin.x;
+        bool inserted = false;
+        std::tie(line, inserted) =
+            lines.insert({{std::llround(u.x * 1e9), std::llround(u.y * 1e9), std::llround(offset / part.quantum())}, -1});
+        if (!inserted) {
+          if (line->second < 0) continue;
+          s.outcome = scored[static_cast<size_t>(line->second)].outcome;
+          s.reward = scored[static_cast<size_t>(line->second)].reward;
+          scored.push_back(std::move(s));
+          continue;
+        }
+      }
       s.outcome = cut_region(part, action.cut);
       if (!makes_progress(complexity, s.outcome.pieces, options.rules)) continue;
       s.reward = region_cut_reward(options.reward, s.outcome, face_size, options.rules);
+      if (line != lines.end()) line->second = static_cast<long>(scored.size());
     }
     scored.push_back(std::move(s));
   }

@@ -1,11 +1,28 @@
 #include "core/region/region_search.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "core/region/region_candidates.h"
 #include "core/region/region_reward.h"
 
 namespace autoblock {
+namespace {
+
+// An upper bound of a part's value (the best return of finishing it), for pruning: under the mesh
+// preset every action costs at least 1 (a cut leaving N >= 2 pieces earns at most -(N - 1), the
+// template at most -2), and a part without holes needs a chord ending at each of its reflex vertices,
+// each chord ending at two at most and costing 1. Eq. (1) can be positive: no bound (+infinity).
+double value_upper_bound(const Region& part, const RegionEpisodeOptions& options) {
+  if (options.reward != RewardPreset::Mesh) return std::numeric_limits<double>::infinity();
+  if (is_block(part, options.rules)) return 0.0;
+  if (!part.holes().empty()) return -1.0;
+  const int reflex = part_complexity(part, options.rules).reflex;
+  return -std::max(1.0, std::ceil(0.5 * reflex));
+}
+
+}  // namespace
 
 double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions& options, double face_size) {
   if (is_block(part, options.rules)) return 0.0;
@@ -44,6 +61,21 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
       break;
     }
     double value = scored[i].reward;
+    // Branch and bound: a candidate whose best possible value cannot beat the best found is not
+    // expanded (the decision is the same; the values compared are exact).
+    if (have && options_.prune) {
+      double bound = value;
+      if (scored[i].action.kind == RegionAction::Kind::Cut) {
+        for (const Region& piece : scored[i].outcome.pieces) {
+          const auto known = memo_.find(piece);
+          bound += known != memo_.end() ? known->second.value : value_upper_bound(piece, options);
+        }
+      }
+      if (!(bound > best.value)) {
+        ++pruned_;
+        continue;
+      }
+    }
     if (scored[i].action.kind == RegionAction::Kind::Cut) {
       for (const Region& piece : scored[i].outcome.pieces) value += solve(piece, options, face_size);
     }
@@ -62,6 +94,7 @@ RegionAction RegionSearchPolicy::choose(const RegionEpisode& episode) {
     face_hash_ = episode.face().hash();
     started_ = true;
     capped_ = false;
+    pruned_ = 0;
     deadline_ = std::chrono::steady_clock::now() +
                 std::chrono::microseconds(static_cast<long long>(options_.time_limit * 1e6));
   }

@@ -8,7 +8,10 @@
 // two orders of cuts is solved once. When the time budget runs out, parts not yet solved are finished
 // greedily (every candidate scored, the best immediate reward taken, no lookahead: the budget bounds
 // the lookahead, and the greedy finish costs about what the greedy policy does on the parts left),
-// and the policy reports time_capped().
+// and the policy reports time_capped(). Branch and bound: a candidate whose value cannot beat the best
+// found so far (its reward plus its pieces' values where already solved, else an upper bound of them:
+// under the mesh preset every action costs at least 1 and a part without holes at least half its
+// reflex vertices; under Eq. (1) none) is not expanded: the same decisions, fewer parts solved.
 #pragma once
 
 #include <chrono>
@@ -22,6 +25,7 @@ namespace autoblock {
 struct RegionSearchOptions {
   int width = 4;              // candidates expanded per part (by immediate reward)
   double time_limit = 2.0;    // seconds per face; 0: no limit
+  bool prune = true;          // branch and bound under the mesh preset (same decisions; false for tests)
 };
 
 class RegionSearchPolicy : public RegionPolicy {
@@ -32,6 +36,8 @@ class RegionSearchPolicy : public RegionPolicy {
   bool time_capped() const override { return capped_; }
   // Parts solved so far (for reports and tests).
   size_t solved_parts() const { return memo_.size(); }
+  // Candidates not expanded because their value's upper bound could not beat the best (mesh preset).
+  size_t pruned_candidates() const { return pruned_; }
 
  private:
   struct Entry {
@@ -45,6 +51,7 @@ class RegionSearchPolicy : public RegionPolicy {
   size_t face_hash_ = 0;
   bool started_ = false;
   bool capped_ = false;
+  size_t pruned_ = 0;
   std::chrono::steady_clock::time_point deadline_;
 };
 

@@ -5,6 +5,7 @@
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <Bnd_Box.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <gp_Ax1.hxx>
 #include <gp_Trsf.hxx>
@@ -163,6 +164,56 @@ TEST_CASE("a face with edges at any angle goes to the general engine, and OpenCA
   CHECK(one.region.cuts.empty());
   REQUIRE(one.block_faces.size() == 1);
   CHECK(occt_area(one.shape) == Approx(8.0));
+}
+
+TEST_CASE("every face of a decomposition's conformal compound meshes on its own (flat vertices, snapped corners)",
+          "[api][general][mesh]") {
+  // A block of the compound has vertices where its neighbours' edges end (flat vertices), and a block
+  // of a general face has corners snapped to the face's lattice, off its twin's grid by rounding.
+  int meshed = 0, rectangles = 0;
+  for (const GeneralKind kind : {GeneralKind::Polygon, GeneralKind::Chamfered, GeneralKind::Turned}) {
+    const TopoDS_Face occt = general_face(11 + static_cast<int>(kind), kind, true);
+    const FaceDecomposition d = decompose_input_face(check_face(occt, "face"), DecomposeSettings{});
+    for (TopExp_Explorer it(d.shape, TopAbs_FACE); it.More(); it.Next()) {
+      const InputFace block = check_face(TopoDS::Face(it.Current()), "block");
+      INFO(general_kind_name(kind) << " block " << meshed);
+      const FaceMeshing m = mesh_input_face(block, DecomposeSettings{}, MeshOptions{});
+      CHECK(m.result.conformity.conformal);
+      CHECK(m.result.mesh.quads.size() > 0);
+      rectangles += block.is_general() ? 0 : 1;
+      ++meshed;
+    }
+  }
+  CHECK(meshed > 10);
+  CHECK(rectangles > 0);  // the grid engine's path is exercised
+}
+
+TEST_CASE("a poor searched mesh is searched again with other block rules, and the best kept", "[api][general][mesh]") {
+  // A 12-gon with two holes (from the 5-12 vertex benchmark set) whose mesh under the default rules
+  // stays below kRetryBelow of its bound.
+  const RectilinearPolygon polygon{{{-18.646142, -75.109508}, {37.180722, -44.086510}, {63.925294, -71.267773}, {66.163249, -47.635652}, {80.606792, -5.171962}, {21.939120, 88.004096}, {-18.657764, 55.630667}, {-51.198882, 45.317978}, {-93.111036, 29.260249}, {-75.146076, 7.209689}, {-63.371430, -9.786776}, {-47.259535, -28.066443}},
+                                   {{{8.087885, -7.065174}, {3.895501, -2.080271}, {4.520537, 4.447645}, {11.373567, 6.131284}, {17.283882, 1.331738}, {15.104209, -6.893002}}, {{-9.985978, -5.882433}, {-16.974334, -2.384746}, {-15.366714, 3.654658}, {-6.897206, 7.469710}, {-2.428610, -1.367177}}}};
+  const InputFace face = check_face(occt_face_from_polygon(polygon, 0.0, true), "twelve-gon");
+  REQUIRE(face.is_general());
+  DecomposeSettings settings;
+  settings.policy_settings.general_time_limit = 0.0;  // the same searches on a loaded machine
+  settings.occt_blocks = false;
+  MeshOptions options;
+  options.general.reward = RewardPreset::Mesh;
+  const FaceDecomposition first = decompose_input_face(face, settings);
+  const MeshResult first_mesh = mesh_region_decomposition(face, first.region, options);
+  const double first_ratio = first_mesh.quality.min_scaled_jacobian / first_mesh.bound;
+  REQUIRE(first_ratio < kRetryBelow);
+  const FaceMeshing m = mesh_input_face(face, settings, MeshOptions{});
+  CHECK(m.attempts >= 2);
+  CHECK(m.result.conformity.conformal);
+  CHECK(m.corner_fraction != kMeshCornerFraction);
+  CHECK(m.result.quality.min_scaled_jacobian / m.result.bound > first_ratio);
+  CHECK(face_meshing_json("twelve-gon", m)["attempts"] == m.attempts);
+  // A good mesh is kept at the first attempt.
+  const InputFace parallelogram = check_face(
+      occt_face_from_polygon(RectilinearPolygon{{{0, 0}, {4, 0}, {5, 2}, {1, 2}}, {}}, 1.0, true), "parallelogram");
+  CHECK(mesh_input_face(parallelogram, settings, MeshOptions{}).attempts == 1);
 }
 
 TEST_CASE("general faces: grid-only actions and learned policies say so", "[api][general][errors]") {

@@ -158,7 +158,7 @@ TEST_CASE("autoblock train: bad options and data get exit 2 and a one-line error
   CHECK_FALSE(std::filesystem::exists(folder + "/p.pt"));
 }
 
-TEST_CASE("autoblock loads LibTorch only for a learned policy (the loader's own record)", "[cli][startup]") {
+TEST_CASE("autoblock loads LibTorch only for a learned policy, STEP only for STEP files (the loader's own record)", "[cli][startup]") {
   const std::string folder = test::temporary_folder("cli-startup");
   REQUIRE(test::run_autoblock("generate --count 1 --seed 8 --out '" + folder + "/set'").exit_code == 0);
   const std::string shape = folder + "/set/shape_0000.brep";
@@ -169,14 +169,22 @@ TEST_CASE("autoblock loads LibTorch only for a learned policy (the loader's own 
     REQUIRE(r.exit_code == 0);
     return r.err;
   };
-  for (const std::string arguments :
+  for (const std::string& arguments :
        {std::string("--help"), "decompose '" + shape + "' --policy greedy", "decompose '" + shape + "' --policy optimal",
         "decompose '" + shape + "'", "mesh '" + shape + "' --policy auto --out '" + folder + "/m.msh'"}) {
     INFO(arguments);
     const std::string err = loaded(arguments);
     CHECK_THAT(err, Contains("libTK"));  // the check sees what was loaded ...
     CHECK_THAT(err, !Contains("libtorch") && !Contains("libautoblock_learn"));
+    CHECK_THAT(err, !Contains("libTKSTEP") && !Contains("libautoblock_step"));
   }
+  // Writing a STEP file loads the translator; reading one loads it in the reading process (a child,
+  // whose output goes nowhere), and the face read meshes.
+  CHECK_THAT(loaded("decompose '" + shape + "' --policy greedy --out '" + folder + "/b.step'"),
+             Contains("libautoblock_step") && Contains("libTKSTEP"));
+  const auto read = test::run_autoblock("mesh '" + folder + "/b.step' --face 1 --policy greedy --out '" + folder + "/m.msh'");
+  CHECK(read.exit_code == 0);
+  CHECK(std::filesystem::exists(folder + "/m.msh"));
   // ... and a learned policy does load the runtime.
   CHECK_THAT(loaded("decompose '" + shape + "' --policy sac-mesh"), Contains("libautoblock_learn") && Contains("libtorch"));
 }

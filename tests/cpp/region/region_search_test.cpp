@@ -67,3 +67,41 @@ TEST_CASE("search out of time finishes greedily: with no budget left it is the g
     CHECK(s.templates == g.templates);
   }
 }
+
+TEST_CASE("search: branch and bound prunes candidates and decides as the search without it", "[region][search]") {
+  std::mt19937_64 rng(13);
+  RegionEpisodeOptions mesh;
+  mesh.reward = RewardPreset::Mesh;
+  size_t pruned = 0;
+  for (int i = 0; i < 8; ++i) {
+    const Region face = generated_face(rng, i, 8, 14, 5);
+    RegionSearchOptions options;
+    options.time_limit = 0.0;  // no limit: both searches see every candidate they expand
+    RegionSearchPolicy bounded(options);
+    options.prune = false;
+    RegionSearchPolicy exhaustive(options);
+    const RegionDecomposition a = decompose_region(face, bounded, mesh), b = decompose_region(face, exhaustive, mesh);
+    REQUIRE(a.complete());
+    CHECK(a.total_return == b.total_return);
+    REQUIRE(a.cuts.size() == b.cuts.size());
+    for (size_t k = 0; k < a.cuts.size(); ++k) {
+      CHECK(a.cuts[k].action.kind == b.cuts[k].action.kind);
+      CHECK(a.cuts[k].action.cut.origin == b.cuts[k].action.cut.origin);
+      CHECK(a.cuts[k].action.cut.direction == b.cuts[k].action.cut.direction);
+    }
+    CHECK(bounded.solved_parts() <= exhaustive.solved_parts());
+    CHECK(exhaustive.pruned_candidates() == 0);
+    pruned += bounded.pruned_candidates();
+  }
+  CHECK(pruned > 0);
+  // Eq. (1) can be positive: no bound but the values of pieces already solved; the same decisions.
+  RegionEpisodeOptions paper;
+  paper.reward = RewardPreset::Paper;
+  const Region face = generated_face(rng, 0, 8, 12, 4);
+  RegionSearchOptions options;
+  options.time_limit = 0.0;
+  RegionSearchPolicy bounded(options);
+  options.prune = false;
+  RegionSearchPolicy exhaustive(options);
+  CHECK(decompose_region(face, bounded, paper).total_return == decompose_region(face, exhaustive, paper).total_return);
+}
