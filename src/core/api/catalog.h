@@ -50,6 +50,7 @@ struct PolicySettings {
   std::string reward;         // the preset optimal maximises (a name of reward_preset_names(); empty: paper)
   double general_time_limit = 2.0;  // seconds per face (<= 0: unlimited) for the general engine's search
                                     // (auto, search), after which progress cuts finish the parts
+  int general_search_width = 0;     // the general search's candidates expanded per part (0: its default)
 };
 
 // Inputs:  spec, a name of policy_names() or a policy file's path (empty: the default); settings.

@@ -30,6 +30,7 @@ std::unique_ptr<RegionPolicy> general_policy(const std::string& name, const Poli
   if (name.empty() || name == "auto" || name == "search" || name == "optimal") {
     RegionSearchOptions options;
     options.time_limit = settings.general_time_limit > 0 ? settings.general_time_limit : 0.0;
+    if (settings.general_search_width > 0) options.width = settings.general_search_width;
     return std::make_unique<RegionSearchPolicy>(options);
   }
   if (name == "greedy") return std::make_unique<RegionGreedyPolicy>();

@@ -2,8 +2,10 @@
 
 #include <chrono>
 
+#include "core/common/error.h"
 #include "core/mesh/mesh_picture.h"
 #include "core/mesh/mesh_report.h"
+#include "core/region/region_search.h"
 
 namespace autoblock {
 
@@ -13,6 +15,8 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
   decompose.occt_blocks = false;
   FaceMeshing out;
   out.corner_fraction = settings.corner_fraction;
+  out.search_width = settings.policy_settings.general_search_width > 0 ? settings.policy_settings.general_search_width
+                                                                       : RegionSearchOptions{}.width;
   out.decomposition = decompose_input_face(face, decompose);
   if (face.is_general()) {
     options.general.max_steps = settings.max_steps;
@@ -25,10 +29,11 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
       return r.conformity.conformal ? r.quality.min_scaled_jacobian / r.bound : -1e300;
     };
     const bool searched = out.decomposition.region.policy == "search";
-    for (const double fraction : kRetryFractions) {
+    for (const SearchRetry& retry_with : kSearchRetries) {
       if (!searched || ratio(out.result) >= kRetryBelow) break;
-      if (fraction == settings.corner_fraction) continue;
+      const double fraction = retry_with.corner_fraction;
       decompose.corner_fraction = fraction;
+      decompose.policy_settings.general_search_width = retry_with.width;
       FaceDecomposition again = decompose_input_face(face, decompose);
       MeshOptions retry = options;
       retry.general.corner_fraction = fraction;  // the replay's block rules are the search's
@@ -38,6 +43,26 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
         out.decomposition = std::move(again);
         out.result = std::move(meshed);
         out.corner_fraction = fraction;
+        out.search_width = retry_with.width;
+      }
+    }
+    // Still poor: the kept blocks meshed with at least two intervals on every model edge (a small
+    // block one element across, meshed corner to corner through its side vertices, is what holds the
+    // minimum down then; more elements there lift it). Skipped when the user's counts or the quad
+    // limit forbid it.
+    if (searched && ratio(out.result) < kRetryBelow && options.min_edge_intervals < 2) {
+      MeshOptions finer = options;
+      finer.general.corner_fraction = out.corner_fraction;
+      finer.min_edge_intervals = 2;
+      try {
+        MeshResult meshed = mesh_region_decomposition(face, out.decomposition.region, finer);
+        ++out.attempts;
+        if (ratio(meshed) > ratio(out.result)) {
+          out.result = std::move(meshed);
+          out.min_edge_intervals = 2;
+        }
+      } catch (const InputError&) {
+        // infeasible with the fixed counts or too many quads: the mesh stays as it is
       }
     }
   } else {
@@ -68,6 +93,8 @@ nlohmann::json face_meshing_json(const std::string& input, const FaceMeshing& m)
   nlohmann::json report = mesh_report_json(input, m.decomposition.region, m.result, m.seconds);
   report["attempts"] = m.attempts;
   report["corner_fraction"] = m.corner_fraction;
+  report["min_edge_intervals"] = m.min_edge_intervals;
+  report["search_width"] = m.search_width;
   return report;
 }
 

@@ -18,6 +18,8 @@ struct FaceMeshing {
   double seconds = 0.0;             // decomposition and meshing, wall time
   int attempts = 1;                 // a general face's decompositions tried (see mesh_input_face)
   double corner_fraction = kMeshCornerFraction;  // the block rules of the one kept (face_actions.h)
+  int min_edge_intervals = 1;       // the intervals every model edge has at least (MeshOptions)
+  int search_width = 4;             // the kept search's width (candidates expanded per part)
   bool general() const { return decomposition.general(); }
   const std::string& policy() const {
     return general() ? decomposition.region.policy : decomposition.decomposition.policy;
@@ -32,12 +34,18 @@ struct FaceMeshing {
 //          episode options are set from settings).
 // Outputs: the decomposition and its mesh, returned even when the conformity check fails (the caller
 //          reports it: FaceMeshing::result.conformity). A general face searched (auto, search) whose
-//          mesh stays below kRetryBelow of its bound is decomposed again with stricter and with looser
-//          block rules (kRetryFractions), and the conformal mesh with the best minimum scaled Jacobian
-//          is kept (attempts and corner_fraction say which); each search has the time limit.
+//          mesh stays below kRetryBelow of its bound is searched again (kSearchRetries: wider, then
+//          with stricter and with looser block rules) until one reaches it, and the conformal mesh with
+//          the best minimum scaled Jacobian is kept; if still below, the kept blocks are meshed again with at least two intervals per
+//          model edge, kept if better (attempts, search_width, corner_fraction and min_edge_intervals
+//          say what was kept); each search has the time limit.
 // Throws InputError for a bad policy, reward or request (see decompose_input_face, mesh_decomposition).
 constexpr double kRetryBelow = 0.85;
-constexpr double kRetryFractions[] = {0.95, 0.75};
+struct SearchRetry {
+  int width;               // candidates expanded per part (the default search: 4)
+  double corner_fraction;  // the block rules (face_actions.h)
+};
+constexpr SearchRetry kSearchRetries[] = {{8, kMeshCornerFraction}, {4, 0.95}, {4, 0.75}};
 FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& settings, MeshOptions options);
 
 // Inputs:  face, a general face; actions, a whole cut sequence of it (as the workbench stores it, see

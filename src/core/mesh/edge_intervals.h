@@ -2,7 +2,7 @@
 // edge gets (GLPK).
 //
 // The classic integer program (Mitchell 1997) on the model's edges, solved with GLPK's branch and cut:
-//   variables   n_e >= 1 integer per model edge e of length L_e, and t_e, T >= 0;
+//   variables   n_e >= 1 (or options.min_intervals) integer per model edge e of length L_e, and t_e, T >= 0;
 //   constraints sum of n_e over side 0 = over side 2, and side 1 = side 3, for every block (a side is
 //               a chain of edges: a T-junction splits it); sum over the edges of a fixed stretch = N;
 //               t_e >= f_e(n_e), T >= t_e;

@@ -51,6 +51,7 @@ struct IntervalOptions {
   std::vector<FixedIntervals> fixed;
   long max_quads = kMaxMeshQuads;
   double time_limit = 30.0;  // seconds for GLPK
+  int min_intervals = 1;     // a general face's model edges (edge_intervals.h): at least this many each
 };
 
 struct IntervalAssignment {

@@ -69,6 +69,7 @@ void assign_with_fixed(MeshResult& result, const MeshOptions& options, double h,
   IntervalOptions interval_options;
   interval_options.target_size = h;
   interval_options.max_quads = options.max_quads;
+  interval_options.min_intervals = options.min_edge_intervals;
   for (const EdgeIntervals& e : options.fixed) interval_options.fixed.push_back(fix(e));
   result.fixed = interval_options.fixed;
   result.intervals = assign(interval_options);

@@ -37,6 +37,7 @@ struct MeshOptions {
   EpisodeOptions episode;            // the decomposition's options (for the replay)
   RegionEpisodeOptions general;      // a general face's decomposition options (replay, block rules)
   int smoothing_sweeps = kDefaultSmoothingSweeps;  // a general face's mesh (mesh_smoothing.h); 0: none
+  int min_edge_intervals = 1;        // a general face's model edges: at least this many intervals each
 };
 
 struct MeshResult {

@@ -1,6 +1,8 @@
 // Interval assignment on a general block model (GLPK): equal opposite totals, fixed counts, errors.
 #include "core/mesh/edge_intervals.h"
 
+#include <algorithm>
+
 #include <catch2/catch.hpp>
 
 #include "core/common/error.h"
@@ -50,6 +52,19 @@ TEST_CASE("edge intervals: a trapezoid's short side takes its long side's count"
   // 6 and 2 against h = 1: the best compromise on the largest factor max(g / n, n / g) is n = 3 or 4.
   const int n = side_intervals(b.sides[0], a.intervals);
   CHECK((n == 3 || n == 4));
+}
+
+TEST_CASE("edge intervals: a minimum count per edge holds where the size would give fewer", "[mesh][intervals][general]") {
+  // A 4 x 1 rectangle at h = 2: the short sides would get one interval each.
+  const BlockModel m = block_model(one_block(Ring{{0, 0}, {4, 0}, {4, 1}, {0, 1}}), BlockRules{}, kQ);
+  IntervalOptions options;
+  options.target_size = 2.0;
+  const IntervalAssignment coarse = assign_edge_intervals(m, options);
+  CHECK(*std::min_element(coarse.intervals.begin(), coarse.intervals.end()) == 1);
+  options.min_intervals = 2;
+  const IntervalAssignment fine = assign_edge_intervals(m, options);
+  CHECK(*std::min_element(fine.intervals.begin(), fine.intervals.end()) == 2);
+  CHECK(fine.quads == 4);  // 2 x 2: the long sides keep their 2
 }
 
 TEST_CASE("edge intervals: fixed counts hold or are refused with a reason", "[mesh][intervals][general]") {
