@@ -14,7 +14,7 @@ TEST_CASE("the deployment options round-trip, default for older files and are ch
   CHECK(config.weight_average_decay == 0.998);
   CHECK(config.deploy_views == 2);
   CHECK(config.lr_final_fraction == 1.0);
-  CHECK(config.deploy_top_k == 3);
+  CHECK(config.deploy_top_k == 6);
   CHECK(default_sac_config("paper").deploy_views == 1);
   CHECK(default_sac_config("paper").deploy_top_k == 0);
   config.lr_final_fraction = 0.25;
