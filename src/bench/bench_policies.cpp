@@ -76,22 +76,25 @@ Figures measure(const std::vector<GridFace>& faces, const std::string& name, Rew
   BaselineOptions baseline;
   baseline.optimal_seconds = 60;
   baseline.reward = objective;
-  // NAME@V: the learned policy NAME deployed with V symmetric views (lookahead agent).
-  const size_t at = name.rfind('@');
-  const PolicySource source(at == std::string::npos ? name : name.substr(0, at), baseline);
+  // NAME[@V][#K]: the learned policy NAME deployed with V symmetric views and the network valuing
+  // the pieces of the K best cuts by the two-step score (0: every cut; lookahead agent).
+  const size_t hash = name.rfind('#');
+  const std::string viewed = hash == std::string::npos ? name : name.substr(0, hash);
+  const size_t at = viewed.rfind('@');
+  const PolicySource source(at == std::string::npos ? viewed : viewed.substr(0, at), baseline);
   // A learned policy is loaded here (not through the source) so that its deployment can be set:
-  // NAME@V deploys with V symmetric views, --no-reuse without reuse (lookahead agent).
+  // NAME@V, NAME#K (above), --no-reuse without reuse (lookahead agent).
   std::shared_ptr<LearningAgent> agent;
+  const bool deployment_set = at != std::string::npos || hash != std::string::npos;
   if (!source.path().empty()) {
     agent = load_policy_file(source.path(), false).agent;
     auto lookahead = std::dynamic_pointer_cast<LookaheadAgent>(agent);
-    if (at != std::string::npos) {
-      if (!lookahead) throw InputError(name + ": views apply to the lookahead agent's policies only");
-      lookahead->set_deploy_views(std::stoi(name.substr(at + 1)));
-    }
+    if (deployment_set && !lookahead) throw InputError(name + ": @V and #K apply to the lookahead agent's policies only");
+    if (at != std::string::npos) lookahead->set_deploy_views(std::stoi(viewed.substr(at + 1)));
+    if (hash != std::string::npos) lookahead->set_deploy_top_k(std::stoi(name.substr(hash + 1)));
     if (lookahead) lookahead->set_deploy_reuse(reuse_values);
-  } else if (at != std::string::npos) {
-    throw InputError(name + ": views apply to learned policies only");
+  } else if (deployment_set) {
+    throw InputError(name + ": @V and #K apply to learned policies only");
   }
   Figures f;
   for (size_t k = 0; k < faces.size(); ++k) {
@@ -190,7 +193,9 @@ int main(int argc, char** argv) {
   int generated = 200, large = 100, holes = 0;
   std::uint64_t seed = 4242;
   std::string kind = "default";
-  app.add_option("--policy", learned, "trained policies (names or files; NAME@V: deployed with V symmetric views), repeatable");
+  app.add_option("--policy", learned,
+                 "trained policies (names or files; NAME@V: deployed with V symmetric views; NAME#K: the network "
+                 "values the pieces of the K best cuts by the two-step score, 0: all), repeatable");
   app.add_option("--data", data, "shipped test folder (empty: none)")->capture_default_str();
   app.add_option("--generated", generated, "fresh 2-10 rectangle faces")->capture_default_str();
   app.add_option("--large", large, "fresh 11-40 rectangle faces")->capture_default_str();

@@ -47,7 +47,8 @@ struct TrainingJob {
   double weight_average = -1.0;  // lookahead agent: moving-average decay of the deployed weights
   int deploy_views = 0;          // lookahead agent: symmetric views averaged when deployed
   std::vector<std::string> settings;  // "key=value" on the agent's configuration, applied last
-                                      // (sac_config.h with_settings; a fresh run only)
+                                      // (sac_config.h with_settings; a fresh run only, but
+                                      // deploy_views and deploy_top_k also on a resume)
   std::string log;               // CSV log; empty: the output's stem + ".csv"
   std::string curves;            // curves picture, .svg or .png; empty: the output's stem + "-curves.svg"
   std::string description;       // what the policy file records as the training data (empty: derived)

@@ -11,6 +11,7 @@
 #include "core/io/text_file.h"
 #include "core/raster/picture_file.h"
 #include "core/sac/compute_threads.h"
+#include "core/sac/lookahead_agent.h"
 #include "core/sac/policy_file.h"
 #include "core/sac/sac_config.h"
 #include "core/sac/trainer.h"
@@ -115,8 +116,15 @@ TrainingOutcome train(const TrainingJob& job, const TrainingCallbacks& callbacks
   check_picture_path(outcome.curves, "the curves picture");
   require_parent_folder(outcome.checkpoint, "the checkpoint");
   require_parent_folder(outcome.log, "the log");
-  if (job.resume && !job.settings.empty()) {
-    throw InputError("configuration settings apply to a fresh run: a resumed run keeps the checkpoint's");
+  // A resumed run keeps the checkpoint's configuration, except the deployment's (the lookahead
+  // agent's deploy_views and deploy_top_k): they change nothing in training, so a finished run
+  // resumed with them writes the policy a fresh run with them would have written.
+  for (const std::string& setting : job.resume ? job.settings : std::vector<std::string>{}) {
+    const std::string key = setting.substr(0, setting.find('='));
+    if (key != "deploy_views" && key != "deploy_top_k") {
+      throw InputError("configuration settings apply to a fresh run: a resumed run keeps the checkpoint's "
+                       "(except deploy_views and deploy_top_k)");
+    }
   }
   if (job.resume && !fs::exists(outcome.checkpoint)) {
     throw InputError("nothing to resume: the checkpoint " + outcome.checkpoint + " does not exist");
@@ -139,6 +147,13 @@ TrainingOutcome train(const TrainingJob& job, const TrainingCallbacks& callbacks
       job.resume ? std::make_unique<Trainer>(Trainer::resume(outcome.checkpoint, options, std::move(train_set),
                                                              std::move(test_set)))
                  : std::make_unique<Trainer>(config, options, std::move(train_set), std::move(test_set));
+  if (job.resume && !job.settings.empty()) {
+    const auto lookahead = std::dynamic_pointer_cast<LookaheadAgent>(trainer->agent());
+    if (!lookahead) throw InputError("deploy_views and deploy_top_k apply to the lookahead agent only");
+    const SacConfig deployed = with_settings(lookahead->config(), job.settings);
+    lookahead->set_deploy_views(deployed.deploy_views);
+    lookahead->set_deploy_top_k(deployed.deploy_top_k);
+  }
   const RewardPreset reward = trainer->agent()->config().reward;
   outcome.reward = reward_preset_name(reward);
   const TrainingSet& test = trainer->test_set();

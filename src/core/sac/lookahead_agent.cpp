@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/common/error.h"
+#include "core/geometry/part_boundary.h"
 #include "core/geometry/part_symmetry.h"
 #include "core/nn/module_blend.h"
 #include "core/sac/deploy_profile.h"
@@ -61,8 +62,9 @@ std::vector<double> LookaheadPolicy::values(const PartState& state, double face_
   std::vector<std::shared_ptr<const PartState>> keep;
   std::vector<const PartState*> batch;
   long reused = 0;
-  for (const LineCandidate& line : state.lines) {
-    for (const Part& piece : line.to_cut) {
+  const std::vector<size_t> shortlisted = shortlist(state, face_size);
+  for (const size_t l : shortlisted) {
+    for (const Part& piece : state.lines[l].to_cut) {
       const auto [slot, inserted] = values_.try_emplace(piece, 0.0);
       if (!inserted) {
         reused += std::find_if(fresh.begin(), fresh.end(), [&](const Part* p) { return *p == piece; }) == fresh.end();
@@ -96,14 +98,51 @@ std::vector<double> LookaheadPolicy::values(const PartState& state, double face_
       values_[*fresh[p]] = mean / views;
     }
   }
-  std::vector<double> q;
-  q.reserve(state.lines.size());
-  for (const LineCandidate& line : state.lines) {
+  std::vector<double> q(state.lines.size(), -std::numeric_limits<double>::infinity());
+  for (const size_t l : shortlisted) {
+    const LineCandidate& line = state.lines[l];
     double value = line.reward;
     for (const Part& piece : line.to_cut) value += agent_->config().gamma * values_.at(piece);
-    q.push_back(value);
+    q[l] = value;
   }
   return q;
+}
+
+std::vector<size_t> LookaheadPolicy::shortlist(const PartState& state, double face_size) {
+  std::vector<size_t> order(state.lines.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  const int k = agent_->config().deploy_top_k;
+  if (k <= 0 || static_cast<size_t>(k) >= order.size()) return order;
+  std::vector<double> score;
+  score.reserve(state.lines.size());
+  for (const LineCandidate& line : state.lines) {
+    double s = line.reward;
+    for (const Part& piece : line.to_cut) s += agent_->config().gamma * piece_estimate(piece, face_size);
+    score.push_back(s);
+  }
+  std::partial_sort(order.begin(), order.begin() + k, order.end(),
+                    [&](size_t a, size_t b) { return score[a] != score[b] ? score[a] > score[b] : a < b; });
+  order.resize(static_cast<size_t>(k));
+  std::sort(order.begin(), order.end());
+  return order;
+}
+
+double LookaheadPolicy::piece_estimate(const Part& piece, double face_size) {
+  const auto cached = estimates_.find(piece);
+  if (cached != estimates_.end()) return cached->second;
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<CornerRing> loops = part_boundary(piece);
+  const PartLookahead ahead = look_ahead(piece, loops, face_size, agent_->config().reward);
+  double best = ahead.lines.empty() ? 0.0 : -std::numeric_limits<double>::infinity();
+  for (const LineCandidate& line : ahead.lines) best = std::max(best, line.reward);
+  int reflex = 0;
+  for (const CornerRing& loop : loops) {
+    for (const Corner& corner : loop) reflex += corner.reflex;
+  }
+  const double estimate = best * std::max(1.0, 0.5 * (reflex + 1));
+  deploy_profile().lookahead_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  estimates_.emplace(piece, estimate);
+  return estimate;
 }
 
 std::shared_ptr<const PartState> LookaheadPolicy::state_of(const Part& part, double face_size) {

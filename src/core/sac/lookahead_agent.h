@@ -33,6 +33,22 @@
 // part's state (graph, lookahead) and a piece's value are kept, keyed by the part (its cells on the
 // face's grid, which identify it within one face), and the pieces a step has not valued yet go
 // through the network as one batch.
+//
+// Pruned deployment (deploy_top_k = k > 0, issue 8): the network's forward pass over the pieces of
+// every cut is nearly all of a learned decomposition's time, so only the pieces of the k cuts with
+// the best two-step score
+//   S(P, L) = reward(P, L) + gamma * sum over its pieces Q left to cut of E(Q),
+//   E(Q) = (the best reward of one cut of Q) * max(1, (r + 1) / 2), r = Q's reflex corners
+// are valued (ties: the earlier cut), and the argmax is taken among them. E is a guess at what is
+// left to earn from Q without its graph or the network: its best next cut's reward times about the
+// number of cuts Q still needs (a cut through a reflex corner removes one or two of them). Measured
+// on validation faces (BENCHMARKS.md) it keeps the network's choice much better than the immediate
+// reward or the best next reward alone, which prefer cuts that finish pieces early. S is a function
+// of the part alone, so the decisions do not depend on what the caches hold; with k at least the
+// number of cuts the decisions are those of the unpruned policy. Training values every cut (its
+// soft Bellman target is over all cuts: W learns the value of the whole maximum-entropy policy); a
+// policy file records its deploy_top_k, and files without one (every policy before this) value
+// every cut.
 #pragma once
 
 #include <algorithm>
@@ -63,8 +79,11 @@ class LookaheadPolicy : public Policy {
 
   // Q(P, L) for every candidate cut of state (a lookahead state of this policy's face); a piece's
   // value is the mean of the network's values over deploy_views symmetric views of it, computed
-  // once per piece.
+  // once per piece. Cuts outside the shortlist (pruned deployment) get minus infinity.
   std::vector<double> values(const PartState& state, double face_size);
+  // The indices (increasing) of the cuts of state whose pieces the network values: all of them, or
+  // with deploy_top_k = k > 0 the k best by the two-step score S (see above).
+  std::vector<size_t> shortlist(const PartState& state, double face_size);
   // The part's lookahead state, built once.
   std::shared_ptr<const PartState> state_of(const Part& part, double face_size);
   size_t valued_pieces() const { return values_.size(); }
@@ -76,6 +95,8 @@ class LookaheadPolicy : public Policy {
   std::unordered_map<Part, std::shared_ptr<const PartState>, PartHash> states_;
   std::unordered_map<Part, std::shared_ptr<const PartState>, PartHash> refined_views_[8];  // refined graphs only
   std::unordered_map<Part, double, PartHash> values_;  // W of pieces, mean over the views
+  std::unordered_map<Part, double, PartHash> estimates_;  // pruning: E of pieces (see above)
+  double piece_estimate(const Part& piece, double face_size);
 };
 
 class LookaheadAgent : public LearningAgent {
@@ -102,6 +123,8 @@ class LookaheadAgent : public LearningAgent {
   double temperature() const;
   // Overrides the configuration's deploy_views (1 to 8) of this agent's deployed policies.
   void set_deploy_views(int views) { config_.deploy_views = std::max(1, std::min(8, views)); }
+  // Overrides the configuration's deploy_top_k (0: every cut) of this agent's deployed policies.
+  void set_deploy_top_k(int k) { config_.deploy_top_k = std::max(0, k); }
   // Whether this agent's deployed policies keep the pieces' values from step to step (default
   // true). Off, every step values all its pieces again, as before issue 8 (for benchmarks).
   void set_deploy_reuse(bool reuse) { deploy_reuse_ = reuse; }

@@ -14,6 +14,11 @@ SacConfig default_sac_config(const std::string& agent) {
     // averaging two symmetric views each add about half a point of the optimal return.
     config.weight_average_decay = 0.998;
     config.deploy_views = 2;
+    // Measured on validation faces (BENCHMARKS.md, issue 8): the network values the pieces of the 6
+    // best cuts by the two-step score (lookahead_agent.h), about half the graphs on 2-10 rectangle
+    // faces and a fifth on 11-40; the smallest k at which both rewards' policies keep their quality
+    // targets (with 3, Eq. (1)'s loses about 2 points of the optimal return on 11-40 faces).
+    config.deploy_top_k = 6;
   } else {
     throw InputError("unknown agent '" + agent + "' (expected paper or lookahead)");
   }
@@ -70,6 +75,7 @@ nlohmann::json sac_config_json(const SacConfig& c) {
           {"lr_final_fraction", c.lr_final_fraction},
           {"weight_average_decay", c.weight_average_decay},
           {"deploy_views", c.deploy_views},
+          {"deploy_top_k", c.deploy_top_k},
           {"polyak", c.polyak},
           {"target_update_every", c.target_update_every},
           {"direction_target_entropy", c.direction_target_entropy},
@@ -108,6 +114,8 @@ SacConfig sac_config_from_json(const nlohmann::json& j) {
     if (!(c.weight_average_decay >= 0.0 && c.weight_average_decay < 1.0)) throw InputError("weight_average_decay must be in [0, 1)");
     c.deploy_views = j.value("deploy_views", 1);
     if (c.deploy_views < 1 || c.deploy_views > 8) throw InputError("deploy_views must be in 1..8");
+    c.deploy_top_k = j.value("deploy_top_k", 0);  // files written before it: every cut is valued
+    if (c.deploy_top_k < 0) throw InputError("deploy_top_k must be >= 0");
     c.polyak = j.at("polyak").get<double>();
     c.target_update_every = j.at("target_update_every").get<int>();
     c.direction_target_entropy = j.at("direction_target_entropy").get<double>();

@@ -41,6 +41,9 @@ struct SacConfig {
                                         // update (0: the trained weights themselves)
   int deploy_views = 1;                 // lookahead, deployed: a piece's value is the mean over this
                                         // many of the square's symmetries of it (1 to 8)
+  int deploy_top_k = 0;                 // lookahead, deployed: the network values only the pieces of
+                                        // the k most promising cuts by a cheap two-step score
+                                        // (lookahead_agent.h); 0: every cut (files without it)
   double polyak = 0.01;                 // paper: target networks move this fraction per update
   int target_update_every = 25;         // lookahead: the target network is copied every so many updates
   double direction_target_entropy = 0.3;     // nats; ln 2 = 0.69 is the maximum for 2 directions

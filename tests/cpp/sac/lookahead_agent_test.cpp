@@ -1,6 +1,8 @@
 #include "support/catch_torch.h"
 
 #include <cmath>
+#include <limits>
+#include <sstream>
 
 #include "core/data/thin_features.h"
 #include "core/env/decomposition.h"
@@ -168,9 +170,123 @@ TEST_CASE("the deployed policy's cached values are what a fresh evaluation gives
       LookaheadPolicy fresh(agent, "fresh");
       const std::vector<double> expected = fresh.values(*fresh.state_of(episode.current_part(), face.size), face.size);
       REQUIRE(q.size() == expected.size());
-      for (size_t k = 0; k < q.size(); ++k) CHECK(q[k] == Approx(expected[k]).epsilon(1e-5).margin(1e-5));
+      for (size_t k = 0; k < q.size(); ++k) {
+        if (std::isinf(expected[k])) {
+          CHECK(q[k] == expected[k]);  // a cut the default deployment prunes
+        } else {
+          CHECK(q[k] == Approx(expected[k]).epsilon(1e-5).margin(1e-5));
+        }
+      }
       episode.step(cached.choose(episode));
     }
   }
   CHECK(reused > 0);
+}
+
+namespace {
+
+// A copy of agent's network deployed with deploy_top_k = k (the same weights: a policy file's
+// round trip is not needed, the agents share nothing but the configuration).
+std::shared_ptr<LookaheadAgent> with_top_k(const std::shared_ptr<LookaheadAgent>& agent, int k) {
+  auto copy = std::make_shared<LookaheadAgent>(agent->config());
+  torch::serialize::OutputArchive out;
+  agent->save(out, false);
+  std::ostringstream bytes;
+  out.save_to(bytes);
+  torch::serialize::InputArchive in;
+  std::istringstream read(bytes.str());
+  in.load_from(read);
+  copy->load(in, false);
+  copy->set_deploy_top_k(k);
+  return copy;
+}
+
+}  // namespace
+
+TEST_CASE("pruning with k at least the number of cuts decides as the unpruned policy", "[sac][lookahead][policy]") {
+  torch::manual_seed(8);
+  auto agent = std::make_shared<LookaheadAgent>(default_sac_config("lookahead"));
+  agent->set_deploy_top_k(0);
+  const GeneratorOptions options = thin_feature_options(6, 10);
+  for (const GeneratedShape& shape : test::generated_shapes(4, 10, options)) {
+    const GridFace face = make_grid_face(shape.polygon);
+    LookaheadPolicy all(agent, "all");
+    const Decomposition unpruned = decompose_face(face, all);
+    LookaheadPolicy probe(agent, "probe");
+    const size_t cuts = probe.state_of(face.whole, face.size)->lines.size();
+    for (const int k : {static_cast<int>(cuts), 1000}) {
+      LookaheadPolicy pruned(with_top_k(agent, k), "pruned");
+      const Decomposition d = decompose_face(face, pruned);
+      REQUIRE(d.cuts.size() == unpruned.cuts.size());
+      for (size_t c = 0; c < d.cuts.size(); ++c) {
+        CHECK(d.cuts[c].vertex.i == unpruned.cuts[c].vertex.i);
+        CHECK(d.cuts[c].vertex.j == unpruned.cuts[c].vertex.j);
+        CHECK(d.cuts[c].direction == unpruned.cuts[c].direction);
+      }
+      CHECK(d.total_return == unpruned.total_return);
+    }
+  }
+}
+
+TEST_CASE("a pruned policy values the k best cuts by the two-step score and picks the best of them",
+          "[sac][lookahead][policy]") {
+  torch::manual_seed(9);
+  auto agent = std::make_shared<LookaheadAgent>(default_sac_config("lookahead"));
+  agent->set_deploy_top_k(0);
+  const int k = 2;
+  auto pruned_agent = with_top_k(agent, k);
+  const GeneratorOptions options = thin_feature_options(6, 10);
+  int steps = 0, pruned_steps = 0;
+  for (const GeneratedShape& shape : test::generated_shapes(4, 11, options)) {
+    const GridFace face = make_grid_face(shape.polygon);
+    LookaheadPolicy pruned(pruned_agent, "pruned");
+    Episode episode(face);
+    while (episode.running()) {
+      const auto state = pruned.state_of(episode.current_part(), face.size);
+      const std::vector<size_t> shortlist = pruned.shortlist(*state, face.size);
+      const std::vector<double> q = pruned.values(*state, face.size);
+      LookaheadPolicy fresh(agent, "fresh");  // unpruned, empty caches
+      const std::vector<double> full = fresh.values(*fresh.state_of(episode.current_part(), face.size), face.size);
+      REQUIRE(q.size() == full.size());
+      REQUIRE(shortlist.size() == std::min<size_t>(k, q.size()));
+      // The two-step score, by hand: reward + sum over the pieces of their best one-cut reward
+      // times max(1, (reflex corners + 1) / 2).
+      std::vector<double> score;
+      for (const LineCandidate& line : state->lines) {
+        double s = line.reward;
+        for (const Part& piece : line.to_cut) {
+          const std::vector<CornerRing> loops = part_boundary(piece);
+          double best = -std::numeric_limits<double>::infinity();
+          for (const LineCandidate& next : look_ahead(piece, loops, face.size, RewardPreset::Paper).lines) {
+            best = std::max(best, next.reward);
+          }
+          int reflex = 0;
+          for (const CornerRing& loop : loops) {
+            for (const auto& corner : loop) reflex += corner.reflex;
+          }
+          s += agent->config().gamma * best * std::max(1.0, 0.5 * (reflex + 1));
+        }
+        score.push_back(s);
+      }
+      size_t best = shortlist.front();
+      for (size_t l = 0; l < q.size(); ++l) {
+        const bool listed = std::find(shortlist.begin(), shortlist.end(), l) != shortlist.end();
+        if (!listed) {
+          CHECK(q[l] == -std::numeric_limits<double>::infinity());
+          for (const size_t s : shortlist) CHECK(score[s] >= score[l]);
+          continue;
+        }
+        CHECK(q[l] == Approx(full[l]).epsilon(1e-5).margin(1e-5));  // the cache stays exact
+        if (q[l] > q[best]) best = l;
+      }
+      const Action chosen = pruned.choose(episode);
+      CHECK(chosen.vertex == state->lines[best].vertex);
+      CHECK(chosen.direction == state->lines[best].line.direction);
+      episode.step(chosen);
+      ++steps;
+      pruned_steps += q.size() > shortlist.size();
+    }
+  }
+  CHECK(steps > 8);
+  CHECK(pruned_steps > 4);
 }

@@ -14,16 +14,21 @@ TEST_CASE("the deployment options round-trip, default for older files and are ch
   CHECK(config.weight_average_decay == 0.998);
   CHECK(config.deploy_views == 2);
   CHECK(config.lr_final_fraction == 1.0);
+  CHECK(config.deploy_top_k == 6);
   CHECK(default_sac_config("paper").deploy_views == 1);
+  CHECK(default_sac_config("paper").deploy_top_k == 0);
   config.lr_final_fraction = 0.25;
+  config.deploy_top_k = 5;
   const SacConfig back = sac_config_from_json(sac_config_json(config));
   CHECK(back.weight_average_decay == 0.998);
   CHECK(back.deploy_views == 2);
   CHECK(back.lr_final_fraction == 0.25);
+  CHECK(back.deploy_top_k == 5);
 
   // A file written before these options existed deploys as it was trained: no average, one view,
-  // constant learning rate.
+  // constant learning rate, every cut valued.
   nlohmann::json old = sac_config_json(config);
+  old.erase("deploy_top_k");
   old.erase("weight_average_decay");
   old.erase("deploy_views");
   old.erase("lr_final_fraction");
@@ -31,10 +36,11 @@ TEST_CASE("the deployment options round-trip, default for older files and are ch
   CHECK(legacy.weight_average_decay == 0.0);
   CHECK(legacy.deploy_views == 1);
   CHECK(legacy.lr_final_fraction == 1.0);
+  CHECK(legacy.deploy_top_k == 0);
 
   for (const auto& [key, value] : std::vector<std::pair<std::string, nlohmann::json>>{
            {"deploy_views", 0}, {"deploy_views", 9}, {"weight_average_decay", 1.0}, {"weight_average_decay", -0.1},
-           {"lr_final_fraction", 0.0}, {"lr_final_fraction", 1.5}}) {
+           {"lr_final_fraction", 0.0}, {"lr_final_fraction", 1.5}, {"deploy_top_k", -1}}) {
     nlohmann::json bad = sac_config_json(config);
     bad[key] = value;
     INFO(key << " = " << value);

@@ -1,0 +1,50 @@
+#include "support/catch_torch.h"
+
+#include "core/api/training_job.h"
+#include "core/common/error.h"
+#include "core/geometry/grid_face.h"
+#include "core/sac/lookahead_agent.h"
+#include "core/sac/policy_file.h"
+#include "support/test_shapes.h"
+
+using namespace autoblock;
+
+TEST_CASE("a finished run resumed with deployment settings writes the same network deployed so", "[api][train]") {
+  const std::string folder = test::temporary_folder("training-job-deploy");
+  TrainingJob job;
+  job.output = folder + "/p.pt";
+  job.train_generate.count = 3;
+  job.train_generate.seed = 70;
+  job.test_generate.count = 2;
+  job.test_generate.seed = 71;
+  job.episodes = 2;
+  job.eval_every = 1;
+  job.seed = 3;
+  run_training_job(job, {});
+  const LoadedPolicy first = load_policy_file(job.output, false);
+  CHECK(first.agent->config().deploy_top_k == default_sac_config("lookahead").deploy_top_k);
+
+  TrainingJob again = job;
+  again.resume = true;
+  again.checkpoint = job.output + ".checkpoint";
+  again.output = folder + "/q.pt";
+  again.settings = {"deploy_top_k=3", "deploy_views=1"};
+  const TrainingOutcome outcome = run_training_job(again, {});
+  CHECK(outcome.episodes_done == 2);
+  const LoadedPolicy second = load_policy_file(again.output, false);
+  CHECK(second.agent->config().deploy_top_k == 3);
+  CHECK(second.agent->config().deploy_views == 1);
+  // The network is the trained one: the same values.
+  const auto a = std::dynamic_pointer_cast<LookaheadAgent>(first.agent);
+  const auto b = std::dynamic_pointer_cast<LookaheadAgent>(second.agent);
+  REQUIRE(a);
+  REQUIRE(b);
+  const GridFace face = make_grid_face(test::generated_shapes(1, 72, GeneratorOptions{}).front().polygon);
+  const auto state = make_part_state(face.whole, a->state_options(face.size));
+  CHECK(a->deployed_values({state.get()}) == b->deployed_values({state.get()}));
+
+  // Settings that change training still apply to fresh runs only.
+  TrainingJob changed = again;
+  changed.settings = {"gamma=0.5"};
+  CHECK_THROWS_AS(run_training_job(changed, {}), InputError);
+}
