@@ -931,10 +931,12 @@ class TestTrainPanel(GuiTestCase):
             clock.stop()
             self.assertIsNone(panel.run)
             self.assertIsNone(run.error)
-            # FreeCAD's event loop kept running while the core trained.
+            # FreeCAD's event loop kept running while the core trained (a training that held the GIL
+            # would freeze it for the whole run, tens of seconds; 3 s leaves room for a busy machine,
+            # where a 1.9 s gap was seen with both cores taken by other work).
             gaps = [b - a for a, b in zip([start] + ticks, ticks)]
             self.assertGreater(len(ticks), 5)
-            self.assertLess(max(gaps), 1.5, "the GUI stalled for {:.2f} s".format(max(gaps)))
+            self.assertLess(max(gaps), 3.0, "the GUI stalled for {:.2f} s".format(max(gaps)))
             self.assertEqual(form.progressBar.value(), 140)
             self.assertEqual(len(panel.plot.train), 140)
             self.assertEqual(len(panel.plot.test), 14)

@@ -107,7 +107,9 @@ IntervalAssignment assign_edge_intervals(const BlockModel& model, const Interval
   auto t_col = [](size_t e) { return static_cast<int>(3 + 2 * e); };
   for (size_t e = 0; e < n_edges; ++e) {
     glp_set_col_kind(lp, n_col(e), GLP_IV);
-    glp_set_col_bnds(lp, n_col(e), GLP_DB, std::max(1, options.min_intervals), kMaxEdgeIntervals);
+    int least = std::max(1, options.min_intervals);
+    if (e < options.edge_minimum.size()) least = std::max(least, options.edge_minimum[e]);
+    glp_set_col_bnds(lp, n_col(e), GLP_DB, least, std::max<double>(least, kMaxEdgeIntervals));
     glp_set_col_bnds(lp, t_col(e), GLP_LO, 0.0, 0.0);
     glp_set_obj_coef(lp, t_col(e), mean_weight);
   }

@@ -52,6 +52,7 @@ struct IntervalOptions {
   long max_quads = kMaxMeshQuads;
   double time_limit = 30.0;  // seconds for GLPK
   int min_intervals = 1;     // a general face's model edges (edge_intervals.h): at least this many each
+  std::vector<int> edge_minimum;  // a general face's: per model edge, at least this many (empty: none)
 };
 
 struct IntervalAssignment {

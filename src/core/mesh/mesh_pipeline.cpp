@@ -65,11 +65,13 @@ double checked_target_size(const InputFace& face, const MeshOptions& options, Me
 
 // The user's fixed counts made by fix (per stretch), then the assignment by assign, into result.
 template <class Fix, class Assign>
-void assign_with_fixed(MeshResult& result, const MeshOptions& options, double h, Fix fix, Assign assign) {
+void assign_with_fixed(MeshResult& result, const MeshOptions& options, double h, Fix fix, Assign assign,
+                       const std::vector<int>& edge_minimum = {}) {
   IntervalOptions interval_options;
   interval_options.target_size = h;
   interval_options.max_quads = options.max_quads;
   interval_options.min_intervals = options.min_edge_intervals;
+  interval_options.edge_minimum = edge_minimum;
   for (const EdgeIntervals& e : options.fixed) interval_options.fixed.push_back(fix(e));
   result.fixed = interval_options.fixed;
   result.intervals = assign(interval_options);
@@ -169,6 +171,43 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   start = std::chrono::steady_clock::now();
   result.mesh = block_model_mesh(result.block_model, result.intervals.intervals, face.planar.z);
   result.smoothing = smooth_quad_mesh(result.mesh, options.smoothing_sweeps);
+  // A thin part whose two long sides have their vertices at different places along it gets a twisted
+  // (inverted) quad when those sides carry few intervals, each vertex being a node: up to three times,
+  // the edges of the parts with an inverted quad get twice their count as a minimum, and intervals
+  // and mesh are made again (stopping where the quad limit or fixed counts forbid it).
+  std::vector<int> edge_minimum(result.block_model.edges.size(), 0);
+  for (int round = 0; round < 3; ++round) {
+    std::vector<char> twisted(d.finished.size(), 0);
+    bool any = false;
+    for (size_t k = 0; k < result.mesh.quads.size(); ++k) {
+      const auto& quad = result.mesh.quads[k];
+      const std::array<Point2, 4> corners{result.mesh.nodes[static_cast<size_t>(quad[0])], result.mesh.nodes[static_cast<size_t>(quad[1])],
+                                          result.mesh.nodes[static_cast<size_t>(quad[2])], result.mesh.nodes[static_cast<size_t>(quad[3])]};
+      if (quad_scaled_jacobian(corners) > 0.0) continue;
+      twisted[static_cast<size_t>(result.mesh.quad_block[k])] = 1;
+      any = true;
+    }
+    if (!any) break;
+    for (const ModelBlock& block : result.block_model.blocks) {
+      if (!twisted[static_cast<size_t>(block.part)]) continue;
+      for (const ModelSide& side : block.sides) {
+        for (const int e : side.edges) {
+          edge_minimum[static_cast<size_t>(e)] = std::max(edge_minimum[static_cast<size_t>(e)], 2 * result.intervals.intervals[static_cast<size_t>(e)]);
+        }
+      }
+    }
+    MeshResult finer = result;
+    try {
+      assign_with_fixed(finer, options, h, [&](const EdgeIntervals& e) {
+        return fixed_edge_intervals(finer.block_model, e.a, e.b, e.intervals, tolerance);
+      }, [&](const IntervalOptions& o) { return assign_edge_intervals(finer.block_model, o); }, edge_minimum);
+    } catch (const InputError&) {
+      break;  // too many quads, or the fixed counts forbid more
+    }
+    finer.mesh = block_model_mesh(finer.block_model, finer.intervals.intervals, face.planar.z);
+    finer.smoothing = smooth_quad_mesh(finer.mesh, options.smoothing_sweeps);
+    result = std::move(finer);
+  }
   result.mesh_seconds = since(start);
 
   start = std::chrono::steady_clock::now();

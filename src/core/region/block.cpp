@@ -104,7 +104,17 @@ std::optional<std::array<int, 4>> block_corners(const Region& region, const Bloc
   return corners;
 }
 
-bool template_applies(const Region& region) { return region.is_convex(); }
+bool template_applies(const Region& region) {
+  if (region.is_convex()) return true;
+  if (region.is_empty() || !region.holes().empty()) return false;
+  // Convex but for side vertices turned a little the other way (within the flat tolerance; rounding
+  // to the lattice makes them): they lie on the template's sides, as on a block's.
+  const Ring& ring = region.outer();
+  for (size_t i = 0; i < ring.size(); ++i) {
+    if (is_reflex_vertex(ring, i) && !is_side_vertex(ring, i, BlockRules{})) return false;
+  }
+  return true;
+}
 
 namespace {
 

@@ -41,7 +41,8 @@ inline bool is_block(const Region& region, const BlockRules& rules = {}) {
   return block_corners(region, rules).has_value();
 }
 
-// Inputs:  region; rules. Output: true when the template can finish it (convex, no holes).
+// Inputs:  region. Output: true when the template can finish it: no holes, convex but for side
+//          vertices (within the default flat tolerance) that turn slightly inwards.
 bool template_applies(const Region& region);
 
 // Inputs:  region, convex (template_applies); rules (which vertices are side vertices).

@@ -733,6 +733,13 @@ namespace {
 // has an area of at most q times its perimeter. A cut that grazes a vertex, ends within 2 q of a
 // corner, or leaves a neck or a sliver narrower than the lattice can tell is one that OpenCASCADE,
 // cutting the real face at the face's tolerance, would read differently (see region_cut.h).
+// A piece whose mean width (twice its area over its perimeter) is at most 16 quanta is a sliver: no
+// block of it could be meshed (the block model merges vertices within 1.5 quanta).
+constexpr double kSliverWidthQuanta = 8.0;
+// A chord passing within this many quanta of a vertex that is not its end would leave an edge or a
+// corner too small to mesh (the cut should have gone through the vertex: the candidates have that cut).
+constexpr double kClearanceQuanta = 8.0;
+
 bool acceptable(const Region& region, const std::vector<Region>& pieces, const std::vector<Chord>& chords, bool forced) {
   const double q = region.quantum();
   double area = 0.0, length = 0.0;
@@ -741,16 +748,34 @@ bool acceptable(const Region& region, const std::vector<Region>& pieces, const s
     const double perimeter = region_perimeter(piece);
     area += piece.area();
     length += perimeter;
-    sliver = sliver || piece.area() <= q * perimeter;
+    sliver = sliver || piece.area() <= kSliverWidthQuanta * q * perimeter;
   }
   if (std::fabs(area - region.area()) > q * length) return false;
+  // Two chords meeting at a point (a line through a hole's corner, tangent to the hole there) can
+  // leave a piece whose loops touch at that point: a pinched part no cut can finish. Refused, forced
+  // or not.
+  for (size_t i = 0; i < chords.size(); ++i) {
+    for (size_t j = i + 1; j < chords.size(); ++j) {
+      const Chord& a = chords[i];
+      const Chord& b = chords[j];
+      if (!(a.a == b.a || a.a == b.b || a.b == b.a || a.b == b.b)) continue;
+      for (const Region& piece : pieces) {
+        std::vector<Point2> points;
+        for (int k = 0; k < piece.loop_count(); ++k) points.insert(points.end(), piece.loop(k).begin(), piece.loop(k).end());
+        std::sort(points.begin(), points.end(), [](Point2 u, Point2 v) { return u.x < v.x || (u.x == v.x && u.y < v.y); });
+        if (std::adjacent_find(points.begin(), points.end()) != points.end()) return false;
+      }
+      i = chords.size();  // every piece checked once
+      break;
+    }
+  }
+  if (sliver) return false;  // forced or not: a piece thinner than the lattice cannot be finished
   if (forced) return true;
-  if (sliver) return false;
   for (int k = 0; k < region.loop_count(); ++k) {
     for (const Point2& v : region.loop(k)) {
       for (const Chord& c : chords) {
         if ((v.x == c.a.x && v.y == c.a.y) || (v.x == c.b.x && v.y == c.b.y)) continue;
-        if (segment_distance_squared(v, c.a, c.b) <= 4.0 * q * q) return false;
+        if (segment_distance_squared(v, c.a, c.b) <= kClearanceQuanta * kClearanceQuanta * q * q) return false;
       }
     }
   }

@@ -13,12 +13,14 @@
 // boundary, or only joins the outer boundary to a hole, leaving a slit) changes nothing: the result
 // is the region itself, N = 1. So does a cut that would leave a piece whose hole comes within one
 // quantum of another of its loops (a cut nearly, but not exactly, along a hole's edge): rounding
-// would make the loops touch, and such a piece is not a valid part. And so does a cut whose chords pass
-// within two quanta of a vertex of the region that is not one of their ends (a chord grazing a vertex,
-// a T-junction within two quanta of a corner, a neck narrower than that) or that leaves a sliver (a
-// piece whose area is at most a quantum times its perimeter): OpenCASCADE, cutting the real face at
-// the face's tolerance (region_replay.h), would read such a cut differently; clear of that, it makes
-// exactly the engine's pieces.
+// would make the loops touch, and such a piece is not a valid part; or a piece whose loops touch at a
+// point (two chords meeting there: a line through a hole's corner, tangent to the hole). And so does
+// a cut whose chords pass within eight quanta of a vertex of the region that is not one of their ends
+// (a chord grazing a vertex, a T-junction within eight quanta of a corner, a neck narrower than that)
+// or that leaves a sliver (a piece whose area is at most eight quanta times its perimeter, a mean
+// width of 16 quanta): OpenCASCADE, cutting the real face at the face's tolerance (region_replay.h),
+// would read such a cut differently, and the mesher could not use an edge or a piece that small;
+// clear of that, it makes exactly the engine's pieces.
 #pragma once
 
 #include <string>
@@ -38,8 +40,9 @@ struct RegionCut {
   CutKind kind = CutKind::Full;
   Point2 origin;
   Point2 direction{1.0, 0.0};
-  // Taken even when its chords pass within two quanta of a vertex (see above): only progress_action's
-  // last resort (region_candidates.h) sets it, on a part where no cut keeps clear.
+  // Taken even when its chords pass within eight quanta of a vertex (see above; never a sliver or a
+  // pinched piece): only progress_action's last resort (region_candidates.h) sets it, on a part where
+  // no cut keeps clear.
   bool forced = false;
 };
 
