@@ -21,7 +21,6 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
   if (face.is_general()) {
     options.general.max_steps = settings.max_steps;
     options.general.reward = out.decomposition.region.reward;
-    options.general.corner_fraction = settings.corner_fraction;
     out.result = mesh_region_decomposition(face, out.decomposition.region, options);
     // A poor mesh from the search: other block rules may do better (a face whose good blocks need
     // corners just outside the rules, or whose rules forbid the cut that matters).
@@ -34,10 +33,9 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
       const double fraction = retry_with.corner_fraction;
       decompose.corner_fraction = fraction;
       decompose.policy_settings.general_search_width = retry_with.width;
+      // (The replay takes its block rules from the decomposition: no options to change for it.)
       FaceDecomposition again = decompose_input_face(face, decompose);
-      MeshOptions retry = options;
-      retry.general.corner_fraction = fraction;  // the replay's block rules are the search's
-      MeshResult meshed = mesh_region_decomposition(face, again.region, retry);
+      MeshResult meshed = mesh_region_decomposition(face, again.region, options);
       ++out.attempts;
       if (ratio(meshed) > ratio(out.result)) {
         out.decomposition = std::move(again);
@@ -52,7 +50,6 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
     // limit forbid it.
     if (searched && ratio(out.result) < kRetryBelow && options.min_edge_intervals < 2) {
       MeshOptions finer = options;
-      finer.general.corner_fraction = out.corner_fraction;
       finer.min_edge_intervals = 2;
       try {
         MeshResult meshed = mesh_region_decomposition(face, out.decomposition.region, finer);

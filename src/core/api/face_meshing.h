@@ -36,9 +36,9 @@ struct FaceMeshing {
 //          reports it: FaceMeshing::result.conformity). A general face searched (auto, search) whose
 //          mesh stays below kRetryBelow of its bound is searched again (kSearchRetries: wider, then
 //          with stricter and with looser block rules) until one reaches it, and the conformal mesh with
-//          the best minimum scaled Jacobian is kept; if still below, the kept blocks are meshed again with at least two intervals per
-//          model edge, kept if better (attempts, search_width, corner_fraction and min_edge_intervals
-//          say what was kept); each search has the time limit.
+//          the best minimum scaled Jacobian is kept; if still below, the kept blocks are meshed again
+//          with at least two intervals per model edge, kept if better (attempts, search_width,
+//          corner_fraction and min_edge_intervals say what was kept); each search has the time limit.
 // Throws InputError for a bad policy, reward or request (see decompose_input_face, mesh_decomposition).
 constexpr double kRetryBelow = 0.85;
 struct SearchRetry {

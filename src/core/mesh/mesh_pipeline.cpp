@@ -180,10 +180,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     std::vector<char> twisted(d.finished.size(), 0);
     bool any = false;
     for (size_t k = 0; k < result.mesh.quads.size(); ++k) {
-      const auto& quad = result.mesh.quads[k];
-      const std::array<Point2, 4> corners{result.mesh.nodes[static_cast<size_t>(quad[0])], result.mesh.nodes[static_cast<size_t>(quad[1])],
-                                          result.mesh.nodes[static_cast<size_t>(quad[2])], result.mesh.nodes[static_cast<size_t>(quad[3])]};
-      if (quad_scaled_jacobian(corners) > 0.0) continue;
+      if (quad_scaled_jacobian(result.mesh.corners(k)) > 0.0) continue;
       twisted[static_cast<size_t>(result.mesh.quad_block[k])] = 1;
       any = true;
     }
@@ -196,17 +193,16 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
         }
       }
     }
-    MeshResult finer = result;
+    // assign_with_fixed changes result's intervals only when the assignment succeeds.
     try {
-      assign_with_fixed(finer, options, h, [&](const EdgeIntervals& e) {
-        return fixed_edge_intervals(finer.block_model, e.a, e.b, e.intervals, tolerance);
-      }, [&](const IntervalOptions& o) { return assign_edge_intervals(finer.block_model, o); }, edge_minimum);
+      assign_with_fixed(result, options, h, [&](const EdgeIntervals& e) {
+        return fixed_edge_intervals(result.block_model, e.a, e.b, e.intervals, tolerance);
+      }, [&](const IntervalOptions& o) { return assign_edge_intervals(result.block_model, o); }, edge_minimum);
     } catch (const InputError&) {
-      break;  // too many quads, or the fixed counts forbid more
+      break;  // too many quads, or the fixed counts forbid more: the mesh stays as it is
     }
-    finer.mesh = block_model_mesh(finer.block_model, finer.intervals.intervals, face.planar.z);
-    finer.smoothing = smooth_quad_mesh(finer.mesh, options.smoothing_sweeps);
-    result = std::move(finer);
+    result.mesh = block_model_mesh(result.block_model, result.intervals.intervals, face.planar.z);
+    result.smoothing = smooth_quad_mesh(result.mesh, options.smoothing_sweeps);
   }
   result.mesh_seconds = since(start);
 

@@ -726,13 +726,6 @@ bool partial_cut_end(const Region& region, Point2 origin, Point2 direction, Poin
 
 namespace {
 
-// True when the pieces tile the part (rounding to the lattice changes the area by at most q per unit
-// of boundary: a safety net, with loops that touch refused this holds by construction) and, unless
-// the cut is forced, the cut keeps clear of the region's vertices and leaves no sliver: every vertex
-// of the region that is not an end of a chord lies farther than 2 q from every chord, and no piece
-// has an area of at most q times its perimeter. A cut that grazes a vertex, ends within 2 q of a
-// corner, or leaves a neck or a sliver narrower than the lattice can tell is one that OpenCASCADE,
-// cutting the real face at the face's tolerance, would read differently (see region_cut.h).
 // A piece whose mean width (twice its area over its perimeter) is at most 16 quanta is a sliver: no
 // block of it could be meshed (the block model merges vertices within 1.5 quanta).
 constexpr double kSliverWidthQuanta = 8.0;
@@ -740,6 +733,14 @@ constexpr double kSliverWidthQuanta = 8.0;
 // corner too small to mesh (the cut should have gone through the vertex: the candidates have that cut).
 constexpr double kClearanceQuanta = 8.0;
 
+// True when the pieces tile the part (rounding to the lattice changes the area by at most q per unit
+// of boundary: a safety net, with loops that touch refused this holds by construction), no piece is
+// pinched (its loops touching at a point) or a sliver (area at most kSliverWidthQuanta q times its
+// perimeter), and, unless the cut is forced, the cut keeps clear of the region's vertices: every
+// vertex of the region that is not an end of a chord lies farther than kClearanceQuanta q from every
+// chord. A cut that grazes a vertex, ends that close to a corner, or leaves a neck or a sliver that
+// narrow is one that OpenCASCADE, cutting the real face at the face's tolerance, would read
+// differently, and whose pieces the mesher could not use (see region_cut.h).
 bool acceptable(const Region& region, const std::vector<Region>& pieces, const std::vector<Chord>& chords, bool forced) {
   const double q = region.quantum();
   double area = 0.0, length = 0.0;
@@ -752,21 +753,24 @@ bool acceptable(const Region& region, const std::vector<Region>& pieces, const s
   }
   if (std::fabs(area - region.area()) > q * length) return false;
   // Two chords meeting at a point (a line through a hole's corner, tangent to the hole there) can
-  // leave a piece whose loops touch at that point: a pinched part no cut can finish. Refused, forced
-  // or not.
-  for (size_t i = 0; i < chords.size(); ++i) {
-    for (size_t j = i + 1; j < chords.size(); ++j) {
-      const Chord& a = chords[i];
-      const Chord& b = chords[j];
-      if (!(a.a == b.a || a.a == b.b || a.b == b.a || a.b == b.b)) continue;
-      for (const Region& piece : pieces) {
-        std::vector<Point2> points;
-        for (int k = 0; k < piece.loop_count(); ++k) points.insert(points.end(), piece.loop(k).begin(), piece.loop(k).end());
-        std::sort(points.begin(), points.end(), [](Point2 u, Point2 v) { return u.x < v.x || (u.x == v.x && u.y < v.y); });
-        if (std::adjacent_find(points.begin(), points.end()) != points.end()) return false;
+  // leave a piece whose loops touch at that point (a point twice among its vertices): a pinched part
+  // no cut can finish. Refused, forced or not.
+  auto chords_meet = [&] {
+    for (size_t i = 0; i < chords.size(); ++i) {
+      for (size_t j = i + 1; j < chords.size(); ++j) {
+        const Chord& a = chords[i];
+        const Chord& b = chords[j];
+        if (a.a == b.a || a.a == b.b || a.b == b.a || a.b == b.b) return true;
       }
-      i = chords.size();  // every piece checked once
-      break;
+    }
+    return false;
+  };
+  if (chords_meet()) {
+    for (const Region& piece : pieces) {
+      std::vector<Point2> points;
+      for (int k = 0; k < piece.loop_count(); ++k) points.insert(points.end(), piece.loop(k).begin(), piece.loop(k).end());
+      std::sort(points.begin(), points.end(), [](Point2 u, Point2 v) { return u.x < v.x || (u.x == v.x && u.y < v.y); });
+      if (std::adjacent_find(points.begin(), points.end()) != points.end()) return false;
     }
   }
   if (sliver) return false;  // forced or not: a piece thinner than the lattice cannot be finished
