@@ -215,6 +215,7 @@ void add_mesh_command(CLI::App& app) {
       if (o->count() > 0) throw InputError(o->get_name() + " is for solids; " + args->file + " gives a face");
     }
     const InputFace& face = input.face;
+    options.occt_model = false;  // a face's mesh and its report need no OpenCASCADE model of the blocks
     const FaceMeshing meshing = mesh_input_face(face, args->policy.decompose_settings(), options);
     const MeshResult& result = meshing.result;
 

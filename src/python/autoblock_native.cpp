@@ -477,6 +477,7 @@ py::dict mesh_py(const std::string& brep, const py::object& cuts, double size, i
     py::gil_scoped_release release;
     MeshOptions options;
     options.size = size;
+    options.occt_model = false;  // the mesh and its report need no OpenCASCADE model of the blocks
     const InputFace face = face_of(brep, source);
     sequence.check_for(face);
     result = face.is_general() ? face_mesh_general(face, sequence.region, max_steps, preset, options).result

@@ -19,6 +19,9 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
                                                                        : RegionSearchOptions{}.width;
   out.decomposition = decompose_input_face(face, decompose);
   if (face.is_general()) {
+    // The OpenCASCADE model, if wanted, of the kept decomposition only (not of every attempt).
+    const bool occt_model = options.occt_model;
+    options.occt_model = false;
     options.general.max_steps = settings.max_steps;
     options.general.reward = out.decomposition.region.reward;
     out.result = mesh_region_decomposition(face, out.decomposition.region, options);
@@ -61,6 +64,11 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
       } catch (const InputError&) {
         // infeasible with the fixed counts or too many quads: the mesh stays as it is
       }
+    }
+    if (occt_model) {
+      const auto replay_start = std::chrono::steady_clock::now();
+      out.result.model = region_occt_model(face, out.decomposition.region, options);
+      out.result.merge_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - replay_start).count();
     }
   } else {
     const Decomposition& d = out.decomposition.decomposition;

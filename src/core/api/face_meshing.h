@@ -39,6 +39,7 @@ struct FaceMeshing {
 //          the best minimum scaled Jacobian is kept; if still below, the kept blocks are meshed again
 //          with at least two intervals per model edge, kept if better (attempts, search_width,
 //          corner_fraction and min_edge_intervals say what was kept); each search has the time limit.
+//          A general face's OpenCASCADE model (options.occt_model) is made of the kept blocks only.
 // Throws InputError for a bad policy, reward or request (see decompose_input_face, mesh_decomposition).
 constexpr double kRetryBelow = 0.85;
 struct SearchRetry {

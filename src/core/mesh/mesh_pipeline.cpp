@@ -136,6 +136,14 @@ MeshResult mesh_decomposition(const InputFace& face, const Decomposition& d, con
   return result;
 }
 
+ConformalBlocks region_occt_model(const InputFace& face, const RegionDecomposition& d, const MeshOptions& options) {
+  // OpenCASCADE stays the judge: it cuts the face as the engine did, and merges the parts.
+  const auto lock = lock_general_engine();
+  const std::vector<TopoDS_Face> parts = replay_region_cuts_occt(face.occt, face.region, d, options.general);
+  if (parts.size() != d.finished.size()) throw std::logic_error("mesh: the replay gave a different number of parts");
+  return conformal_merge(parts, face.region.quantum());
+}
+
 MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecomposition& d, const MeshOptions& options) {
   if (!face.is_general()) throw std::logic_error("mesh_region_decomposition: the face is rectilinear");
   if (!d.complete()) {
@@ -158,14 +166,8 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   }, [&](const IntervalOptions& o) { return assign_edge_intervals(result.block_model, o); });
   result.interval_seconds = since(start);
 
-  // OpenCASCADE stays the judge: it cuts the face as the engine did, and merges the parts.
   start = std::chrono::steady_clock::now();
-  {
-    const auto lock = lock_general_engine();
-    const std::vector<TopoDS_Face> parts = replay_region_cuts_occt(face.occt, face.region, d, options.general);
-    if (parts.size() != d.finished.size()) throw std::logic_error("mesh: the replay gave a different number of parts");
-    result.model = conformal_merge(parts, q);
-  }
+  if (options.occt_model) result.model = region_occt_model(face, d, options);
   result.merge_seconds = since(start);
 
   start = std::chrono::steady_clock::now();

@@ -38,10 +38,14 @@ struct MeshOptions {
   RegionEpisodeOptions general;      // a general face's decomposition options (replay, block rules)
   int smoothing_sweeps = kDefaultSmoothingSweeps;  // a general face's mesh (mesh_smoothing.h); 0: none
   int min_edge_intervals = 1;        // a general face's model edges: at least this many intervals each
+  // A general face: replay the cuts with OpenCASCADE and merge the parts into MeshResult::model (what
+  // the hex sweep builds on). Its mesh is made from the block model and checked on its own (the
+  // conformity check against the face's loops), so meshing a face alone can leave this off.
+  bool occt_model = true;
 };
 
 struct MeshResult {
-  ConformalBlocks model;        // the blocks merged, sharing edges
+  ConformalBlocks model;        // the blocks merged, sharing edges (a general face: if MeshOptions::occt_model)
   StripLayout layout;           // a rectilinear face's strips
   BlockModel block_model;       // a general face's block model
   std::vector<FixedIntervals> fixed;  // the user's fixed counts, as strips (rectilinear) or model edges (general)
@@ -64,6 +68,12 @@ struct MeshResult {
 // Throws InputError when the decomposition is incomplete or the request is infeasible (see
 // assign_intervals, fixed_intervals_on); std::logic_error / std::runtime_error on internal failures.
 MeshResult mesh_decomposition(const InputFace& face, const Decomposition& decomposition, const MeshOptions& options = {});
+
+// Inputs:  face, a general face; decomposition of face.region (complete), made with options.general.
+// Outputs: the cuts replayed on the face with OpenCASCADE, checked against the engine's parts, and
+//          merged into one conformal model (what MeshResult::model holds when options.occt_model).
+// Throws std::logic_error when the replay disagrees with the engine.
+ConformalBlocks region_occt_model(const InputFace& face, const RegionDecomposition& decomposition, const MeshOptions& options);
 
 // Inputs:  face, a general face; decomposition of face.region (complete), made with options.general;
 //          options.

@@ -71,17 +71,28 @@ bool is_side_vertex(const Ring& ring, size_t i, const BlockRules& rules) {
   // trigonometry on this hot path).
   const double tolerance = rules.flat_tolerance_degrees;
   if (!(tolerance < 90.0)) return std::fabs(interior_angle(ring, i) - M_PI) <= tolerance * kDegree;
-  thread_local double cached_tolerance = -1.0, cached_tan = 0.0;
-  if (tolerance != cached_tolerance) {
-    cached_tolerance = tolerance;
-    cached_tan = std::tan(tolerance * kDegree);
-  }
+  static const double default_tan = std::tan(BlockRules{}.flat_tolerance_degrees * kDegree);
+  const double tan_tolerance = tolerance == BlockRules{}.flat_tolerance_degrees ? default_tan : std::tan(tolerance * kDegree);
   const size_t n = ring.size();
   const Point2 p = ring[(i + n - 1) % n], v = ring[i], q = ring[(i + 1) % n];
   const double ax = v.x - p.x, ay = v.y - p.y, bx = q.x - v.x, by = q.y - v.y;
   const double dot = ax * bx + ay * by, cross = ax * by - ay * bx;
   if (!(dot > 0.0)) return false;
-  return std::fabs(cross) <= cached_tan * dot;
+  return std::fabs(cross) <= tan_tolerance * dot;
+}
+
+VertexShape vertex_shape(const Ring& ring, size_t i, const BlockRules& rules) {
+  const double tolerance = rules.flat_tolerance_degrees;
+  if (!(tolerance < 90.0)) return {is_side_vertex(ring, i, rules), is_reflex_vertex(ring, i)};
+  static const double default_tan = std::tan(BlockRules{}.flat_tolerance_degrees * kDegree);
+  const double tan_tolerance = tolerance == BlockRules{}.flat_tolerance_degrees ? default_tan : std::tan(tolerance * kDegree);
+  const size_t n = ring.size();
+  const Point2 p = ring[(i + n - 1) % n], v = ring[i], q = ring[(i + 1) % n];
+  // The products of is_reflex_vertex (from v to its neighbours); is_side_vertex's (along the edges)
+  // are the same cross product and the dot product negated, exactly.
+  const double ax = q.x - v.x, ay = q.y - v.y, bx = p.x - v.x, by = p.y - v.y;
+  const double cross = ax * by - ay * bx, dot = ax * bx + ay * by;
+  return {-dot > 0.0 && std::fabs(cross) <= tan_tolerance * -dot, cross < 0.0 || (cross == 0.0 && dot >= 0.0)};
 }
 
 std::optional<std::array<int, 4>> block_corners(const Region& region, const BlockRules& rules) {
@@ -96,10 +107,18 @@ std::optional<std::array<int, 4>> block_corners(const Region& region, const Bloc
     corners[static_cast<size_t>(count++)] = static_cast<int>(i);
   }
   if (count != 4) return std::nullopt;
+  // Each corner's angle t within [min, max] by its cosine (t in (0, pi] once not reflex, where the
+  // cosine decreases): no trigonometry per corner.
+  const double cos_min = std::cos(rules.min_corner_degrees * kDegree), cos_max = std::cos(rules.max_corner_degrees * kDegree);
+  const size_t n = ring.size();
   for (const int c : corners) {
-    const double angle = interior_angle(ring, static_cast<size_t>(c));
-    if (angle > M_PI) return std::nullopt;                                              // reflex
-    if (angle < rules.min_corner_degrees * kDegree || angle > rules.max_corner_degrees * kDegree) return std::nullopt;
+    const size_t i = static_cast<size_t>(c);
+    const Point2 p = ring[(i + n - 1) % n], v = ring[i], q = ring[(i + 1) % n];
+    const double ax = q.x - v.x, ay = q.y - v.y, bx = p.x - v.x, by = p.y - v.y;
+    const double cross = ax * by - ay * bx, dot = ax * bx + ay * by;
+    if (cross < 0.0 || (cross == 0.0 && dot >= 0.0)) return std::nullopt;  // reflex (is_reflex_vertex)
+    const double length = std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by));
+    if (dot > cos_min * length || dot < cos_max * length) return std::nullopt;
   }
   return corners;
 }
@@ -246,8 +265,13 @@ BlockRules mesh_block_rules(const std::vector<Ring>& loops, double fraction) {
 OrientedRectangle min_area_rectangle(const Region& region) {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   std::vector<K::Point_2> points, hull;
-  for (const Point2& p : region.outer()) points.emplace_back(p.x, p.y);
-  CGAL::convex_hull_2(points.begin(), points.end(), std::back_inserter(hull));
+  if (region.is_convex()) {
+    // Its own hull (counter-clockwise, no three vertices collinear in canonical form).
+    for (const Point2& p : region.outer()) hull.emplace_back(p.x, p.y);
+  } else {
+    for (const Point2& p : region.outer()) points.emplace_back(p.x, p.y);
+    CGAL::convex_hull_2(points.begin(), points.end(), std::back_inserter(hull));
+  }
   // Rotating calipers: the minimum rectangle has a side along an edge of the hull. Coordinates are
   // taken relative to the hull's first vertex to keep digits for faces far from the origin.
   const double ox = hull[0].x(), oy = hull[0].y();

@@ -32,6 +32,14 @@ struct BlockRules {
 // Output: true when the vertex is a side vertex (its angle within the flat tolerance of 180 degrees).
 bool is_side_vertex(const Ring& ring, size_t i, const BlockRules& rules = {});
 
+// Inputs: ring, a loop of a region; its vertex number i; rules.
+// Output: is_side_vertex and is_reflex_vertex (region.h) of the vertex, from one pair of products.
+struct VertexShape {
+  bool side = false;
+  bool reflex = false;
+};
+VertexShape vertex_shape(const Ring& ring, size_t i, const BlockRules& rules = {});
+
 // Inputs:  region; rules.
 // Outputs: the indices (into region.outer(), counter-clockwise) of the block's four corners, or
 //          nothing when the region is not a block.

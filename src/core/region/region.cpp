@@ -63,13 +63,8 @@ double snap_to_lattice(double value, double quantum) {
 
 // Merges consecutive equal points, the last with the first too.
 static void merge_equal_points(Ring* ring) {
-  Ring out;
-  out.reserve(ring->size());
-  for (const Point2& p : *ring) {
-    if (out.empty() || !(out.back() == p)) out.push_back(p);
-  }
-  while (out.size() > 1 && out.front() == out.back()) out.pop_back();
-  *ring = std::move(out);
+  ring->erase(std::unique(ring->begin(), ring->end()), ring->end());
+  while (ring->size() > 1 && ring->front() == ring->back()) ring->pop_back();
 }
 
 Ring canonical_ring(const Ring& ring, double quantum) {
@@ -166,7 +161,23 @@ Region::Region(const Ring& outer, const std::vector<Ring>& holes, double quantum
   std::sort(holes_.begin(), holes_.end(), [](const Ring& a, const Ring& b) {
     return lower_left(a[0], b[0]) || (a[0] == b[0] && a.size() < b.size());
   });
-  // Area and centroid: outer minus holes.
+  // Area: outer minus holes.
+  double a = signed_area(outer_);
+  for (const Ring& h : holes_) a += signed_area(h);  // negative
+  area_ = a;
+  size_t seed = outer_.size();
+  for (int k = 0; k < loop_count(); ++k) {
+    for (const Point2& p : loop(k)) {
+      hash_combine(&seed, p.x);
+      hash_combine(&seed, p.y);
+    }
+    hash_combine(&seed, -1.0 - k);
+  }
+  hash_ = seed;
+}
+
+Point2 Region::centroid() const {
+  // Outer minus holes, each loop's centroid weighted by its signed area.
   const double outer_area = signed_area(outer_);
   const Point2 c0 = ring_centroid(outer_);
   double a = outer_area, mx = c0.x * outer_area, my = c0.y * outer_area;
@@ -177,17 +188,7 @@ Region::Region(const Ring& outer, const std::vector<Ring>& holes, double quantum
     mx += ch.x * ha;
     my += ch.y * ha;
   }
-  area_ = a;
-  centroid_ = a > 0.0 ? Point2{mx / a, my / a} : c0;
-  size_t seed = outer_.size();
-  for (int k = 0; k < loop_count(); ++k) {
-    for (const Point2& p : loop(k)) {
-      hash_combine(&seed, p.x);
-      hash_combine(&seed, p.y);
-    }
-    hash_combine(&seed, -1.0 - k);
-  }
-  hash_ = seed;
+  return a > 0.0 ? Point2{mx / a, my / a} : c0;
 }
 
 int Region::vertex_count() const {

@@ -46,7 +46,7 @@ class Region {
   int vertex_count() const;
 
   double area() const { return area_; }
-  Point2 centroid() const { return centroid_; }
+  Point2 centroid() const;  // the area centroid (computed on each call)
   Box bbox() const { return ring_bbox(outer_); }
   // True when the region has no holes and no reflex corner.
   bool is_convex() const;
@@ -60,7 +60,6 @@ class Region {
   std::vector<Ring> holes_;
   double quantum_ = 0.0;
   double area_ = 0.0;
-  Point2 centroid_;
   size_t hash_ = 0;
 };
 

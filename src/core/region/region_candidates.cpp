@@ -13,13 +13,13 @@ Point2 unit(Point2 d) {
 double cross(Point2 a, Point2 b) { return a.x * b.y - a.y * b.x; }
 double dot(Point2 a, Point2 b) { return a.x * b.x + a.y * b.y; }
 
-// True when the direction d at vertex v points strictly into the region, whose boundary arrives
+// True when a direction d at vertex v points strictly into the region, whose boundary arrives
 // from p and leaves towards n with the region on the left: d lies strictly inside the interior angle,
 // swept counter-clockwise from the outgoing edge to the incoming one (reversed). By the signs of
 // cross products of unit vectors (no trigonometry on this hot path), each kept 1e-12 clear of the
 // edges' directions.
-bool points_inside(Point2 p, Point2 v, Point2 n, Point2 d) {
-  const Point2 in = unit({p.x - v.x, p.y - v.y}), out = unit({n.x - v.x, n.y - v.y}), u = unit(d);
+// Inputs: in, out, the unit vectors from v to p and to n; u, the unit vector of d.
+bool points_inside(Point2 in, Point2 out, Point2 u) {
   constexpr double margin = 1e-12;
   const double turn = cross(out, in);
   if (turn > 0.0 || (turn == 0.0 && dot(out, in) < 0.0)) {
@@ -47,8 +47,9 @@ Complexity part_complexity(const Region& part, const BlockRules& rules) {
   for (int k = 0; k < part.loop_count(); ++k) {
     const Ring& ring = part.loop(k);
     for (size_t i = 0; i < ring.size(); ++i) {
-      if (is_side_vertex(ring, i, rules)) continue;
-      if (is_reflex_vertex(ring, i)) ++c.reflex;
+      const VertexShape shape = vertex_shape(ring, i, rules);
+      if (shape.side) continue;
+      if (shape.reflex) ++c.reflex;
       ++c.corners;
     }
   }
@@ -72,6 +73,8 @@ std::vector<RegionAction> region_candidates(const Region& part) {
   const OrientedRectangle frame = min_area_rectangle(part);
   const Point2 ax = frame.axis, ay{-frame.axis.y, frame.axis.x};
   const bool convex = part.is_convex();
+  // Scratch lists, cleared per vertex (their storage kept: no allocation per vertex).
+  std::vector<Point2> directions, partial, full, partial_unit, full_unit;
   for (int k = 0; k < part.loop_count(); ++k) {
     const Ring& ring = part.loop(k);
     const size_t m = ring.size();
@@ -81,9 +84,9 @@ std::vector<RegionAction> region_candidates(const Region& part) {
       const Point2 to_p{-e_in.x, -e_in.y};
       Point2 bisector = unit({e_out.x + to_p.x, e_out.y + to_p.y});
       if (!(std::hypot(bisector.x, bisector.y) > 0.5)) bisector = {-e_out.y, e_out.x};  // a flat vertex
-      if (!points_inside(p, v, n, bisector)) bisector = {-bisector.x, -bisector.y};
-      std::vector<Point2> directions{e_in, {-e_out.x, -e_out.y}, bisector, {-e_in.y, e_in.x}, {-e_out.y, e_out.x},
-                                     ax,   {-ax.x, -ax.y},       ay,       {-ay.x, -ay.y}};
+      if (!points_inside(to_p, e_out, unit(bisector))) bisector = {-bisector.x, -bisector.y};
+      directions.assign({e_in, {-e_out.x, -e_out.y}, bisector, {-e_in.y, e_in.x}, {-e_out.y, e_out.x},
+                         ax,   {-ax.x, -ax.y},       ay,       {-ay.x, -ay.y}});
       // On a convex part, the diagonals to every vertex but the neighbours (a hexagon into two
       // quadrilaterals, a pentagon into a quadrilateral and a triangle).
       if (convex) {
@@ -94,12 +97,15 @@ std::vector<RegionAction> region_candidates(const Region& part) {
       }
       // Each direction once (as a ray for partial cuts, as a line for full ones), compared as unit
       // vectors.
-      std::vector<Point2> partial, full, partial_unit, full_unit;
+      partial.clear();
+      full.clear();
+      partial_unit.clear();
+      full_unit.clear();
       for (const Point2& d : directions) {
         const Point2 u = unit(d);
         bool seen = false;
         for (const Point2& q : partial_unit) seen = seen || (std::fabs(cross(q, u)) < 1e-9 && dot(q, u) > 0.0);
-        if (!seen && points_inside(p, v, n, d)) {
+        if (!seen && points_inside(to_p, e_out, u)) {
           partial.push_back(d);
           partial_unit.push_back(u);
         }

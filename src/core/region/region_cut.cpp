@@ -302,6 +302,12 @@ FastVerdict fast_partial_end(const Region& region, Point2 o, Point2 direction, P
         if (sb == 0) consider(b, b, k, i);
         continue;
       }
+      // The crossing lies between its edge's ends along the line: an edge wholly behind the origin,
+      // or wholly beyond the nearest point found (by more than the tie margin), cannot be nearer.
+      const double ta = line.along(a), tb = line.along(b);
+      const double lo = std::min(ta, tb), hi = std::max(ta, tb), margin = 1e-9 * (1.0 + std::fabs(lo) + std::fabs(hi));
+      if (hi + margin < line.half_q) continue;
+      if (found && lo - margin > best_t + 1e-12 * (1.0 + std::fabs(best_t))) continue;
       const Crossing c = line_crossing(line, a, b, q);
       consider(c.raw, c.snapped, k, i);
     }
@@ -320,17 +326,23 @@ FastVerdict fast_partial_end(const Region& region, Point2 o, Point2 direction, P
 // The full cut of a region without holes: the loop with the line's proper crossings inserted, the
 // chords (the stretches of the line between consecutive points on it that run through the
 // interior), and the pieces they cut the loop into. Unsure hands the cut to the arrangement.
-FastVerdict fast_full_cut(const Region& region, Point2 o, Point2 direction, std::vector<Region>* pieces, std::vector<Chord>* chords) {
+struct LineNode {
+  Point2 point;  // on the lattice
+  double t;      // along the line (from the unrounded point)
+  bool on_line;
+};
+
+// The first half of the full cut of a region without holes: the loop's nodes (its vertices with the
+// line's proper crossings inserted) and the chords as pairs of node indices, in order along the line.
+FastVerdict fast_full_chords(const Region& region, Point2 o, Point2 direction, std::vector<LineNode>* nodes_out,
+                             std::vector<std::pair<size_t, size_t>>* cuts_out) {
   const Ring& ring = region.outer();
   const size_t n = ring.size();
   const double q = region.quantum();
   const CutLine line(o, direction, q);
-  struct Node {
-    Point2 point;  // on the lattice
-    double t;      // along the line (from the unrounded point)
-    bool on_line;
-  };
-  std::vector<Node> nodes;
+  using Node = LineNode;
+  std::vector<Node>& nodes = *nodes_out;
+  nodes.clear();
   nodes.reserve(n + 8);
   std::vector<int> side(n);
   for (size_t i = 0; i < n; ++i) side[i] = line.side(ring[i]);
@@ -352,7 +364,8 @@ FastVerdict fast_full_cut(const Region& region, Point2 o, Point2 direction, std:
   std::vector<FPoint> loop;
   loop.reserve(n);
   for (const Point2& p : ring) loop.push_back(fast(p));
-  std::vector<std::pair<size_t, size_t>> cuts;  // chords as node indices
+  std::vector<std::pair<size_t, size_t>>& cuts = *cuts_out;  // chords as node indices
+  cuts.clear();
   for (size_t k = 0; k + 1 < along.size(); ++k) {
     const size_t a = along[k], b = along[k + 1];
     if (std::fabs(nodes[a].t - nodes[b].t) <= 1e-12 * (1.0 + std::fabs(nodes[a].t))) return FastVerdict::Unsure;
@@ -363,6 +376,15 @@ FastVerdict fast_full_cut(const Region& region, Point2 o, Point2 direction, std:
     if (where == CGAL::ON_BOUNDARY) return FastVerdict::Unsure;
     if (where == CGAL::ON_BOUNDED_SIDE) cuts.emplace_back(a, b);
   }
+  return FastVerdict::Done;
+}
+
+// The second half: the loop split along the chords found by fast_full_chords.
+FastVerdict fast_full_split(const Region& region, const std::vector<LineNode>& nodes,
+                            const std::vector<std::pair<size_t, size_t>>& cuts, std::vector<Region>* pieces,
+                            std::vector<Chord>* chords) {
+  const double q = region.quantum();
+  const size_t m = nodes.size();
   pieces->clear();
   chords->clear();
   if (cuts.empty()) return FastVerdict::Done;
@@ -658,14 +680,12 @@ FastVerdict fast_cut_with_holes(const Region& region, const RegionCut& cut, std:
 
 // The partial cut of a region without holes: the chord from the origin to the exact end splits its
 // one loop into two chains (no arrangement needed). Returns false when the origin is not on the loop.
-bool split_simple(const Region& region, const RegionCut& cut, std::vector<Region>* pieces, Chord* chord) {
+// verdict, hit, eh: fast_partial_end's.
+bool split_simple(const Region& region, const RegionCut& cut, FastVerdict verdict, Point2 hit, size_t eh,
+                  std::vector<Region>* pieces, Chord* chord) {
   const Ring& ring = region.outer();
   const size_t n = ring.size();
   const double q = region.quantum();
-  size_t eh = 0;
-  Point2 hit;
-  int hit_loop = 0;
-  const FastVerdict verdict = fast_partial_end(region, cut.origin, cut.direction, &hit, &hit_loop, &eh);
   if (verdict == FastVerdict::None) {
     pieces->clear();
     return true;
@@ -692,7 +712,13 @@ bool split_simple(const Region& region, const RegionCut& cut, std::vector<Region
       eo = i;
     }
   }
-  if (eo == n || eo == eh) return false;
+  if (eo == n) return false;
+  // The end on the origin's own edge: the ray ran along that edge (a direction along it, rounded,
+  // passes the interior test by a rounding error). The cut separates nothing.
+  if (eo == eh) {
+    pieces->clear();
+    return true;
+  }
   Ring a{cut.origin}, b{hit};
   for (size_t k = (eo + 1) % n;; k = (k + 1) % n) {
     a.push_back(ring[k]);
@@ -855,23 +881,47 @@ CutOutcome cut_region_by_arrangement(const Region& region, const RegionCut& cut)
 }
 
 
-CutOutcome cut_region(const Region& region, const RegionCut& cut) {
+std::optional<CutOutcome> cut_region_if(const Region& region, const RegionCut& cut, const ChordsCheck& proceed) {
   if (region.is_empty()) throw std::invalid_argument("cut_region: empty region");
   if (std::hypot(cut.direction.x, cut.direction.y) > 0.0) {
     CutOutcome outcome;
     bool done = false;
+    // The chords in canonical order, for proceed (a region without holes, a cut not forced).
+    auto stopped = [&](std::vector<Chord> chords) {
+      if (!proceed || cut.forced) return false;
+      canonical_chords(&chords);
+      return !proceed(chords);
+    };
     if (!region.holes().empty()) {
       done = fast_cut_with_holes(region, cut, &outcome.pieces, &outcome.chords) == FastVerdict::Done;
     } else if (cut.kind == CutKind::Full) {
-      done = fast_full_cut(region, cut.origin, cut.direction, &outcome.pieces, &outcome.chords) == FastVerdict::Done;
+      std::vector<LineNode> nodes;
+      std::vector<std::pair<size_t, size_t>> cuts;
+      if (fast_full_chords(region, cut.origin, cut.direction, &nodes, &cuts) != FastVerdict::Unsure) {
+        std::vector<Chord> chords;
+        for (const auto& [a, b] : cuts) chords.push_back({nodes[a].point, nodes[b].point});
+        if (stopped(std::move(chords))) return std::nullopt;
+        done = fast_full_split(region, nodes, cuts, &outcome.pieces, &outcome.chords) == FastVerdict::Done;
+      }
     } else {
+      Point2 hit;
+      int hit_loop = 0;
+      size_t hit_edge = 0;
+      const FastVerdict verdict = fast_partial_end(region, cut.origin, cut.direction, &hit, &hit_loop, &hit_edge);
+      if (verdict != FastVerdict::Unsure) {
+        std::vector<Chord> chords;
+        if (verdict == FastVerdict::Found) chords.push_back({cut.origin, hit});
+        if (stopped(std::move(chords))) return std::nullopt;
+      }
       Chord chord;
-      done = split_simple(region, cut, &outcome.pieces, &chord);
+      done = split_simple(region, cut, verdict, hit, hit_edge, &outcome.pieces, &chord);
       if (done && outcome.pieces.size() >= 2) outcome.chords.push_back(chord);
     }
     if (done) return finished_outcome(region, std::move(outcome), cut.forced);
   }
   return cut_region_by_arrangement(region, cut);
 }
+
+CutOutcome cut_region(const Region& region, const RegionCut& cut) { return *cut_region_if(region, cut, nullptr); }
 
 }  // namespace autoblock

@@ -23,6 +23,8 @@
 // clear of that, it makes exactly the engine's pieces.
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -61,6 +63,18 @@ struct CutOutcome {
 //          end, sorted), as above. The fast path splits the loops along the chords without an
 //          arrangement; what it cannot call goes through cut_region_by_arrangement.
 CutOutcome cut_region(const Region& region, const RegionCut& cut);
+
+// Called with a cut's chords before its pieces are made; false stops the cut (see cut_region_if).
+using ChordsCheck = std::function<bool(const std::vector<Chord>& chords)>;
+
+// Inputs:  region (not empty); cut; proceed (may be empty: never stops).
+// Outputs: cut_region's outcome, or nothing when proceed, called with the cut's chords (in canonical
+//          order; empty: the cut separates nothing) as soon as the fast path knows them, returned
+//          false. It is called for a region without holes and a cut not forced, where the outcome is
+//          a function of the chords (cuts with the same chords have the same pieces): a search cuts
+//          each set of chords once (a ray from one vertex to another and the ray back, a full cut
+//          whose line runs through the part once and the partial cut along it).
+std::optional<CutOutcome> cut_region_if(const Region& region, const RegionCut& cut, const ChordsCheck& proceed);
 
 // The same by the arrangement for every cut (the general path; tests compare the two).
 CutOutcome cut_region_by_arrangement(const Region& region, const RegionCut& cut);

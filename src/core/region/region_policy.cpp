@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <tuple>
+#include <unordered_map>
 
 #include "core/region/region_candidates.h"
 #include "core/region/region_reward.h"
@@ -17,6 +18,18 @@ std::unique_lock<std::mutex> lock_general_engine() {
   return std::unique_lock<std::mutex>(general_engine);
 }
 
+namespace {
+
+struct ChordsHash {
+  size_t operator()(const std::vector<double>& key) const {
+    size_t seed = key.size();
+    for (const double x : key) seed ^= std::hash<double>()(x) + 0x9e3779b97f4a7c15ull + (seed << 6) + (seed >> 2);
+    return seed;
+  }
+};
+
+}  // namespace
+
 std::vector<ScoredAction> score_candidates(const Region& part, double face_size, const RegionEpisodeOptions& options,
                                           const std::chrono::steady_clock::time_point* deadline) {
   std::vector<ScoredAction> scored;
@@ -26,11 +39,12 @@ std::vector<ScoredAction> score_candidates(const Region& part, double face_size,
   // are keyed by their direction (to 1e-9) and their offset from the origin (to the part's quantum);
   // the value is the outcome's place in scored, or -1 when it made no progress.
   std::map<std::array<long long, 3>, long> lines;
+  std::unordered_map<std::vector<double>, long, ChordsHash> chord_sets;  // a set of chords -> the outcome's place in scored, or -1
   for (const RegionAction& action : region_candidates(part)) {
     if (deadline && !scored.empty() && std::chrono::steady_clock::now() > *deadline) break;
     ScoredAction s{action, {}, 0.0};
     if (action.kind == RegionAction::Kind::Template) {
-      s.outcome = {{part}, {}};
+      s.outcome = std::make_shared<const CutOutcome>(CutOutcome{{part}, {}});
       s.reward = region_template_reward(options.reward, part, face_size, options.rules);
     } else {
       std::map<std::array<long long, 3>, long>::iterator line = lines.end();
@@ -50,10 +64,30 @@ std::vector<ScoredAction> score_candidates(const Region& part, double face_size,
           continue;
         }
       }
-      s.outcome = cut_region(part, action.cut);
-      if (!makes_progress(complexity, s.outcome.pieces, options.rules)) continue;
-      s.reward = region_cut_reward(options.reward, s.outcome, face_size, options.rules);
+      // Cuts with the same chords have the same outcome (cut_region_if): the first is cut, the
+      // others take its outcome.
+      auto same = chord_sets.end();
+      std::optional<CutOutcome> outcome = cut_region_if(part, action.cut, [&](const std::vector<Chord>& chords) {
+        std::vector<double> key;
+        key.reserve(4 * chords.size());
+        for (const Chord& c : chords) key.insert(key.end(), {c.a.x, c.a.y, c.b.x, c.b.y});
+        bool inserted = false;
+        std::tie(same, inserted) = chord_sets.insert({std::move(key), -1});
+        return inserted && !chords.empty();  // no chords: no progress
+      });
+      if (!outcome) {
+        if (same == chord_sets.end() || same->second < 0) continue;
+        if (line != lines.end()) line->second = same->second;
+        s.outcome = scored[static_cast<size_t>(same->second)].outcome;
+        s.reward = scored[static_cast<size_t>(same->second)].reward;
+        scored.push_back(std::move(s));
+        continue;
+      }
+      if (!makes_progress(complexity, outcome->pieces, options.rules)) continue;
+      s.reward = region_cut_reward(options.reward, *outcome, face_size, options.rules);
+      s.outcome = std::make_shared<const CutOutcome>(std::move(*outcome));
       if (line != lines.end()) line->second = static_cast<long>(scored.size());
+      if (same != chord_sets.end()) same->second = static_cast<long>(scored.size());
     }
     scored.push_back(std::move(s));
   }

@@ -50,7 +50,7 @@ class RegionRandomPolicy : public RegionPolicy {
 // The best candidate by immediate reward, with its outcome (shared by greedy and search).
 struct ScoredAction {
   RegionAction action;
-  CutOutcome outcome;
+  std::shared_ptr<const CutOutcome> outcome;  // shared by candidates with the same outcome
   double reward = 0.0;
 };
 

@@ -66,7 +66,7 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
     if (have && options_.prune) {
       double bound = value;
       if (scored[i].action.kind == RegionAction::Kind::Cut) {
-        for (const Region& piece : scored[i].outcome.pieces) {
+        for (const Region& piece : scored[i].outcome->pieces) {
           const auto known = memo_.find(piece);
           bound += known != memo_.end() ? known->second.value : value_upper_bound(piece, options);
         }
@@ -77,7 +77,7 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
       }
     }
     if (scored[i].action.kind == RegionAction::Kind::Cut) {
-      for (const Region& piece : scored[i].outcome.pieces) value += solve(piece, options, face_size);
+      for (const Region& piece : scored[i].outcome->pieces) value += solve(piece, options, face_size);
     }
     if (!have || value > best.value) {
       best = {value, scored[i].action};

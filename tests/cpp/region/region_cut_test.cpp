@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <algorithm>
+#include <map>
 #include <random>
 #include <sstream>
 
@@ -16,6 +17,20 @@ using autoblock::Ring;
 
 namespace {
 constexpr double kQ = 1e-7;
+
+// A star polygon of n vertices at random angles (within their sectors) and radii in [r0, r1];
+// lattice: rounded to integers (many vertices then line up with edges and axes).
+Ring random_star(std::mt19937_64& rng, int n, double r0, double r1, bool lattice = false) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Ring ring;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * M_PI * (i + 0.8 * unit(rng)) / n, r = r0 + (r1 - r0) * unit(rng);
+    Point2 p{r * std::cos(t), r * std::sin(t)};
+    if (lattice) p = {std::round(p.x), std::round(p.y)};
+    ring.push_back(p);
+  }
+  return ring;
+}
 
 double total_area(const std::vector<Region>& pieces) {
   double a = 0.0;
@@ -127,12 +142,7 @@ TEST_CASE("the fast partial cut of a part without holes agrees with the arrangem
   int compared = 0, split = 0;
   for (int shape = 0; shape < 80; ++shape) {
     const int n = 5 + static_cast<int>(unit(rng) * 12);
-    Ring outer;
-    for (int i = 0; i < n; ++i) {
-      const double t = 2 * M_PI * (i + 0.8 * unit(rng)) / n, r = 4 + 6 * unit(rng);
-      outer.push_back({r * std::cos(t), r * std::sin(t)});
-    }
-    const Region part(outer, {}, kQ);
+    const Region part(random_star(rng, n, 4, 10), {}, kQ);
     for (int c = 0; c < 10; ++c) {
       const size_t i = static_cast<size_t>(unit(rng) * part.outer().size()) % part.outer().size();
       Point2 origin = part.outer()[i];
@@ -242,4 +252,46 @@ TEST_CASE("the fast cuts agree with the arrangement on every candidate, with and
   CHECK(holed_split > 300);
   CHECK(full > 100);  // full cuts that cross the part more than once
   CHECK(near_split > 500);
+}
+
+TEST_CASE("cuts with the same chords have the same pieces, and cut_region_if stops when told", "[region][cut]") {
+  // Random star and lattice polygons without holes (lattice vertices: many candidates share their
+  // chords, a ray from one vertex to another and the ray back, a full cut crossing the part once
+  // and the partial cut along it). The search cuts each set of chords once (region_policy.cpp).
+  std::mt19937_64 rng(4711);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int shared = 0, told = 0;
+  for (int shape = 0; shape < 120; ++shape) {
+    const int n = 5 + static_cast<int>(unit(rng) * 14);
+    const Region part(random_star(rng, n, 5, 11, shape % 2 == 1), {}, kQ);
+    if (part.is_empty()) continue;
+    std::map<std::vector<double>, std::vector<Region>> by_chords;
+    for (const autoblock::RegionAction& action : autoblock::region_candidates(part)) {
+      if (action.kind != autoblock::RegionAction::Kind::Cut) continue;
+      std::vector<double> key;
+      bool called = false;
+      const auto outcome = autoblock::cut_region_if(part, action.cut, [&](const std::vector<autoblock::Chord>& chords) {
+        called = true;
+        for (const auto& c : chords) key.insert(key.end(), {c.a.x, c.a.y, c.b.x, c.b.y});
+        return true;
+      });
+      REQUIRE(outcome.has_value());
+      const auto plain = autoblock::cut_region(part, action.cut);
+      REQUIRE(outcome->pieces.size() == plain.pieces.size());
+      for (size_t k = 0; k < plain.pieces.size(); ++k) CHECK(outcome->pieces[k] == plain.pieces[k]);
+      if (!called) continue;
+      ++told;
+      // Told no chords: the cut separates nothing.
+      if (key.empty()) CHECK(outcome->pieces.size() == 1);
+      // Stopped when told: nothing is cut.
+      CHECK_FALSE(autoblock::cut_region_if(part, action.cut, [](const std::vector<autoblock::Chord>&) { return false; }).has_value());
+      const auto [at, inserted] = by_chords.insert({key, outcome->pieces});
+      if (inserted || key.empty()) continue;
+      ++shared;
+      REQUIRE(at->second.size() == outcome->pieces.size());
+      for (size_t k = 0; k < outcome->pieces.size(); ++k) CHECK(at->second[k] == outcome->pieces[k]);
+    }
+  }
+  CHECK(told > 2000);
+  CHECK(shared > 300);
 }
