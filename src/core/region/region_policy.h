@@ -54,11 +54,15 @@ struct ScoredAction {
   double reward = 0.0;
 };
 
-// Inputs:  part; face_size; reward preset and rules (as the episode's); deadline (optional).
-// Outputs: every candidate of region_candidates(part) that makes progress, with its outcome and
-//          reward, in order; past the deadline, only those scored so far (at least one, if any).
+// Inputs:  part; face_size; reward preset and rules (as the episode's); deadline (optional); keep,
+//          how many of the best candidates the caller needs (0: all).
+// Outputs: the candidates of region_candidates(part) that make progress, with their outcomes and
+//          rewards, in order: every one when keep is 0; else at least every one that could be among
+//          the keep best by reward (the first of equals first), the others left out when a bound of
+//          their reward (region_cut_reward_bound) shows they cannot be. Past the deadline, only those
+//          scored so far (at least one, if any).
 std::vector<ScoredAction> score_candidates(const Region& part, double face_size, const RegionEpisodeOptions& options,
-                                          const std::chrono::steady_clock::time_point* deadline = nullptr);
+                                          const std::chrono::steady_clock::time_point* deadline = nullptr, size_t keep = 0);
 
 struct RegionDecomposition {
   std::string policy;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace autoblock {
 namespace {
@@ -48,6 +49,86 @@ double region_cut_reward(RewardPreset preset, const CutOutcome& outcome, double 
     if (is_block(piece, rules)) ++blocks;
   }
   return equation_one(areas, ratios, blocks);
+}
+
+namespace {
+
+// The angle from u counter-clockwise to w, in (0, 2 pi].
+double ccw_angle(Point2 u, Point2 w) {
+  double angle = std::atan2(u.x * w.y - u.y * w.x, u.x * w.x + u.y * w.y);
+  if (angle <= 0.0) angle += 2.0 * M_PI;
+  return angle;
+}
+
+double length(Point2 u) { return std::sqrt(u.x * u.x + u.y * u.y); }
+
+}  // namespace
+
+double region_cut_reward_bound(RewardPreset preset, const Region& part, const std::vector<Chord>& chords,
+                               const BlockRules& rules) {
+  if (preset != RewardPreset::Mesh || chords.empty() || !part.holes().empty()) return std::numeric_limits<double>::infinity();
+  const Ring& ring = part.outer();
+  const size_t n = ring.size();
+  // A full cut's line can run along an edge of the part between two chords (it touches the boundary
+  // there): such a chord is that edge and separates nothing. Every other chord crosses the part's
+  // interior from boundary to boundary, and a part without holes is simply connected: each such
+  // chord adds one piece. N pieces cost N - 1; the other terms are <= 0.
+  std::vector<const Chord*> crossing;
+  for (const Chord& c : chords) {
+    bool edge = false;
+    for (size_t i = 0; i < n && !edge; ++i) {
+      const Point2 a = ring[i], b = ring[(i + 1) % n];
+      edge = (c.a == a && c.b == b) || (c.a == b && c.b == a);
+    }
+    if (!edge) crossing.push_back(&c);
+  }
+  if (crossing.empty()) return std::numeric_limits<double>::infinity();
+  if (crossing.size() > 1) return -static_cast<double>(crossing.size());
+  const double q = part.quantum();
+  // A corner at or above this (within the margin) may be a side vertex or reflex: it counts 1.
+  const double side_from = M_PI - rules.flat_tolerance_degrees * M_PI / 180.0;
+  double j = 1.0;
+  const Chord& c = *crossing.front();
+  for (int end = 0; end < 2; ++end) {
+    const Point2 e = end == 0 ? c.a : c.b, other = end == 0 ? c.b : c.a;
+    const Point2 d{other.x - e.x, other.y - e.y};
+    const double chord_length = length(d);
+    if (!(chord_length > 0.0)) return std::numeric_limits<double>::infinity();
+    size_t vertex = n, edge = n;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < n && vertex == n; ++i) {
+      if (ring[i] == e) vertex = i;
+      const double distance = segment_distance_squared(e, ring[i], ring[(i + 1) % n]);
+      if (distance < nearest) {
+        nearest = distance;
+        edge = i;
+      }
+    }
+    // Rounding the pieces to the lattice moves each end by under a quantum: the angles at this end
+    // change by at most about q over the chord's and the edges' lengths (radians; sine is 1-Lipschitz).
+    std::vector<double> angles;
+    double shortest = chord_length;
+    if (vertex < n) {
+      const Point2 p = ring[(vertex + n - 1) % n], v = ring[vertex], nx = ring[(vertex + 1) % n];
+      const Point2 out{nx.x - v.x, nx.y - v.y}, in{p.x - v.x, p.y - v.y};
+      shortest = std::min({shortest, length(out), length(in)});
+      angles = {ccw_angle(out, d), ccw_angle(d, in)};
+    } else {
+      if (edge == n) return std::numeric_limits<double>::infinity();
+      const Point2 a = ring[edge], b = ring[(edge + 1) % n];
+      const Point2 t{b.x - a.x, b.y - a.y};
+      shortest = std::min({shortest, length({e.x - a.x, e.y - a.y}), length({b.x - e.x, b.y - e.y})});
+      const double theta = ccw_angle(t, d);
+      angles = {theta, M_PI - theta};
+    }
+    if (!(shortest > 0.0)) return std::numeric_limits<double>::infinity();
+    const double margin = 4.0 * q / shortest + 1e-9;
+    for (const double angle : angles) {
+      if (!(angle > 0.0) || angle >= side_from - margin) continue;  // perhaps a side vertex, or reflex: 1
+      j = std::min(j, std::sin(angle) + margin);
+    }
+  }
+  return -1.0 - kMeshShapeWeight * (1.0 - std::min(1.0, j));
 }
 
 double region_template_reward(RewardPreset preset, const Region& part, double face_size, const BlockRules& rules) {

@@ -33,6 +33,18 @@ constexpr double kTemplatePenalty = 2.0;
 // Outputs: the preset's reward for the cut.
 double region_cut_reward(RewardPreset preset, const CutOutcome& outcome, double face_size, const BlockRules& rules = {});
 
+// Inputs:  preset; part, a region without holes; chords, a cut's (cut_region_if tells them before
+//          the pieces are made); rules.
+// Outputs: an upper bound of region_cut_reward for any outcome with these chords: under the mesh
+//          preset -(number of chords across the part) when there are several (a chord that is an
+//          edge of the part, where a full cut's line runs along the boundary, does not count), and
+//          for one -1 - kMeshShapeWeight (1 - J), J an upper bound of J_new read from the angles the
+//          chord makes at its ends with the part's edges (widened by what rounding the pieces to the
+//          lattice can change them by, and 1 for an angle near a side vertex's or above); +infinity
+//          under Eq. (1), for a part with holes, or for no chord across.
+double region_cut_reward_bound(RewardPreset preset, const Region& part, const std::vector<Chord>& chords,
+                               const BlockRules& rules = {});
+
 // Inputs: preset; part, convex; face_size; rules, what a block is (a corner above its largest a
 //         template keeps whole in one quad, and pays for). Output: the reward of finishing it with
 //         the template.

@@ -32,8 +32,10 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
   if (late) capped_ = true;
   // Past the budget, parts are finished greedily: every candidate scored, the best immediate reward
   // taken (no lookahead), which costs about what the greedy policy does on the parts left.
-  std::vector<ScoredAction> scored =
-      score_candidates(part, face_size, options, !late && options_.time_limit > 0.0 ? &deadline_ : nullptr);
+  // Only candidates that can be among the `width` best are scored (with pruning on: the same ones).
+  const size_t width = late ? 1 : static_cast<size_t>(std::max(1, options_.width));
+  std::vector<ScoredAction> scored = score_candidates(
+      part, face_size, options, !late && options_.time_limit > 0.0 ? &deadline_ : nullptr, options_.prune ? width : 0);
   Entry best;
   if (scored.empty()) {
     best.action = progress_action(part, options.rules);
@@ -51,7 +53,6 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
     return best.value;
   }
   std::stable_sort(scored.begin(), scored.end(), [](const ScoredAction& a, const ScoredAction& b) { return a.reward > b.reward; });
-  const size_t width = late ? 1 : static_cast<size_t>(std::max(1, options_.width));
   bool have = false;
   for (size_t i = 0; i < scored.size() && i < width; ++i) {
     // Out of time: the candidates expanded so far decide (one greedy finish per part, not one per

@@ -11,7 +11,9 @@
 // and the policy reports time_capped(). Branch and bound: a candidate whose value cannot beat the best
 // found so far (its reward plus its pieces' values where already solved, else an upper bound of them:
 // under the mesh preset every action costs at least 1 and a part without holes at least half its
-// reflex vertices; under Eq. (1) none) is not expanded: the same decisions, fewer parts solved.
+// reflex vertices; under Eq. (1) none) is not expanded, and a candidate whose reward's bound from its
+// chords (region_cut_reward_bound) shows it cannot be among the `width` best is not cut: the same
+// decisions, fewer parts solved and cut.
 #pragma once
 
 #include <chrono>
@@ -25,7 +27,7 @@ namespace autoblock {
 struct RegionSearchOptions {
   int width = 4;              // candidates expanded per part (by immediate reward)
   double time_limit = 2.0;    // seconds per face; 0: no limit
-  bool prune = true;          // branch and bound under the mesh preset (same decisions; false for tests)
+  bool prune = true;          // branch and bound and bounded scoring, mesh preset (same decisions; false for tests)
 };
 
 class RegionSearchPolicy : public RegionPolicy {

@@ -142,3 +142,65 @@ TEST_CASE("every general face ends in blocks, whatever the policy (property test
   CHECK(faces == 1000);
   CHECK(replayed == 50);
 }
+
+TEST_CASE("score_candidates keeping the best k: the same k best as scoring every candidate", "[region][policy]") {
+  // Generated faces and the pieces of their first cuts, with and without holes: sorted by reward
+  // (stable, as the search and greedy take them), the first k of score_candidates(..., k) are the
+  // first k of score_candidates(..., 0), which scores every candidate; what it returns is in the
+  // candidates' order, a subsequence of the whole list.
+  std::mt19937_64 rng(909);
+  const GeneralKind kinds[] = {GeneralKind::Polygon, GeneralKind::Chamfered};
+  long compared = 0, left_out = 0;
+  for (int i = 0; i < 24; ++i) {
+    GeneralOptions options;
+    options.kind = kinds[i % 2];
+    options.holes = i % 4 == 0;
+    options.max_vertices = i % 3 == 0 ? 24 : 12;
+    const Region face = face_region(generate_general_shape(rng, options));
+    std::vector<Region> parts{face};
+    for (const RegionAction& a : region_candidates(face)) {
+      if (a.kind != RegionAction::Kind::Cut || parts.size() > 5) continue;
+      const CutOutcome o = cut_region(face, a.cut);
+      if (o.pieces.size() >= 2) parts.insert(parts.end(), o.pieces.begin(), o.pieces.end());
+    }
+    for (const RewardPreset preset : {RewardPreset::Mesh, RewardPreset::Paper}) {
+      RegionEpisodeOptions episode;
+      episode.reward = preset;
+      for (const Region& part : parts) {
+        if (is_block(part, episode.rules)) continue;
+        auto by_reward = [](std::vector<ScoredAction> s) {
+          std::stable_sort(s.begin(), s.end(), [](const ScoredAction& a, const ScoredAction& b) { return a.reward > b.reward; });
+          return s;
+        };
+        const std::vector<ScoredAction> all = score_candidates(part, face.bbox().longer_side(), episode);
+        const std::vector<ScoredAction> sorted_all = by_reward(all);
+        for (const size_t k : {size_t{1}, size_t{4}, size_t{8}}) {
+          const std::vector<ScoredAction> kept = score_candidates(part, face.bbox().longer_side(), episode, nullptr, k);
+          REQUIRE(kept.size() >= std::min(k, all.size()));
+          size_t at = 0;  // a subsequence of all, in order
+          for (const ScoredAction& s : kept) {
+            while (at < all.size() && !(all[at].action.cut.origin == s.action.cut.origin &&
+                                        all[at].action.cut.direction == s.action.cut.direction &&
+                                        all[at].action.kind == s.action.kind && all[at].action.cut.kind == s.action.cut.kind)) {
+              ++at;
+            }
+            REQUIRE(at < all.size());
+            CHECK(all[at].reward == s.reward);
+            ++at;
+          }
+          const std::vector<ScoredAction> sorted_kept = by_reward(kept);
+          for (size_t j = 0; j < std::min(k, all.size()); ++j) {
+            CHECK(sorted_kept[j].reward == sorted_all[j].reward);
+            CHECK(sorted_kept[j].action.cut.origin == sorted_all[j].action.cut.origin);
+            CHECK(sorted_kept[j].action.cut.direction == sorted_all[j].action.cut.direction);
+            CHECK(sorted_kept[j].action.kind == sorted_all[j].action.kind);
+          }
+          ++compared;
+          left_out += static_cast<long>(all.size() - kept.size());
+        }
+      }
+    }
+  }
+  CHECK(compared > 200);
+  CHECK(left_out > 0);  // the bound leaves candidates out (mesh preset, parts without holes)
+}

@@ -2,11 +2,16 @@
 
 #include <cmath>
 #include <memory>
+#include <random>
 
 #include <catch2/catch.hpp>
 
 #include "core/geometry/axis_cut.h"
 #include "core/geometry/part.h"
+#include "core/data/general_generator.h"
+#include "core/geometry/tolerance.h"
+#include "core/region/region_candidates.h"
+#include "core/region/region_cut.h"
 
 using namespace autoblock;
 
@@ -63,4 +68,57 @@ TEST_CASE("the mesh preset charges a template for the corners it makes and the o
   CHECK(with_strict <= with_loose);
   // The paper preset (Eq. 1) ignores the rules' angles.
   CHECK(region_template_reward(RewardPreset::Paper, kite, 4.0, loose) == Approx(region_template_reward(RewardPreset::Paper, kite, 4.0, strict)));
+}
+
+TEST_CASE("the bound of a cut's mesh reward from its chords is never below the reward (property test)", "[region][reward][property]") {
+  // Every candidate cut (region_candidates) of generated faces and of the pieces their first cuts
+  // leave, under the default rules and under a face's adapted ones: where the fast path tells the
+  // chords, region_cut_reward_bound from them bounds region_cut_reward of the outcome from above.
+  std::mt19937_64 rng(808);
+  const GeneralKind kinds[] = {GeneralKind::Polygon, GeneralKind::Chamfered, GeneralKind::Turned};
+  BlockRules adapted;
+  adapted.min_corner_degrees = 50.0;
+  adapted.max_corner_degrees = 130.0;
+  long checked = 0, single = 0;
+  for (int i = 0; i < 60; ++i) {
+    GeneralOptions options;
+    options.kind = kinds[i % 3];
+    options.max_vertices = i % 4 == 0 ? 20 : 10;
+    options.size = std::pow(10.0, static_cast<double>(i % 5) - 2.0);
+    const GeneralShape shape = generate_general_shape(rng, options);
+    const Region face(shape.outer, shape.holes, tolerance_for_size(ring_bbox(shape.outer).longer_side()));
+    std::vector<Region> parts{face};
+    for (const RegionAction& a : region_candidates(face)) {  // the pieces of a few cuts, too
+      if (a.kind != RegionAction::Kind::Cut || parts.size() > 6) continue;
+      const CutOutcome o = cut_region(face, a.cut);
+      if (o.pieces.size() >= 2) parts.insert(parts.end(), o.pieces.begin(), o.pieces.end());
+    }
+    for (const Region& part : parts) {
+      if (!part.holes().empty()) continue;
+      for (const BlockRules& rules : {BlockRules{}, adapted}) {
+        for (const RegionAction& a : region_candidates(part)) {
+          if (a.kind != RegionAction::Kind::Cut) continue;
+          std::vector<Chord> chords;
+          bool told = false;
+          const std::optional<CutOutcome> o = cut_region_if(part, a.cut, [&](const std::vector<Chord>& c) {
+            chords = c;
+            told = true;
+            return true;
+          });
+          if (!told || !o || o->pieces.size() < 2) continue;
+          const double bound = region_cut_reward_bound(RewardPreset::Mesh, part, chords, rules);
+          const double reward = region_cut_reward(RewardPreset::Mesh, *o, 1.0, rules);
+          INFO("face " << i << ", cut from (" << a.cut.origin.x << ", " << a.cut.origin.y << ")");
+          CHECK(reward <= bound + 1e-12);
+          ++checked;
+          if (chords.size() == 1 && std::isfinite(bound)) ++single;
+        }
+      }
+    }
+  }
+  CHECK(checked > 5000);
+  CHECK(single > 2000);  // the one-chord bound (the shape term) is exercised, not only the count
+  // Eq. (1) can be positive: no bound.
+  const Region square(Ring{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {}, 1e-7);
+  CHECK(std::isinf(region_cut_reward_bound(RewardPreset::Paper, square, {Chord{{0, 2}, {4, 2}}})));
 }
