@@ -756,8 +756,11 @@ namespace {
 // block of it could be meshed (the block model merges vertices within 1.5 quanta).
 constexpr double kSliverWidthQuanta = 8.0;
 // A chord passing within this many quanta of a vertex that is not its end would leave an edge or a
-// corner too small to mesh (the cut should have gone through the vertex: the candidates have that cut).
-constexpr double kClearanceQuanta = 8.0;
+// corner too small to mesh (the cut should have gone through the vertex: the candidates have that cut),
+// or, nearly along an edge at that vertex, a strip that thin beside the chord: at 8 quanta (less than a
+// sliver's mean width) such a strip could be neither cut off nor finished (face 1621 of the property
+// test's stream, a random decomposition, was left with one); twice the sliver width keeps it cuttable.
+constexpr double kClearanceQuanta = 32.0;
 
 // True when the pieces tile the part (rounding to the lattice changes the area by at most q per unit
 // of boundary: a safety net, with loops that touch refused this holds by construction), no piece is

@@ -15,12 +15,14 @@
 // quantum of another of its loops (a cut nearly, but not exactly, along a hole's edge): rounding
 // would make the loops touch, and such a piece is not a valid part; or a piece whose loops touch at a
 // point (two chords meeting there: a line through a hole's corner, tangent to the hole). And so does
-// a cut whose chords pass within eight quanta of a vertex of the region that is not one of their ends
-// (a chord grazing a vertex, a T-junction within eight quanta of a corner, a neck narrower than that)
-// or that leaves a sliver (a piece whose area is at most eight quanta times its perimeter, a mean
-// width of 16 quanta): OpenCASCADE, cutting the real face at the face's tolerance (region_replay.h),
-// would read such a cut differently, and the mesher could not use an edge or a piece that small;
-// clear of that, it makes exactly the engine's pieces.
+// a cut whose chords pass within 32 quanta of a vertex of the region that is not one of their ends
+// (a chord grazing a vertex, a T-junction within 32 quanta of a corner, a neck narrower than that, a
+// chord nearly along an edge leaving a strip that thin beside it: twice a sliver's width, so that no
+// cut leaves a thin feature that only a sliver could finish) or that leaves a sliver (a piece whose
+// area is at most eight quanta times its perimeter, a mean width of 16 quanta): OpenCASCADE, cutting
+// the real face at the face's tolerance (region_replay.h), would read such a cut differently, and the
+// mesher could not use an edge or a piece that small; clear of that, it makes exactly the engine's
+// pieces.
 #pragma once
 
 #include <functional>
@@ -42,7 +44,7 @@ struct RegionCut {
   CutKind kind = CutKind::Full;
   Point2 origin;
   Point2 direction{1.0, 0.0};
-  // Taken even when its chords pass within eight quanta of a vertex (see above; never a sliver or a
+  // Taken even when its chords pass within 32 quanta of a vertex (see above; never a sliver or a
   // pinched piece): only progress_action's last resort (region_candidates.h) sets it, on a part where
   // no cut keeps clear.
   bool forced = false;

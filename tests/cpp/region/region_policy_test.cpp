@@ -96,14 +96,14 @@ TEST_CASE("greedy on general faces: a square is one block, an L two, a triangle 
 }
 
 TEST_CASE("every general face ends in blocks, whatever the policy (property test)", "[region][policy][property]") {
-  // 1000 generated faces (polygons, turned and chamfered unions; a quarter with holes; 10 or 20
+  // 3000 generated faces (polygons, turned and chamfered unions; a quarter with holes; 10 or 20
   // vertices; sizes 0.01 to 10000): random on each, greedy on every third, the search on every
   // hundredth; every 20th random decomposition replayed by OpenCASCADE (the same pieces, areas within
   // the lattice's rounding, or replay_region_cuts_occt throws).
   std::mt19937_64 rng(2026);
   const GeneralKind kinds[] = {GeneralKind::Polygon, GeneralKind::Turned, GeneralKind::Chamfered};
   int faces = 0, replayed = 0;
-  for (int i = 0; i < 1000; ++i) {
+  for (int i = 0; i < 3000; ++i) {
     GeneralOptions options;
     options.kind = kinds[i % 3];
     options.holes = i % 4 == 0;
@@ -139,8 +139,8 @@ TEST_CASE("every general face ends in blocks, whatever the policy (property test
     }
     ++faces;
   }
-  CHECK(faces == 1000);
-  CHECK(replayed == 50);
+  CHECK(faces == 3000);
+  CHECK(replayed == 150);
 }
 
 TEST_CASE("score_candidates keeping the best k: the same k best as scoring every candidate", "[region][policy]") {
