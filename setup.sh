@@ -24,7 +24,7 @@ PACKAGES=(
   libocct-data-exchange-dev libtbb-dev
   nlohmann-json3-dev libcli11-dev catch2
   libtorch-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-  libopenblas0-pthread
+  libopenblas0-pthread libblas-dev
   qtbase5-dev libqt5svg5-dev
   libglpk-dev gmsh calculix-ccx
   freecad pybind11-dev python3-dev xvfb xauth

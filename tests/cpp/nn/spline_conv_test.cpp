@@ -1,6 +1,9 @@
 #include "support/catch_torch.h"
 
 
+#include <tuple>
+#include <vector>
+
 #include "core/nn/spline_basis.h"
 #include "core/nn/spline_conv.h"
 #include "core/nn/spline_weighting.h"
@@ -159,4 +162,36 @@ TEST_CASE("SplineConv rejects inputs that do not fit", "[nn][spline]") {
   CHECK_THROWS_AS(conv(torch::rand({2, 3}), edge_index, torch::rand({2, 2})), std::invalid_argument);
   CHECK_THROWS_AS(conv->forward_on(torch::rand({2, 3}), spline_graph(edge_index, pseudo, 2, 3)), std::invalid_argument);
   CHECK_THROWS_AS(SplineConv(0, 4, 5), std::invalid_argument);
+}
+
+TEST_CASE("without gradients the mean weighting by kernel cells equals the dense product", "[nn][spline]") {
+  // spline_graph built with gradients off keeps its rows by cell; spline_mean_weighting then sums
+  // over the nonzero (node, cell) blocks only. It must give the dense form's values.
+  torch::manual_seed(31);
+  for (const auto& [nodes, edges, in, out, k] : std::vector<std::tuple<int64_t, int64_t, int64_t, int64_t, int64_t>>{
+           {1, 0, 3, 4, 5}, {12, 30, 3, 32, 5}, {40, 200, 32, 64, 5}, {57, 120, 64, 16, 3}, {200, 1100, 16, 1, 5}}) {
+    const RandomGraph g = random_graph(nodes + 2, edges, in, torch::kFloat);
+    const torch::Tensor weight = torch::randn({k * k, in, out});
+    const SplineGraph dense_graph = spline_graph(g.edge_index, g.pseudo, nodes + 2, k);
+    REQUIRE_FALSE(dense_graph.cell_rows);  // gradients on: the dense operator only
+    const torch::Tensor dense = spline_mean_weighting(g.x, weight, dense_graph);
+    torch::NoGradGuard no_grad;
+    const SplineGraph cell_graph = spline_graph(g.edge_index, g.pseudo, nodes + 2, k);
+    REQUIRE(cell_graph.cell_rows);
+    const SplineCellRows& cells = *cell_graph.cell_rows;
+    CHECK_FALSE(cell_graph.mean_operator.defined());
+    CHECK(cells.cell_start.size() == static_cast<size_t>(k * k + 1));
+    CHECK(cells.cell_start.back() == static_cast<int64_t>(cells.targets.size()));
+    CHECK(cells.row_start.size() == cells.targets.size() + 1);
+    CHECK(cells.row_start.back() <= dense_graph.mean_operator._nnz());  // exact zeros left out
+    const torch::Tensor by_cells = spline_mean_weighting(g.x, weight, cell_graph);
+    INFO(nodes << " nodes, " << edges << " edges, " << in << " -> " << out << ", K " << k);
+    REQUIRE(by_cells.sizes() == dense.sizes());
+    CHECK(torch::allclose(by_cells, dense, 1e-5, 1e-5));
+    // The last two nodes receive nothing: 0 there.
+    CHECK(by_cells.slice(0, nodes, nodes + 2).abs().max().item<float>() == 0.0f);
+    // Such a graph cannot take gradients: a clear error, not a wrong result.
+    torch::AutoGradMode with_gradients(true);
+    CHECK_THROWS_AS(spline_mean_weighting(g.x, weight, cell_graph), std::invalid_argument);
+  }
 }

@@ -122,6 +122,27 @@ TEST_CASE("ValueNetwork in eval mode: a batch equals its graphs one by one", "[n
   }
 }
 
+TEST_CASE("ValueNetwork: the forward pass without gradients (by kernel cells) equals the one with them", "[nn][value]") {
+  // Deployment runs under NoGradGuard, where SplineConv multiplies only the nonzero (node, cell)
+  // blocks (spline_weighting.h); training runs with gradients, through the dense product.
+  torch::manual_seed(9);
+  const std::vector<PartGraph> graphs = some_graphs(6, 23);
+  std::vector<const PartGraph*> pointers;
+  for (const PartGraph& g : graphs) pointers.push_back(&g);
+  const GraphBatch batch = batch_graphs(pointers);
+  for (const std::string& name : ValueNetworkConfig::names()) {
+    ValueNetwork net(ValueNetworkConfig::by_name(name));
+    net->train();
+    for (int k = 0; k < 3; ++k) net(batch.x, batch.edge_index, batch.pseudo);
+    net->eval();
+    const torch::Tensor with_gradients = net(batch.x, batch.edge_index, batch.pseudo).detach();
+    torch::NoGradGuard no_grad;
+    const torch::Tensor without = net(batch.x, batch.edge_index, batch.pseudo);
+    INFO(name);
+    CHECK(torch::allclose(without, with_gradients, 1e-4, 1e-5));
+  }
+}
+
 TEST_CASE("ValueNetwork: gradients reach every parameter", "[nn][value]") {
   torch::manual_seed(9);
   const std::vector<PartGraph> graphs = some_graphs(2, 23);
