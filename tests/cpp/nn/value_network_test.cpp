@@ -33,6 +33,22 @@ std::vector<PartGraph> some_graphs(int count, std::uint64_t seed) {
   return graphs;
 }
 
+GraphBatch batch_of(const std::vector<PartGraph>& graphs) {
+  std::vector<const PartGraph*> pointers;
+  for (const PartGraph& g : graphs) pointers.push_back(&g);
+  return batch_graphs(pointers);
+}
+
+// The preset's network in eval mode, its batch norms given non-trivial running statistics first
+// (three training-mode passes over batch).
+ValueNetwork in_eval_mode(const std::string& name, const GraphBatch& batch) {
+  ValueNetwork net(ValueNetworkConfig::by_name(name));
+  net->train();
+  for (int k = 0; k < 3; ++k) net(batch.x, batch.edge_index, batch.pseudo);
+  net->eval();
+  return net;
+}
+
 }  // namespace
 
 TEST_CASE("ValueNetwork presets have the paper's layers", "[nn][value]") {
@@ -100,15 +116,9 @@ TEST_CASE("ValueNetwork gives one value per node for both presets", "[nn][value]
 TEST_CASE("ValueNetwork in eval mode: a batch equals its graphs one by one", "[nn][value]") {
   torch::manual_seed(8);
   const std::vector<PartGraph> graphs = some_graphs(4, 22);
-  std::vector<const PartGraph*> pointers;
-  for (const PartGraph& g : graphs) pointers.push_back(&g);
-  const GraphBatch batch = batch_graphs(pointers);
+  const GraphBatch batch = batch_of(graphs);
   for (const std::string& name : ValueNetworkConfig::names()) {
-    ValueNetwork net(ValueNetworkConfig::by_name(name));
-    // Give the batch norms non-trivial running statistics first (training-mode passes).
-    net->train();
-    for (int k = 0; k < 3; ++k) net(batch.x, batch.edge_index, batch.pseudo);
-    net->eval();
+    ValueNetwork net = in_eval_mode(name, batch);
     torch::NoGradGuard no_grad;
     const torch::Tensor together = net(batch.x, batch.edge_index, batch.pseudo);
     INFO(name);
@@ -127,14 +137,9 @@ TEST_CASE("ValueNetwork: the forward pass without gradients (by kernel cells) eq
   // blocks (spline_weighting.h); training runs with gradients, through the dense product.
   torch::manual_seed(9);
   const std::vector<PartGraph> graphs = some_graphs(6, 23);
-  std::vector<const PartGraph*> pointers;
-  for (const PartGraph& g : graphs) pointers.push_back(&g);
-  const GraphBatch batch = batch_graphs(pointers);
+  const GraphBatch batch = batch_of(graphs);
   for (const std::string& name : ValueNetworkConfig::names()) {
-    ValueNetwork net(ValueNetworkConfig::by_name(name));
-    net->train();
-    for (int k = 0; k < 3; ++k) net(batch.x, batch.edge_index, batch.pseudo);
-    net->eval();
+    ValueNetwork net = in_eval_mode(name, batch);
     const torch::Tensor with_gradients = net(batch.x, batch.edge_index, batch.pseudo).detach();
     torch::NoGradGuard no_grad;
     const torch::Tensor without = net(batch.x, batch.edge_index, batch.pseudo);
