@@ -14,6 +14,7 @@
 #include "core/geometry/tolerance.h"
 #include "core/region/region_candidates.h"
 #include "core/region/region_search.h"
+#include "support/test_shapes.h"
 
 using namespace autoblock;
 
@@ -157,12 +158,7 @@ TEST_CASE("score_candidates keeping the best k: the same k best as scoring every
     options.holes = i % 4 == 0;
     options.max_vertices = i % 3 == 0 ? 24 : 12;
     const Region face = face_region(generate_general_shape(rng, options));
-    std::vector<Region> parts{face};
-    for (const RegionAction& a : region_candidates(face)) {
-      if (a.kind != RegionAction::Kind::Cut || parts.size() > 5) continue;
-      const CutOutcome o = cut_region(face, a.cut);
-      if (o.pieces.size() >= 2) parts.insert(parts.end(), o.pieces.begin(), o.pieces.end());
-    }
+    const std::vector<Region> parts = test::face_and_first_pieces(face, 5);
     for (const RewardPreset preset : {RewardPreset::Mesh, RewardPreset::Paper}) {
       RegionEpisodeOptions episode;
       episode.reward = preset;

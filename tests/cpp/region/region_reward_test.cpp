@@ -12,6 +12,7 @@
 #include "core/geometry/tolerance.h"
 #include "core/region/region_candidates.h"
 #include "core/region/region_cut.h"
+#include "support/test_shapes.h"
 
 using namespace autoblock;
 
@@ -87,13 +88,7 @@ TEST_CASE("the bound of a cut's mesh reward from its chords is never below the r
     options.size = std::pow(10.0, static_cast<double>(i % 5) - 2.0);
     const GeneralShape shape = generate_general_shape(rng, options);
     const Region face(shape.outer, shape.holes, tolerance_for_size(ring_bbox(shape.outer).longer_side()));
-    std::vector<Region> parts{face};
-    for (const RegionAction& a : region_candidates(face)) {  // the pieces of a few cuts, too
-      if (a.kind != RegionAction::Kind::Cut || parts.size() > 6) continue;
-      const CutOutcome o = cut_region(face, a.cut);
-      if (o.pieces.size() >= 2) parts.insert(parts.end(), o.pieces.begin(), o.pieces.end());
-    }
-    for (const Region& part : parts) {
+    for (const Region& part : test::face_and_first_pieces(face, 6)) {
       if (!part.holes().empty()) continue;
       for (const BlockRules& rules : {BlockRules{}, adapted}) {
         for (const RegionAction& a : region_candidates(part)) {

@@ -4,6 +4,8 @@
 #include <random>
 
 #include "core/geometry/validate_polygon.h"
+#include "core/region/region_candidates.h"
+#include "core/region/region_cut.h"
 
 namespace autoblock::test {
 
@@ -35,6 +37,17 @@ RectilinearPolygon general_polygon(std::uint64_t seed, GeneralKind kind, bool ho
   options.holes = holes;
   const GeneralShape shape = generate_general_shape(rng, options);
   return RectilinearPolygon{shape.outer, shape.holes};
+}
+
+std::vector<Region> face_and_first_pieces(const Region& face, size_t count) {
+  std::vector<Region> parts{face};
+  for (const RegionAction& a : region_candidates(face)) {
+    if (parts.size() > count) break;
+    if (a.kind != RegionAction::Kind::Cut) continue;
+    const CutOutcome o = cut_region(face, a.cut);
+    if (o.pieces.size() >= 2) parts.insert(parts.end(), o.pieces.begin(), o.pieces.end());
+  }
+  return parts;
 }
 
 std::string temporary_folder(const std::string& name) {

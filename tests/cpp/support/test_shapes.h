@@ -9,6 +9,7 @@
 #include "core/data/shape_generator.h"
 #include "core/geometry/grid_face.h"
 #include "core/geometry/rectilinear_polygon.h"
+#include "core/region/region.h"
 
 namespace autoblock::test {
 
@@ -27,6 +28,11 @@ std::vector<GeneratedShape> generated_shapes(int count, std::uint64_t seed, cons
 
 // Inputs: seed, kind, holes. Output: one generated general shape (general_generator.h) as a polygon.
 RectilinearPolygon general_polygon(std::uint64_t seed, GeneralKind kind, bool holes);
+
+// Inputs: face, a region; count. Output: the face, then the pieces of its first candidate cuts
+// (region_candidates order) that split it, until more than count parts are listed: parts of many
+// shapes for property tests of cuts and scores.
+std::vector<Region> face_and_first_pieces(const Region& face, size_t count);
 
 // A fresh empty temporary folder, removed by nobody (the system's temp cleaner does it).
 std::string temporary_folder(const std::string& name);
