@@ -55,7 +55,7 @@ class TrainPanel:
             presets = ["paper"]
         f.reward.addItems(presets)
         f.reward.setToolTip("The reward the policy learns to maximise: paper (Eq. (1) of DiPrete et al. 2022) or "
-                            "mesh (few, fat blocks; the shipped default policy sac-mesh was trained with it)")
+                            "mesh (few, fat blocks; the shipped sac-mesh, auto's fallback, was trained with it)")
         if preferences.params().GetString(preferences.REWARD_PRESET, "") in presets:
             f.reward.setCurrentText(preferences.params().GetString(preferences.REWARD_PRESET, ""))
         data = os.path.join(paths.MODELS, "data")
