@@ -329,13 +329,13 @@ class TestDecompose(unittest.TestCase):
             doc.recompute()
             V = FreeCAD.Vector
             sliver = Part.Face(Part.makePolygon([V(0, 0, 0), V(40, 0, 0), V(0, 2, 0), V(0, 0, 0)]))
-            disc = Part.Face(Part.Wire(Part.makeCircle(2.0)))
+            oval = Part.Face(Part.Wire(Part.Ellipse(V(0, 0, 0), 3.0, 1.0).toShape()))  # circles are accepted
             cases = [
                 (sphere, "not planar"),
                 (box, "6 faces"),
                 ((box, "Edge1"), "not a face"),
                 (sliver, "sharper than the smallest supported"),
-                (disc, "only straight edges"),
+                (oval, "only straight edges and circular arcs"),
                 (Part.makeCompound([support.l_face(), support.l_face().translate(V(10, 0, 0))]), "2 faces"),
                 (Part.makePolygon([V(0, 0, 0), V(1, 0, 0), V(1, 1, 0)]), "its wire is not closed"),
             ]

@@ -85,7 +85,7 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
     {
       const auto lock = lock_general_engine();
       result.region = decompose_region(face.region, *policy, options);
-      if (settings.occt_blocks) blocks = replay_region_cuts_occt(face.occt, face.region, result.region, options);
+      if (settings.occt_blocks) blocks = replay_region_cuts_occt(face.occt, face.region, result.region, options, &face.arcs);
     }
   } else {
     PolicySettings policy_settings = settings.policy_settings;
@@ -127,7 +127,7 @@ FaceDecomposition face_replay_general(const InputFace& face, const std::vector<R
   {
     const auto lock = lock_general_engine();
     result.region = replay_region_decomposition(face.region, actions, options, policy);
-    if (occt_blocks) blocks = replay_region_cuts_occt(face.occt, face.region, result.region, options);
+    if (occt_blocks) blocks = replay_region_cuts_occt(face.occt, face.region, result.region, options, &face.arcs);
   }
   if (occt_blocks) set_block_faces(result, std::move(blocks));
   return result;

@@ -28,11 +28,28 @@ Measure measure(const TopoDS_Face& face) {
   return {props.Mass(), Point2{c.X(), c.Y()}};
 }
 
+// The area between the region's loops and the face's arcs: how far a piece's area on the lattice's
+// polygon can differ from the true piece's.
+double arc_gap_area(const Region& region, const FaceArcs& arcs) {
+  double gap = 0.0;
+  for (const Ring& ring : region.loops()) {
+    for (size_t k = 0; k < ring.size(); ++k) {
+      const Point2 a = ring[k], b = ring[(k + 1) % ring.size()];
+      const int arc = arcs.arc_of_chord(a, b);
+      if (arc >= 0) gap += std::fabs(arc_gap(arcs.arcs[static_cast<size_t>(arc)], a, b).area);
+    }
+  }
+  return gap;
+}
+
 }  // namespace
 
 std::vector<TopoDS_Face> replay_region_cuts_occt(const TopoDS_Face& face, const Region& region,
                                                  const RegionDecomposition& decomposition,
-                                                 RegionEpisodeOptions options) {
+                                                 RegionEpisodeOptions options, const FaceArcs* arcs) {
+  const bool curved = arcs && !arcs->empty();
+  const double gap_area = curved ? arc_gap_area(region, *arcs) : 0.0;
+
   options.reward = decomposition.reward;
   options.rules = decomposition.rules;
   options.face_rules = false;
@@ -52,7 +69,18 @@ std::vector<TopoDS_Face> replay_region_cuts_occt(const TopoDS_Face& face, const 
     const CutOutcome outcome = episode.outcome_of(record.action);
     if (record.action.kind == RegionAction::Kind::Cut && outcome.pieces.size() >= 2) {
       std::vector<std::pair<Point2, Point2>> segments;
-      for (const Chord& c : outcome.chords) segments.emplace_back(c.a, c.b);
+      for (const Chord& c : outcome.chords) {
+        segments.emplace_back(c.a, c.b);
+        // An end on an arc's polygon lies up to a sagitta off the arc, inside the true face (the
+        // polygons are inscribed where the face is inside the circle, circumscribed where it is
+        // outside): the cut goes on along the radius to the arc, where the mesh puts that vertex.
+        for (const Point2 end : {c.a, c.b}) {
+          const int arc = curved ? arcs->arc_of_point(end) : -1;
+          if (arc < 0) continue;
+          const Point2 on = project_to_circle(end, arcs->arcs[static_cast<size_t>(arc)]);
+          if (std::hypot(on.x - end.x, on.y - end.y) > 0.5 * q) segments.emplace_back(end, on);
+        }
+      }
       // Chord ends lie on the lattice, within q / sqrt(2) of a boundary that is itself within q / sqrt(2)
       // of the true one: gaps up to 1.5 q count as touching. The engine keeps every other vertex farther
       // than 2 q from the chords (region_cut.h).
@@ -72,7 +100,7 @@ std::vector<TopoDS_Face> replay_region_cuts_occt(const TopoDS_Face& face, const 
       for (size_t k = 0; k < outcome.pieces.size(); ++k) {
         const Region& piece = outcome.pieces[k];
         // Rounding to the lattice moves each boundary point by at most q / 2 (region.h).
-        const double area_tolerance = region_perimeter(piece) * q + 1e-9 * piece.area();
+        const double area_tolerance = region_perimeter(piece) * q + 1e-9 * piece.area() + gap_area;
         size_t match = pieces.size();
         double best = std::numeric_limits<double>::infinity();
         for (size_t j = 0; j < pieces.size(); ++j) {

@@ -7,6 +7,7 @@
 
 #include <TopoDS_Face.hxx>
 
+#include "core/geometry/circular_arc.h"
 #include "core/region/region_policy.h"
 
 namespace autoblock {
@@ -16,10 +17,13 @@ namespace autoblock {
 //          and block rules).
 // Outputs: the faces of the finished parts (blocks and templates) in the order set aside, cut from
 //          the input face by OpenCASCADE; then the parts left unfinished, if any.
+//          arcs, the face's circular edges (InputFace::arcs; nullptr: none): a chord's end on an arc's
+//          polygon is moved along the chord onto the arc, so that the cut reaches the true boundary.
 // Throws std::logic_error when OpenCASCADE's pieces differ from the engine's (number of pieces, or an
-// area beyond what the lattice's rounding explains) and std::runtime_error when OpenCASCADE fails.
+// area beyond what the lattice's rounding and the arcs' segments explain) and std::runtime_error
+// when OpenCASCADE fails.
 std::vector<TopoDS_Face> replay_region_cuts_occt(const TopoDS_Face& face, const Region& region,
                                                  const RegionDecomposition& decomposition,
-                                                 RegionEpisodeOptions options = {});
+                                                 RegionEpisodeOptions options = {}, const FaceArcs* arcs = nullptr);
 
 }  // namespace autoblock

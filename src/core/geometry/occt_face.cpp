@@ -30,6 +30,7 @@
 
 #include "core/common/error.h"
 #include "core/common/format.h"
+#include "core/geometry/circular_arc.h"
 #include "core/geometry/tolerance.h"
 #include "core/geometry/validate_polygon.h"
 
@@ -151,13 +152,39 @@ FaceRings read_face_rings(const TopoDS_Face& face) {
       ++walked;
       const gp_Pnt start = BRep_Tool::Pnt(walk.CurrentVertex());
       BRepAdaptor_Curve curve(edge);
+      if (curve.GetType() == GeomAbs_Circle) {
+        // A circular arc: its samples (all but the last, the next edge's start) and the arc itself.
+        const gp_Circ circle = curve.Circle();
+        const bool reversed = edge.Orientation() == TopAbs_REVERSED;
+        const double u0 = reversed ? curve.LastParameter() : curve.FirstParameter();
+        const double u1 = reversed ? curve.FirstParameter() : curve.LastParameter();
+        const double axis = circle.Axis().Direction().Z() > 0 ? 1.0 : -1.0;
+        const gp_Pnt p0 = curve.Value(u0);
+        CircularArc arc;
+        arc.center = Point2{circle.Location().X(), circle.Location().Y()};
+        arc.radius = circle.Radius();
+        arc.start = std::atan2(p0.Y() - arc.center.y, p0.X() - arc.center.x);
+        arc.sweep = axis * (u1 - u0);
+        // The face lies on the left of its edges run in wire order (seen from its normal's side):
+        // inside the circle when the arc runs counter-clockwise around it, seen so.
+        arc.outside = (arc.sweep > 0) != result.normal_up;
+        const std::vector<Point2> polygon = polygonise_arc(arc);
+        ring.points.push_back(Point2{start.X(), start.Y()});
+        result.vertex_z.push_back(start.Z());
+        for (size_t k = 1; k + 1 < polygon.size(); ++k) {
+          ring.points.push_back(polygon[k]);
+          result.vertex_z.push_back(start.Z());
+        }
+        result.arcs.push_back(arc);
+        continue;
+      }
       if (curve.GetType() != GeomAbs_Line) {
         TopoDS_Vertex v1, v2;
         TopExp::Vertices(edge, v1, v2, true);
         const gp_Pnt a = BRep_Tool::Pnt(v1), b = BRep_Tool::Pnt(v2);
         throw InputError("edge " + std::to_string(walked) + " of the " + ring.name + ", from " +
                          format_point(a.X(), a.Y(), tol) + " to " + format_point(b.X(), b.Y(), tol) + ", is " +
-                         with_article(curve_type_name(curve.GetType())) + "; only straight edges are supported");
+                         with_article(curve_type_name(curve.GetType())) + "; only straight edges and circular arcs are supported");
       }
       ring.points.push_back(Point2{start.X(), start.Y()});
       result.vertex_z.push_back(start.Z());

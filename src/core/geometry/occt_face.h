@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/geometry/circular_arc.h"
 #include "core/geometry/placement.h"
 #include "core/geometry/planar_face.h"
 #include "core/geometry/validate_polygon.h"
@@ -20,12 +21,15 @@ struct FaceRings {
   double z = 0.0;                // the face's plane
   bool normal_up = true;         // the face's normal is +Z (false: -Z)
   std::vector<double> vertex_z;  // z of every vertex read
+  std::vector<CircularArc> arcs; // the circular edges, each also in its ring as its samples
+                                 // (circular_arc.h: polygonise_arc without its last point)
 };
 
 // Inputs:  face, any TopoDS_Face.
-// Outputs: its wires as loops of (x, y) points. Throws InputError when the face is not planar, does
-//          not lie parallel to the XY plane, has a curved edge or an open wire (naming the wire, the
-//          edge and its end points).
+// Outputs: its wires as loops of (x, y) points, a circular edge as its samples (kArcStepDegrees
+//          apart) and in arcs. Throws InputError when the face is not planar, does not lie parallel
+//          to the XY plane, has an edge that is neither straight nor a circular arc, or an open wire
+//          (naming the wire, the edge and its end points).
 FaceRings read_face_rings(const TopoDS_Face& face);
 
 // Inputs: rings, read; tolerance, the face's. Throws InputError when a vertex lies off the plane.

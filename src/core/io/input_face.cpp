@@ -191,13 +191,17 @@ InputFace input_face_from_occt(const TopoDS_Face& face, const std::string& sourc
     const FaceRings read = read_face_rings(input.occt);
     input.planar.z = read.z;
     input.planar.normal_up = read.normal_up;
-    if (rings_rectilinear(read.rings)) {
+    if (read.arcs.empty() && rings_rectilinear(read.rings)) {
       input.planar.polygon = validate_rings(read.rings, &input.planar.tolerance);
       check_vertices_on_plane(read, input.planar.tolerance);
       input.grid = make_grid_face(input.planar.polygon);
       check_occt_face(input.occt, tolerance, smallest_feature(*input.grid.grid));
     } else {
       input.region = validate_general_rings(read.rings, &input.planar.tolerance);
+      input.arcs.arcs = read.arcs;
+      // Samples and cut ends lie on the lattice (within q / sqrt 2 of where they belong), T-junctions
+      // within kModelToleranceQuanta (3) quanta of a side (block_model.h).
+      input.arcs.tolerance = kArcToleranceQuanta * input.region.quantum();
       check_vertices_on_plane(read, input.planar.tolerance);
       check_occt_face(input.occt, tolerance, smallest_feature(input.region));
     }

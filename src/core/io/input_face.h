@@ -1,13 +1,14 @@
 // An input face in every form the pipeline needs: as the model holds it, in its own frame (see
 // occt_face.h, face_frame), validated, and either on its grid (a face whose edges run along two
-// perpendicular directions: the grid engine) or as a general region (edges at any angle: the
-// general engine, core/region).
+// perpendicular directions: the grid engine) or as a general region (edges at any angle, circular
+// arcs as their chords: the general engine, core/region).
 #pragma once
 
 #include <string>
 
 #include <TopoDS_Face.hxx>
 
+#include "core/geometry/circular_arc.h"
 #include "core/geometry/grid_face.h"
 #include "core/geometry/placement.h"
 #include "core/geometry/planar_face.h"
@@ -23,6 +24,7 @@ struct InputFace {
   PlanarFace planar;   // validated in its frame (a general face: z, normal_up and tolerance only)
   GridFace grid;       // a rectilinear face on its grid; empty for a general face
   Region region;       // a general face as a region on its lattice; empty for a rectilinear face
+  FaceArcs arcs;       // a general face's circular edges, in its frame (its region holds their samples)
   bool is_general() const { return !region.is_empty(); }
 };
 

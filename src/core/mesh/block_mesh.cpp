@@ -1,6 +1,7 @@
 #include "core/mesh/block_mesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -8,12 +9,43 @@
 
 namespace autoblock {
 
-QuadMesh block_model_mesh(const BlockModel& model, const std::vector<int>& intervals, double z) {
+namespace {
+
+// Which model edges lie on an arc of the face (-1: none): the boundary edges (used by one block's
+// side) that are chords of an arc.
+std::vector<int> edge_arcs(const BlockModel& model, const FaceArcs& arcs) {
+  std::vector<int> uses(model.edges.size(), 0);
+  for (const ModelBlock& block : model.blocks) {
+    for (const ModelSide& side : block.sides) {
+      for (const int e : side.edges) ++uses[static_cast<size_t>(e)];
+    }
+  }
+  std::vector<int> on(model.edges.size(), -1);
+  for (size_t e = 0; e < model.edges.size(); ++e) {
+    if (uses[e] != 1) continue;
+    const ModelEdge& edge = model.edges[e];
+    on[e] = arcs.arc_of_chord(model.vertices[static_cast<size_t>(edge.a)], model.vertices[static_cast<size_t>(edge.b)]);
+  }
+  return on;
+}
+
+}  // namespace
+
+QuadMesh block_model_mesh(const BlockModel& model, const std::vector<int>& intervals, double z, const FaceArcs* arcs,
+                          const std::vector<char>* by_length) {
   if (intervals.size() != model.edges.size()) throw std::logic_error("block_model_mesh: one count per edge expected");
   QuadMesh mesh;
   mesh.z = z;
   mesh.blocks = model.parts;
   mesh.nodes = model.vertices;  // node v is model vertex v
+  const std::vector<int> on_arc = arcs && !arcs->empty() ? edge_arcs(model, *arcs) : std::vector<int>(model.edges.size(), -1);
+  for (size_t e = 0; e < model.edges.size(); ++e) {
+    if (on_arc[e] < 0) continue;
+    const CircularArc& arc = arcs->arcs[static_cast<size_t>(on_arc[e])];
+    for (const int v : {model.edges[e].a, model.edges[e].b}) {
+      mesh.nodes[static_cast<size_t>(v)] = project_to_circle(model.vertices[static_cast<size_t>(v)], arc);
+    }
+  }
 
   // Every edge's nodes from a to b, its vertices included.
   std::vector<std::vector<int>> edge_nodes(model.edges.size());
@@ -21,9 +53,24 @@ QuadMesh block_model_mesh(const BlockModel& model, const std::vector<int>& inter
     const ModelEdge& edge = model.edges[e];
     const int n = intervals[e];
     if (n < 1) throw std::logic_error("block_model_mesh: an edge without intervals");
-    const Point2 a = model.vertices[static_cast<size_t>(edge.a)], b = model.vertices[static_cast<size_t>(edge.b)];
+    const Point2 a = mesh.nodes[static_cast<size_t>(edge.a)], b = mesh.nodes[static_cast<size_t>(edge.b)];
     std::vector<int>& nodes = edge_nodes[e];
     nodes.push_back(edge.a);
+    if (on_arc[e] >= 0) {
+      // On the arc, evenly in angle (a chord spans less than a half turn: the shorter way).
+      const CircularArc& arc = arcs->arcs[static_cast<size_t>(on_arc[e])];
+      const double ta = std::atan2(a.y - arc.center.y, a.x - arc.center.x);
+      double turn = std::atan2(b.y - arc.center.y, b.x - arc.center.x) - ta;
+      if (turn > M_PI) turn -= 2.0 * M_PI;
+      if (turn < -M_PI) turn += 2.0 * M_PI;
+      for (int k = 1; k < n; ++k) {
+        const double t = ta + turn * static_cast<double>(k) / n;
+        nodes.push_back(static_cast<int>(mesh.nodes.size()));
+        mesh.nodes.push_back(Point2{arc.center.x + arc.radius * std::cos(t), arc.center.y + arc.radius * std::sin(t)});
+      }
+      nodes.push_back(edge.b);
+      continue;
+    }
     for (int k = 1; k < n; ++k) {
       const double t = static_cast<double>(k) / n;
       nodes.push_back(static_cast<int>(mesh.nodes.size()));
@@ -53,7 +100,7 @@ QuadMesh block_model_mesh(const BlockModel& model, const std::vector<int>& inter
     // reversed), left c0 -> c3 (side 3 reversed).
     std::vector<int> bottom = side_ids[0], right = side_ids[1];
     std::vector<int> top(side_ids[2].rbegin(), side_ids[2].rend()), left(side_ids[3].rbegin(), side_ids[3].rend());
-    add_mapped_block(mesh, bottom, top, left, right, block.part);
+    add_mapped_block(mesh, bottom, top, left, right, block.part, by_length && (*by_length)[b]);
   }
   return mesh;
 }

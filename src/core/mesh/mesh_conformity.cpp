@@ -24,17 +24,33 @@ Conformity check_conformity(const QuadMesh& mesh, const RectilinearPolygon& face
 }
 
 Conformity check_conformity(const QuadMesh& mesh, const std::vector<Ring>& loops, double tolerance) {
+  return check_conformity(mesh, loops, tolerance, FaceArcs{});
+}
+
+Conformity check_conformity(const QuadMesh& mesh, const std::vector<Ring>& loops, double tolerance, const FaceArcs& arcs) {
   Conformity c;
   std::vector<Segment> rings;
   for (size_t l = 0; l < loops.size(); ++l) {
-    const Ring& ring = loops[l];
+    // The outer loop adds its area, holes take theirs away, whatever their orientation; the region
+    // lies on the left of a loop run so.
+    const double area = signed_area(loops[l]);
+    const bool reversed = (l == 0) != (area > 0);
+    Ring ring = loops[l];
+    if (reversed) std::reverse(ring.begin(), ring.end());
     for (size_t k = 0; k < ring.size(); ++k) {
       const Segment s{ring[k], ring[(k + 1) % ring.size()]};
-      c.face_perimeter += std::hypot(s.b.x - s.a.x, s.b.y - s.a.y);
-      rings.push_back(s);
+      const int arc = arcs.arc_of_chord(s.a, s.b);
+      if (arc < 0) {
+        c.face_perimeter += std::hypot(s.b.x - s.a.x, s.b.y - s.a.y);
+        rings.push_back(s);
+        continue;
+      }
+      // A chord of an arc: the face has the arc (and the segment between them) instead.
+      const ArcGap gap = arc_gap(arcs.arcs[static_cast<size_t>(arc)], s.a, s.b);
+      c.face_perimeter += gap.arc_length;
+      c.face_area += gap.area;
     }
-    // The outer loop adds its area, holes take theirs away, whatever their orientation.
-    c.face_area += (l == 0 ? 1.0 : -1.0) * std::fabs(signed_area(ring));
+    c.face_area += (l == 0 ? 1.0 : -1.0) * std::fabs(area);
   }
   for (size_t q = 0; q < mesh.quads.size(); ++q) {
     const auto p = mesh.corners(q);
@@ -54,6 +70,15 @@ Conformity check_conformity(const QuadMesh& mesh, const std::vector<Ring>& loops
       ++c.boundary_edges;
       const Point2& a = mesh.nodes[static_cast<size_t>(e.a)];
       const Point2& b = mesh.nodes[static_cast<size_t>(e.b)];
+      const int arc = arcs.arc_of_chord(a, b);
+      if (arc >= 0) {
+        // Run as its quad runs it (the mesh on its left): the quads miss the gap to the arc.
+        const ArcGap gap = e.forward == 1 ? arc_gap(arcs.arcs[static_cast<size_t>(arc)], a, b)
+                                          : arc_gap(arcs.arcs[static_cast<size_t>(arc)], b, a);
+        c.boundary_length += gap.arc_length;
+        c.curved_gap_area += gap.area;
+        continue;
+      }
       c.boundary_length += std::hypot(b.x - a.x, b.y - a.y);
       const bool on_boundary = std::any_of(rings.begin(), rings.end(), [&](const Segment& s) {
         return segment_distance(a, s.a, s.b) <= tolerance && segment_distance(b, s.a, s.b) <= tolerance;
@@ -68,7 +93,7 @@ Conformity check_conformity(const QuadMesh& mesh, const std::vector<Ring>& loops
   else if (c.stray_boundary_edges) c.problem = counted(c.stray_boundary_edges, "edge") + " inside the face " + (c.stray_boundary_edges == 1 ? "belongs" : "belong") + " to one quad only (hanging nodes or unshared edges)";
   else if (c.misoriented_edges) c.problem = counted(c.misoriented_edges, "interior edge") + (c.misoriented_edges == 1 ? " is" : " are") + " run the same way by both their quads (inconsistent orientation)";
   else if (c.inverted_quads) c.problem = counted(c.inverted_quads, "quad") + (c.inverted_quads == 1 ? " is" : " are") + " inverted or degenerate";
-  else if (std::fabs(c.quad_area - c.face_area) > area_tolerance) c.problem = "the quads' area differs from the face's";
+  else if (std::fabs(c.quad_area + c.curved_gap_area - c.face_area) > area_tolerance) c.problem = "the quads' area differs from the face's";
   else if (std::fabs(c.boundary_length - c.face_perimeter) > length_tolerance) c.problem = "the mesh boundary does not cover the face's boundary";
   c.conformal = c.problem.empty();
   return c;

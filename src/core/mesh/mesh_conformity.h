@@ -11,6 +11,7 @@
 
 #include <string>
 
+#include "core/geometry/circular_arc.h"
 #include "core/geometry/rectilinear_polygon.h"
 #include "core/mesh/quad_mesh.h"
 
@@ -25,6 +26,9 @@ struct Conformity {
   int misoriented_edges = 0;     // used by two quads running it the same way
   int inverted_quads = 0;        // a corner with a Jacobian <= 0 (reflex or degenerate), or area <= 0
   double quad_area = 0.0, face_area = 0.0;
+  // A face with arcs: the area between the mesh's boundary edges on arcs (chords) and the arcs; the
+  // quads' area plus this is the face's. It shrinks as the element size does (about h^2 / r per edge).
+  double curved_gap_area = 0.0;
   double boundary_length = 0.0, face_perimeter = 0.0;
   std::string problem;           // why it is not conformal ("" when it is)
 };
@@ -41,5 +45,12 @@ Conformity check_conformity(const QuadMesh& mesh, const RectilinearPolygon& face
 //         tolerance times the perimeter, lengths within 1e-9 relative plus twice the tolerance per
 //         boundary edge.
 Conformity check_conformity(const QuadMesh& mesh, const std::vector<Ring>& loops, double tolerance);
+
+// The same for a face with circular arcs: loops hold the arcs' samples (circular_arc.h), arcs the arcs.
+// A loop's chord of an arc counts as the arc (its length and its circular segment in the face's area
+// and perimeter); a boundary edge of the mesh whose ends and middle lie on an arc's polygon counts as on
+// the boundary, its length as its arc's, and the segment between it and its arc as curved_gap_area:
+// the quads' area plus the gap must be the face's, the boundary's arc lengths its perimeter.
+Conformity check_conformity(const QuadMesh& mesh, const std::vector<Ring>& loops, double tolerance, const FaceArcs& arcs);
 
 }  // namespace autoblock

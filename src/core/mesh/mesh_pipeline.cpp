@@ -139,7 +139,7 @@ MeshResult mesh_decomposition(const InputFace& face, const Decomposition& d, con
 ConformalBlocks region_occt_model(const InputFace& face, const RegionDecomposition& d, const MeshOptions& options) {
   // OpenCASCADE stays the judge: it cuts the face as the engine did, and merges the parts.
   const auto lock = lock_general_engine();
-  const std::vector<TopoDS_Face> parts = replay_region_cuts_occt(face.occt, face.region, d, options.general);
+  const std::vector<TopoDS_Face> parts = replay_region_cuts_occt(face.occt, face.region, d, options.general, &face.arcs);
   if (parts.size() != d.finished.size()) throw std::logic_error("mesh: the replay gave a different number of parts");
   return conformal_merge(parts, face.region.quantum());
 }
@@ -156,7 +156,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   const double q = face.region.quantum();
   const double tolerance = std::max({face.planar.tolerance, kModelToleranceQuanta * q, 1e-9 * face.region.bbox().longer_side()});
   const std::vector<Ring> loops = face.region.loops();
-  result.bound = scaled_jacobian_bound(loops);
+  result.bound = scaled_jacobian_bound(loops, face.arcs);
 
   // Intervals first: an infeasible request fails before the slower CAD work.
   auto start = std::chrono::steady_clock::now();
@@ -171,7 +171,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   result.merge_seconds = since(start);
 
   start = std::chrono::steady_clock::now();
-  result.mesh = block_model_mesh(result.block_model, result.intervals.intervals, face.planar.z);
+  result.mesh = block_model_mesh(result.block_model, result.intervals.intervals, face.planar.z, &face.arcs);
   result.smoothing = smooth_quad_mesh(result.mesh, options.smoothing_sweeps);
   // A thin part whose two long sides have their vertices at different places along it gets a twisted
   // (inverted) quad when those sides carry few intervals, each vertex being a node: up to three times,
@@ -203,14 +203,37 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     } catch (const InputError&) {
       break;  // too many quads, or the fixed counts forbid more: the mesh stays as it is
     }
-    result.mesh = block_model_mesh(result.block_model, result.intervals.intervals, face.planar.z);
+    result.mesh = block_model_mesh(result.block_model, result.intervals.intervals, face.planar.z, &face.arcs);
     result.smoothing = smooth_quad_mesh(result.mesh, options.smoothing_sweeps);
+  }
+  // A fold that finer intervals do not undo (opposite sides spacing their nodes differently: a long
+  // side with a fillet facing a short arc): those parts' blocks are filled along their sides' lengths
+  // (transfinite_grid_by_length), kept if that leaves fewer inverted quads.
+  auto inverted = [](const QuadMesh& mesh, std::vector<char>* parts) {
+    int count = 0;
+    for (size_t k = 0; k < mesh.quads.size(); ++k) {
+      if (quad_scaled_jacobian(mesh.corners(k)) > 0.0) continue;
+      ++count;
+      if (parts) (*parts)[static_cast<size_t>(mesh.quad_block[k])] = 1;
+    }
+    return count;
+  };
+  std::vector<char> folded(d.finished.size(), 0);
+  if (const int before = inverted(result.mesh, &folded); before > 0) {
+    std::vector<char> by_length(result.block_model.blocks.size(), 0);
+    for (size_t b = 0; b < by_length.size(); ++b) by_length[b] = folded[static_cast<size_t>(result.block_model.blocks[b].part)];
+    QuadMesh again = block_model_mesh(result.block_model, result.intervals.intervals, face.planar.z, &face.arcs, &by_length);
+    const SmoothingReport smoothing = smooth_quad_mesh(again, options.smoothing_sweeps);
+    if (inverted(again, nullptr) < before) {
+      result.mesh = std::move(again);
+      result.smoothing = smoothing;
+    }
   }
   result.mesh_seconds = since(start);
 
   start = std::chrono::steady_clock::now();
   result.quality = mesh_quality(result.mesh);
-  result.conformity = check_conformity(result.mesh, loops, tolerance);
+  result.conformity = check_conformity(result.mesh, loops, tolerance, face.arcs);
   result.check_seconds = since(start);
   return result;
 }

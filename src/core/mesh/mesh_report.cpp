@@ -43,7 +43,8 @@ nlohmann::json common_report(const std::string& input, const std::string& policy
                           {"misoriented_edges", c.misoriented_edges},
                           {"inverted_quads", c.inverted_quads},     {"quad_area", c.quad_area},
                           {"face_area", c.face_area},               {"boundary_length", c.boundary_length},
-                          {"face_perimeter", c.face_perimeter},     {"problem", c.problem}};
+                          {"face_perimeter", c.face_perimeter},     {"curved_gap_area", c.curved_gap_area},
+                          {"problem", c.problem}};
   report["seconds"] = seconds;
   report["timing"] = {{"decomposition", decomposition_seconds},
                       {"merge", r.merge_seconds},

@@ -1,5 +1,6 @@
 #include "core/mesh/transfinite.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -18,7 +19,42 @@ std::vector<double> arc_parameters(const std::vector<Point2>& chain) {
   return t;
 }
 
+// The point of a chain at the normalised arc length t (params: arc_parameters of the chain).
+Point2 chain_point(const std::vector<Point2>& chain, const std::vector<double>& params, double t) {
+  size_t k = 1;
+  while (k + 1 < params.size() && params[k] < t) ++k;
+  const double e = params[k] - params[k - 1], f = e > 0 ? std::clamp((t - params[k - 1]) / e, 0.0, 1.0) : 0.0;
+  return Point2{chain[k - 1].x + f * (chain[k].x - chain[k - 1].x), chain[k - 1].y + f * (chain[k].y - chain[k - 1].y)};
+}
+
 }  // namespace
+
+std::vector<Point2> transfinite_grid_by_length(const std::vector<Point2>& bottom, const std::vector<Point2>& top,
+                                               const std::vector<Point2>& left, const std::vector<Point2>& right) {
+  std::vector<Point2> grid = transfinite_grid(bottom, top, left, right);  // checks, boundary nodes
+  const size_t nu = bottom.size() - 1, nv = left.size() - 1;
+  const std::vector<double> ub = arc_parameters(bottom), ut = arc_parameters(top);
+  const std::vector<double> vl = arc_parameters(left), vr = arc_parameters(right);
+  const Point2 p00 = bottom.front(), p10 = bottom.back(), p01 = top.front(), p11 = top.back();
+  for (size_t j = 1; j < nv; ++j) {
+    for (size_t i = 1; i < nu; ++i) {
+      // (u, v) where the grid lines i (from bottom node i to top node i) and j cross.
+      double u = 0.5 * (ub[i] + ut[i]), v = 0.5 * (vl[j] + vr[j]);
+      for (int round = 0; round < 4; ++round) {
+        const double nu_ = (1 - v) * ub[i] + v * ut[i], nv_ = (1 - u) * vl[j] + u * vr[j];
+        u = nu_, v = nv_;
+      }
+      const Point2 b = chain_point(bottom, ub, u), t = chain_point(top, ut, u);
+      const Point2 l = chain_point(left, vl, v), r = chain_point(right, vr, v);
+      Point2& p = grid[j * (nu + 1) + i];
+      p.x = (1 - v) * b.x + v * t.x + (1 - u) * l.x + u * r.x -
+            ((1 - u) * (1 - v) * p00.x + u * (1 - v) * p10.x + u * v * p11.x + (1 - u) * v * p01.x);
+      p.y = (1 - v) * b.y + v * t.y + (1 - u) * l.y + u * r.y -
+            ((1 - u) * (1 - v) * p00.y + u * (1 - v) * p10.y + u * v * p11.y + (1 - u) * v * p01.y);
+    }
+  }
+  return grid;
+}
 
 std::vector<Point2> transfinite_grid(const std::vector<Point2>& bottom, const std::vector<Point2>& top,
                                      const std::vector<Point2>& left, const std::vector<Point2>& right) {
@@ -56,14 +92,15 @@ std::vector<Point2> transfinite_grid(const std::vector<Point2>& bottom, const st
 }
 
 void add_mapped_block(QuadMesh& mesh, const std::vector<int>& bottom, const std::vector<int>& top,
-                      const std::vector<int>& left, const std::vector<int>& right, int block) {
+                      const std::vector<int>& left, const std::vector<int>& right, int block, bool by_length) {
   auto points = [&](const std::vector<int>& ids) {
     std::vector<Point2> p;
     p.reserve(ids.size());
     for (int id : ids) p.push_back(mesh.nodes[static_cast<size_t>(id)]);
     return p;
   };
-  const std::vector<Point2> grid = transfinite_grid(points(bottom), points(top), points(left), points(right));
+  const std::vector<Point2> grid = by_length ? transfinite_grid_by_length(points(bottom), points(top), points(left), points(right))
+                                             : transfinite_grid(points(bottom), points(top), points(left), points(right));
   const size_t nu = bottom.size() - 1, nv = left.size() - 1;
   std::vector<int> ids(grid.size());
   for (size_t j = 0; j <= nv; ++j) {

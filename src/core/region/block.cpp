@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/convex_hull_2.h>
@@ -95,6 +97,76 @@ VertexShape vertex_shape(const Ring& ring, size_t i, const BlockRules& rules) {
   return {-dot > 0.0 && std::fabs(cross) <= tan_tolerance * -dot, cross < 0.0 || (cross == 0.0 && dot >= 0.0)};
 }
 
+namespace {
+
+// Inputs: ring; corners, its four corners (counter-clockwise). Output: true when the Coons patch of
+//         its four sides (each a polyline parametrised by length) folds: some cell of an 8 x 8 grid
+//         of it is not counter-clockwise at every corner. A block whose sides bend much (arcs,
+//         circular_arc.h: a convex fillet facing a hole's concave arc) can fold so; its mapped mesh
+//         would have inverted quads.
+bool coons_patch_folds(const Ring& ring, const std::array<int, 4>& corners) {
+  const size_t n = ring.size();
+  // Side k's points from corner k to corner k + 1, and their lengths along it.
+  std::array<std::vector<Point2>, 4> sides;
+  std::array<std::vector<double>, 4> at;
+  for (size_t k = 0; k < 4; ++k) {
+    for (size_t i = static_cast<size_t>(corners[k]);; i = (i + 1) % n) {
+      const Point2 p = ring[i];
+      at[k].push_back(sides[k].empty() ? 0.0 : at[k].back() + std::hypot(p.x - sides[k].back().x, p.y - sides[k].back().y));
+      sides[k].push_back(p);
+      if (i == static_cast<size_t>(corners[(k + 1) % 4])) break;
+    }
+  }
+  auto point = [&](size_t k, double t) {  // side k at the fraction t of its length
+    const std::vector<double>& a = at[k];
+    const double s = t * a.back();
+    size_t j = 1;
+    while (j + 1 < a.size() && a[j] < s) ++j;
+    const double e = a[j] - a[j - 1], f = e > 0.0 ? (s - a[j - 1]) / e : 0.0;
+    const Point2 p = sides[k][j - 1], q = sides[k][j];
+    return Point2{p.x + f * (q.x - p.x), p.y + f * (q.y - p.y)};
+  };
+  constexpr int m = 8;
+  std::array<std::array<Point2, m + 1>, m + 1> grid;
+  const Point2 c0 = sides[0].front(), c1 = sides[1].front(), c2 = sides[2].front(), c3 = sides[3].front();
+  for (int i = 0; i <= m; ++i) {
+    for (int j = 0; j <= m; ++j) {
+      const double u = static_cast<double>(i) / m, v = static_cast<double>(j) / m;
+      const Point2 b = point(0, u), r = point(1, v), t = point(2, 1.0 - u), l = point(3, 1.0 - v);
+      grid[static_cast<size_t>(i)][static_cast<size_t>(j)] =
+          Point2{(1 - v) * b.x + v * t.x + (1 - u) * l.x + u * r.x -
+                     ((1 - u) * (1 - v) * c0.x + u * (1 - v) * c1.x + u * v * c2.x + (1 - u) * v * c3.x),
+                 (1 - v) * b.y + v * t.y + (1 - u) * l.y + u * r.y -
+                     ((1 - u) * (1 - v) * c0.y + u * (1 - v) * c1.y + u * v * c2.y + (1 - u) * v * c3.y)};
+    }
+  }
+  for (size_t i = 0; i < m; ++i) {
+    for (size_t j = 0; j < m; ++j) {
+      const std::array<Point2, 4> q{grid[i][j], grid[i + 1][j], grid[i + 1][j + 1], grid[i][j + 1]};
+      for (size_t k = 0; k < 4; ++k) {
+        const Point2 v = q[k], next = q[(k + 1) % 4], prev = q[(k + 3) % 4];
+        if ((next.x - v.x) * (prev.y - v.y) - (next.y - v.y) * (prev.x - v.x) <= 0.0) return true;
+      }
+    }
+  }
+  return false;
+}
+
+// Inputs: ring. Output: the sum over its vertices of the absolute turn, in radians, at those within
+//         the flat tolerance (its sides' bending).
+double side_bending(const Ring& ring, const BlockRules& rules) {
+  double bending = 0.0;
+  for (size_t i = 0; i < ring.size(); ++i) {
+    if (is_side_vertex(ring, i, rules)) bending += std::fabs(M_PI - interior_angle(ring, i));
+  }
+  return bending;
+}
+
+// Blocks whose sides bend more than this in total are checked for folds (coons_patch_folds).
+constexpr double kCheckedBendingDegrees = 30.0;
+
+}  // namespace
+
 std::optional<std::array<int, 4>> block_corners(const Region& region, const BlockRules& rules) {
   if (region.is_empty() || !region.holes().empty()) return std::nullopt;
   const Ring& ring = region.outer();
@@ -120,6 +192,10 @@ std::optional<std::array<int, 4>> block_corners(const Region& region, const Bloc
     const double length = std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by));
     if (dot > cos_min * length || dot < cos_max * length) return std::nullopt;
   }
+  // Straight sides (a few side vertices from rounding or T-junctions) cannot fold; bent ones can.
+  if (n > 6 && side_bending(ring, rules) > kCheckedBendingDegrees * kDegree && coons_patch_folds(ring, corners)) {
+    return std::nullopt;
+  }
   return corners;
 }
 
@@ -127,33 +203,157 @@ bool template_applies(const Region& region) {
   if (region.is_convex()) return true;
   if (region.is_empty() || !region.holes().empty()) return false;
   // Convex but for side vertices turned a little the other way (within the flat tolerance; rounding
-  // to the lattice makes them): they lie on the template's sides, as on a block's.
+  // to the lattice makes them): they lie on the template's sides, as on a block's. Together they may
+  // turn inwards by no more than the flat tolerance: a concave arc (circular_arc.h) is a chain of such
+  // vertices, and a part with one is far from convex.
   const Ring& ring = region.outer();
-  for (size_t i = 0; i < ring.size(); ++i) {
-    if (is_reflex_vertex(ring, i) && !is_side_vertex(ring, i, BlockRules{})) return false;
+  const size_t n = ring.size();
+  const BlockRules rules;
+  double inwards = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    if (!is_reflex_vertex(ring, i)) continue;
+    if (!is_side_vertex(ring, i, rules)) return false;
+    inwards += interior_angle(ring, i) - M_PI;
   }
-  return true;
+  return inwards <= rules.flat_tolerance_degrees * M_PI / 180.0;
 }
 
 namespace {
 
-// The template's corners: the ring's corners (side vertices lie on the template's sides); all
-// vertices when fewer than three are corners.
+// The template's corners: the ring's corners (side vertices lie on the template's sides). When fewer
+// than three are corners (a part with a long smooth side: arcs, circular_arc.h; the smooth template
+// did not apply), the vertices farthest from those chosen are added until there are three: with
+// none, the two farthest apart; then the vertex farthest from the line through the first two.
+// All vertices when the ring has only three.
 std::vector<size_t> template_corners(const Ring& ring, const BlockRules& rules) {
   std::vector<size_t> corners;
   for (size_t i = 0; i < ring.size(); ++i) {
     if (!is_side_vertex(ring, i, rules)) corners.push_back(i);
   }
-  if (corners.size() < 3) {
+  if (corners.size() >= 3) return corners;
+  if (ring.size() <= 3) {
     corners.clear();
     for (size_t i = 0; i < ring.size(); ++i) corners.push_back(i);
+    return corners;
   }
+  auto distance = [&](size_t i, size_t j) { return std::hypot(ring[i].x - ring[j].x, ring[i].y - ring[j].y); };
+  if (corners.empty()) {
+    size_t a = 0, b = 1;
+    for (size_t i = 0; i < ring.size(); ++i) {
+      for (size_t j = i + 1; j < ring.size(); ++j) {
+        if (distance(i, j) > distance(a, b)) a = i, b = j;
+      }
+    }
+    corners = {a, b};
+  } else if (corners.size() == 1) {
+    size_t b = corners[0] == 0 ? 1 : 0;
+    for (size_t i = 0; i < ring.size(); ++i) {
+      if (distance(corners[0], i) > distance(corners[0], b)) b = i;
+    }
+    corners.push_back(b);
+  }
+  const Point2 a = ring[corners[0]], b = ring[corners[1]];
+  size_t apex = corners[0];
+  double farthest = -1.0;
+  for (size_t i = 0; i < ring.size(); ++i) {
+    const double d = std::fabs((b.x - a.x) * (ring[i].y - a.y) - (b.y - a.y) * (ring[i].x - a.x));
+    if (i != corners[0] && i != corners[1] && d > farthest) farthest = d, apex = i;
+  }
+  corners.push_back(apex);
+  std::sort(corners.begin(), corners.end());
   return corners;
+}
+
+// The smooth part's template (fewer than three corners: a disk, a rounded rectangle, a D): four
+// boundary vertices, those nearest the corners of the part's minimum-area rectangle, in the ring's
+// order; nothing when they are not four distinct vertices.
+std::vector<size_t> smooth_template_corners(const Region& region) {
+  const Ring& ring = region.outer();
+  const OrientedRectangle box = min_area_rectangle(region);
+  const Point2 u = box.axis, v{-box.axis.y, box.axis.x};
+  std::vector<size_t> picked;
+  for (const auto& [su, sv] : {std::pair{-1.0, -1.0}, std::pair{1.0, -1.0}, std::pair{1.0, 1.0}, std::pair{-1.0, 1.0}}) {
+    const Point2 corner{box.center.x + 0.5 * (su * box.width * u.x + sv * box.height * v.x),
+                        box.center.y + 0.5 * (su * box.width * u.y + sv * box.height * v.y)};
+    size_t best = 0;
+    double best_d = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < ring.size(); ++i) {
+      const double d = std::hypot(ring[i].x - corner.x, ring[i].y - corner.y);
+      if (d < best_d) best_d = d, best = i;
+    }
+    picked.push_back(best);
+  }
+  std::sort(picked.begin(), picked.end());
+  if (std::adjacent_find(picked.begin(), picked.end()) != picked.end()) return {};
+  return picked;
+}
+
+
+std::vector<QuadPiece> smooth_template_pieces(const Region& region);
+
+// True when every piece's quadrilateral of corners turns counter-clockwise with every angle within
+// [20, 160] degrees: the smooth template of a long or thin part can fold.
+bool pieces_well_shaped(const std::vector<QuadPiece>& pieces) {
+  const double cos_limit = std::cos(20.0 * M_PI / 180.0);
+  for (const QuadPiece& piece : pieces) {
+    for (size_t k = 0; k < 4; ++k) {
+      const Point2 v = piece.ring[static_cast<size_t>(piece.corners[k])];
+      const Point2 next = piece.ring[static_cast<size_t>(piece.corners[(k + 1) % 4])];
+      const Point2 prev = piece.ring[static_cast<size_t>(piece.corners[(k + 3) % 4])];
+      const double ax = next.x - v.x, ay = next.y - v.y, bx = prev.x - v.x, by = prev.y - v.y;
+      const double length = std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by));
+      if (!(length > 0.0) || ax * by - ay * bx <= 0.0) return false;
+      if (std::fabs(ax * bx + ay * by) > cos_limit * length) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+bool smooth_template(const Region& region, const BlockRules& rules) {
+  const Ring& ring = region.outer();
+  int corners = 0;
+  for (size_t i = 0; i < ring.size(); ++i) corners += !is_side_vertex(ring, i, rules);
+  return corners < 3 && ring.size() >= 4 && smooth_template_corners(region).size() == 4 &&
+         pieces_well_shaped(smooth_template_pieces(region));
+}
+
+namespace {
+
+// The smooth template's pieces (see block.h).
+std::vector<QuadPiece> smooth_template_pieces(const Region& region) {
+  const Ring& ring = region.outer();
+  const size_t n = ring.size();
+  const std::vector<size_t> v = smooth_template_corners(region);
+  const Point2 c = region.centroid();
+  std::array<Point2, 4> inner;
+  for (size_t k = 0; k < 4; ++k) {
+    inner[k] = Point2{snap_to_lattice(0.5 * (c.x + ring[v[k]].x), region.quantum()),
+                      snap_to_lattice(0.5 * (c.y + ring[v[k]].y), region.quantum())};
+  }
+  std::vector<QuadPiece> pieces;
+  for (size_t k = 0; k < 4; ++k) {
+    QuadPiece piece;
+    for (size_t i = v[k]; i != v[(k + 1) % 4]; i = (i + 1) % n) piece.ring.push_back(ring[i]);
+    piece.corners = {0, static_cast<int>(piece.ring.size()), static_cast<int>(piece.ring.size()) + 1,
+                     static_cast<int>(piece.ring.size()) + 2};
+    piece.ring.push_back(ring[v[(k + 1) % 4]]);
+    piece.ring.push_back(inner[(k + 1) % 4]);
+    piece.ring.push_back(inner[k]);
+    pieces.push_back(std::move(piece));
+  }
+  QuadPiece middle;
+  middle.ring = Ring(inner.begin(), inner.end());
+  middle.corners = {0, 1, 2, 3};
+  pieces.push_back(std::move(middle));
+  return pieces;
 }
 
 }  // namespace
 
 std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& rules) {
+  if (smooth_template(region, rules)) return smooth_template_pieces(region);
   const Ring& ring = region.outer();
   const size_t n = ring.size();
   const std::vector<size_t> corners = template_corners(ring, rules);
@@ -249,6 +449,39 @@ double scaled_jacobian_bound(const std::vector<Ring>& loops) {
       const double k0 = std::max(1.0, std::floor(t / (0.5 * M_PI)));
       const double best = std::max(std::sin(t / k0), std::sin(t / (k0 + 1.0)));
       bound = std::min(bound, best);
+    }
+  }
+  return bound;
+}
+
+double scaled_jacobian_bound(const std::vector<Ring>& loops, const FaceArcs& arcs) {
+  if (arcs.empty()) return scaled_jacobian_bound(loops);
+  double bound = 1.0;
+  for (const Ring& ring : loops) {
+    const size_t n = ring.size();
+    for (size_t i = 0; i < n; ++i) {
+      const Point2 prev = ring[(i + n - 1) % n], at = ring[i], next = ring[(i + 1) % n];
+      const int arc_in = arcs.arc_of_chord(prev, at), arc_out = arcs.arc_of_chord(at, next);
+      if (arc_in >= 0 && arc_in == arc_out) continue;  // inside an arc: smooth
+      // The directions of travel at the vertex: along an edge, or along an arc's tangent there.
+      auto direction = [&](int arc, Point2 from, Point2 to) {
+        double dx = to.x - from.x, dy = to.y - from.y;
+        if (arc >= 0) {
+          const CircularArc& c = arcs.arcs[static_cast<size_t>(arc)];
+          const double rx = at.x - c.center.x, ry = at.y - c.center.y;
+          double tx = -ry, ty = rx;  // the tangent, turned the way the chord runs
+          if (tx * dx + ty * dy < 0) tx = -tx, ty = -ty;
+          dx = tx, dy = ty;
+        }
+        return std::atan2(dy, dx);
+      };
+      const double in = direction(arc_in, prev, at), out = direction(arc_out, at, next);
+      double turn = out - in;
+      while (turn <= -M_PI) turn += 2.0 * M_PI;
+      while (turn > M_PI) turn -= 2.0 * M_PI;
+      const double t = M_PI - turn;
+      const double k0 = std::max(1.0, std::floor(t / (0.5 * M_PI)));
+      bound = std::min(bound, std::max(std::sin(t / k0), std::sin(t / (k0 + 1.0))));
     }
   }
   return bound;

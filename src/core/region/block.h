@@ -3,7 +3,9 @@
 // A vertex whose interior angle lies within `flat_tolerance` of 180 degrees is a side vertex (a
 // block's side may bend there, as at a T-junction); every other vertex is a corner. A *block* is a
 // part without holes, with no reflex vertex, and with exactly four corners whose angles lie in
-// [min_corner, max_corner]. A rectangle is a block under any rules. A convex part that is not a
+// [min_corner, max_corner], and, when its sides bend (more than 30 degrees in all: arcs), whose
+// Coons patch does not fold (a convex side facing a deep concave one). A rectangle is a block under
+// any rules. A convex part that is not a
 // block (a triangle, a pentagon, a quadrilateral with a corner out of range) may be finished with
 // the *template*: its n corners, a centre point (the centre of the largest circle inside the
 // polygon of its corners) and, on each side, the foot of the perpendicular from the centre (kept
@@ -18,6 +20,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/geometry/circular_arc.h"
 #include "core/region/region.h"
 
 namespace autoblock {
@@ -53,6 +56,17 @@ inline bool is_block(const Region& region, const BlockRules& rules = {}) {
 //          vertices (within the default flat tolerance) that turn slightly inwards.
 bool template_applies(const Region& region);
 
+// A smooth part (fewer than three corners: a disk, a rounded rectangle, a D-shape; arcs reach the
+// engine as chains of side vertices, circular_arc.h) gets the disk's template instead: four of its
+// boundary vertices (those nearest the corners of its minimum-area rectangle) joined by spokes to
+// an inner quadrilateral halfway to its centroid: five pieces, the inner one last. Each of the four
+// boundary vertices splits a straight (or nearly straight) boundary into two corners of about 90
+// degrees; the inner quadrilateral's corners are three-valent interior vertices. It applies only
+// when each piece's quadrilateral of corners is convex with angles within [20, 160] degrees (a long
+// thin part's would fold); otherwise the template is the usual one.
+// Inputs: region; rules. Output: true when the smooth template applies (template_pieces makes it).
+bool smooth_template(const Region& region, const BlockRules& rules = {});
+
 // Inputs:  region, convex (template_applies); rules (which vertices are side vertices).
 // Outputs: the template's quadrilaterals, one per corner of the region, each counter-clockwise
 //          starting at the corner: the corner, the foot on the side it starts, the centre, the foot
@@ -84,6 +98,10 @@ std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& r
 // Inputs: loops, the face's outer loop and holes (the region on each loop's left: outer
 //         counter-clockwise, holes clockwise). Output: the bound, in (0, 1].
 double scaled_jacobian_bound(const std::vector<Ring>& loops);
+// The same for a face with circular arcs (loops hold their samples): the bound of the true boundary,
+// where a vertex inside an arc is smooth (no corner) and an arc's end meets its neighbour at the
+// arc's tangent (a tangent join counts as 180 degrees).
+double scaled_jacobian_bound(const std::vector<Ring>& loops, const FaceArcs& arcs);
 
 // The mesh preset's block rules for a face: a block's corners must lie within
 // [asin(f B), 180 - asin(f B)] degrees, B the face's bound (scaled_jacobian_bound), so that no block

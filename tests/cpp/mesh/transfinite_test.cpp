@@ -82,3 +82,30 @@ TEST_CASE("quad quality measures", "[mesh][quality]") {
   CHECK(arrow.scaled_jacobian < 0);
   CHECK(arrow.max_angle > 180);
 }
+
+TEST_CASE("transfinite interpolation along the sides' lengths: the discrete sum where spacings agree",
+          "[mesh][tfi][arc]") {
+  // Where opposite sides space their nodes alike (here: a parallelogram, uniform or graded), the
+  // grid lines run straight between matching nodes and both forms give the same grid.
+  const Point2 p00{0, 0}, p10{4, 1}, p01{1, 3}, p11{5, 4};
+  for (const std::vector<double>& u : {std::vector<double>{0, 0.25, 0.5, 0.75, 1}, std::vector<double>{0, 0.1, 0.3, 0.6, 1}}) {
+    const std::vector<double> v{0, 0.2, 0.7, 1};
+    const auto a = transfinite_grid(chain(p00, p10, u), chain(p01, p11, u), chain(p00, p01, v), chain(p10, p11, v));
+    const auto b = transfinite_grid_by_length(chain(p00, p10, u), chain(p01, p11, u), chain(p00, p01, v), chain(p10, p11, v));
+    REQUIRE(a.size() == b.size());
+    for (size_t k = 0; k < a.size(); ++k) {
+      CHECK(b[k].x == Approx(a[k].x).margin(1e-12));
+      CHECK(b[k].y == Approx(a[k].y).margin(1e-12));
+    }
+  }
+  // Opposite sides spaced differently (bottom graded to the left, top to the right): every interior
+  // node lies on the straight grid line from its bottom node to its top node, and inside the block.
+  const std::vector<double> left_graded{0, 0.05, 0.15, 0.35, 1}, right_graded{0, 0.65, 0.85, 0.95, 1}, v{0, 0.5, 1};
+  const auto grid = transfinite_grid_by_length(chain({0, 0}, {4, 0}, left_graded), chain({0, 2}, {4, 2}, right_graded),
+                                               chain({0, 0}, {0, 2}, v), chain({4, 0}, {4, 2}, v));
+  for (size_t i = 1; i + 1 < left_graded.size(); ++i) {
+    const Point2 p = grid[5 + i];
+    CHECK(p.y == Approx(1.0));
+    CHECK(p.x == Approx(0.5 * (4 * left_graded[i] + 4 * right_graded[i])));
+  }
+}

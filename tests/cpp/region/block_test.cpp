@@ -143,3 +143,35 @@ TEST_CASE("the scaled Jacobian bound of a face's corners", "[region][block]") {
   const Ring sharp_hole{{4, 4}, {4 + 3 * std::cos(t), 4 + 3 * std::sin(t)}, {7, 4}};  // clockwise
   CHECK(scaled_jacobian_bound({square, sharp_hole}) == Approx(std::sin(82.5 * M_PI / 180.0)));
 }
+
+TEST_CASE("smooth parts: the disk's template, and no template on a part with a concave arc", "[region][block][arc]") {
+  // A 24-gon (a polygonised circle): no corners, so the disk's template: four spokes to an inner
+  // quadrilateral halfway to the centre, five pieces tiling the part, each convex.
+  Ring circle;
+  for (int k = 0; k < 24; ++k) circle.push_back({5 + 3 * std::cos(k * M_PI / 12 + 0.1), 2 + 3 * std::sin(k * M_PI / 12 + 0.1)});
+  const Region disk(circle, {}, kQ);
+  REQUIRE(template_applies(disk));
+  REQUIRE(smooth_template(disk));
+  const std::vector<QuadPiece> pieces = template_pieces(disk);
+  REQUIRE(pieces.size() == 5);
+  double area = 0;
+  for (const QuadPiece& piece : pieces) {
+    area += signed_area(piece.ring);
+    for (size_t k = 0; k < 4; ++k) {
+      const Point2 v = piece.ring[static_cast<size_t>(piece.corners[k])];
+      const Point2 next = piece.ring[static_cast<size_t>(piece.corners[(k + 1) % 4])];
+      const Point2 prev = piece.ring[static_cast<size_t>(piece.corners[(k + 3) % 4])];
+      CHECK((next.x - v.x) * (prev.y - v.y) - (next.y - v.y) * (prev.x - v.x) > 0);
+    }
+  }
+  CHECK(area == Approx(disk.area()).epsilon(1e-9));
+  // The inner quadrilateral's corners lie halfway between the centre and the boundary.
+  for (const Point2& p : pieces.back().ring) CHECK(std::hypot(p.x - 5, p.y - 2) == Approx(1.5).epsilon(1e-6));
+  // A square with a concave quarter circle cut from one corner: each vertex of the arc turns 15
+  // degrees inwards (a side vertex), 90 in all: not convex, so no template.
+  Ring notched{{0, 0}, {4, 0}, {4, 2}};
+  for (int k = 1; k < 6; ++k) notched.push_back({4 - 2 * std::sin(k * M_PI / 12), 4 - 2 * std::cos(k * M_PI / 12)});
+  notched.push_back({2, 4});
+  notched.push_back({0, 4});
+  CHECK_FALSE(template_applies(Region(notched, {}, kQ)));
+}

@@ -17,6 +17,8 @@
 #include <gp_Circ.hxx>
 #include <gp_Pln.hxx>
 
+#include <gp_Elips.hxx>
+
 #include "core/geometry/occt_face.h"
 
 namespace autoblock::test {
@@ -31,9 +33,10 @@ TopoDS_Shape raw_polygon_face(const Ring& ring, double z) {
 std::vector<BadShape> bad_shapes() {
   std::vector<BadShape> shapes;
   {
-    const TopoDS_Edge circle = BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 1.0)).Edge();
-    const TopoDS_Wire wire = BRepBuilderAPI_MakeWire(circle).Wire();
-    shapes.push_back({"curved-edge", BRepBuilderAPI_MakeFace(wire).Face(), "is a circular arc"});
+    // Circular arcs are accepted (issue 13); an ellipse is not.
+    const TopoDS_Edge ellipse = BRepBuilderAPI_MakeEdge(gp_Elips(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 2.0, 1.0)).Edge();
+    const TopoDS_Wire wire = BRepBuilderAPI_MakeWire(ellipse).Wire();
+    shapes.push_back({"curved-edge", BRepBuilderAPI_MakeFace(wire).Face(), "is an elliptical arc"});
   }
   // Edges at any angle are accepted (the general engine); a corner of 1.7 degrees is not.
   shapes.push_back({"sharp-corner", raw_polygon_face({{0, 0}, {100, 0}, {0, 3}}), "sharper than the smallest supported"});

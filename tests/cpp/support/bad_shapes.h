@@ -25,7 +25,8 @@ std::vector<BadShape> bad_shapes();
 
 // A part for choosing faces (--face N): a compound of two solids, an L-shaped slab with a square hole
 // (outer (0,0) (10,0) (10,4) (4,4) (4,8) (0,8), hole [1,3]^2, z from 0 to 3: its top and bottom faces,
-// of area 52, are the only faces AutoBlock takes) and a cylinder beside it (radius 2 at (20, 0)).
+// of area 52, and its sides, each in its own frame) and a cylinder beside it (radius 2 at (20, 0): its
+// disks are taken too, its side is curved).
 TopoDS_Shape part_with_many_faces();
 
 }  // namespace autoblock::test

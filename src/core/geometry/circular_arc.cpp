@@ -1,0 +1,132 @@
+#include "core/geometry/circular_arc.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace autoblock {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kTwoPi = 2.0 * kPi;
+constexpr double kEndOvershoot = 0.25;  // see polygonise_arc
+
+// The angle a, taken into [0, 2 pi).
+double wrap(double a) {
+  a = std::fmod(a, kTwoPi);
+  return a < 0.0 ? a + kTwoPi : a;
+}
+
+// Inputs: angle a; arc. Output: how far along the arc's sweep a lies, in radians from its start in the
+//         sweep's direction, in [0, 2 pi).
+double along(double a, const CircularArc& arc) {
+  return arc.sweep >= 0.0 ? wrap(a - arc.start) : wrap(arc.start - a);
+}
+
+}  // namespace
+
+Point2 CircularArc::point_at(double t) const {
+  const double a = start + t * sweep;
+  return Point2{center.x + radius * std::cos(a), center.y + radius * std::sin(a)};
+}
+
+double CircularArc::length() const { return radius * std::fabs(sweep); }
+
+int arc_chord_count(const CircularArc& arc, double max_step_degrees) {
+  const bool full = std::fabs(arc.sweep) >= kTwoPi - 1e-12;
+  const int count = static_cast<int>(std::ceil(std::fabs(arc.sweep) / (max_step_degrees * kPi / 180.0) - 1e-9));
+  return std::max(count, full ? 3 : 2);
+}
+
+std::vector<Point2> polygonise_arc(const CircularArc& arc, double max_step_degrees) {
+  const int n = arc_chord_count(arc, max_step_degrees);
+  std::vector<Point2> points;
+  points.reserve(static_cast<size_t>(n) + 2);
+  if (!arc.outside) {
+    for (int k = 0; k <= n; ++k) points.push_back(k == n ? arc.last() : arc.point_at(static_cast<double>(k) / n));
+    return points;
+  }
+  // The tangents' meeting points; at an arc's ends (not a full circle's), a quarter of their overshoot
+  // farther out, so that the arc's end is no straight vertex between a tangent neighbour and the first
+  // segment (the region's canonical form would merge it, region.h).
+  const bool full = std::fabs(arc.sweep) >= 2.0 * kPi - 1e-12;
+  const double reach = arc.radius / std::cos(0.5 * std::fabs(arc.sweep) / n);
+  points.push_back(arc.first());
+  for (int k = 0; k < n; ++k) {
+    const double a = arc.start + arc.sweep * (k + 0.5) / n;
+    const double r = !full && (k == 0 || k == n - 1) ? reach + kEndOvershoot * (reach - arc.radius) : reach;
+    points.push_back(Point2{arc.center.x + r * std::cos(a), arc.center.y + r * std::sin(a)});
+  }
+  points.push_back(arc.last());
+  return points;
+}
+
+bool point_on_arc(Point2 p, const CircularArc& arc, double tolerance) {
+  const double dx = p.x - arc.center.x, dy = p.y - arc.center.y;
+  const double d = std::hypot(dx, dy);
+  if (std::fabs(d - arc.radius) > tolerance) return false;
+  if (std::fabs(arc.sweep) >= kTwoPi - 1e-12) return true;
+  const double slack = tolerance / arc.radius;
+  const double s = along(std::atan2(dy, dx), arc);
+  return s <= std::fabs(arc.sweep) + slack || s >= kTwoPi - slack;
+}
+
+bool point_on_arc_polygon(Point2 p, const CircularArc& arc, double tolerance) {
+  const double dx = p.x - arc.center.x, dy = p.y - arc.center.y;
+  const double d = std::hypot(dx, dy);
+  const double half_chord_turn = 0.5 * std::fabs(arc.sweep) / arc_chord_count(arc);
+  // Either polygon, and chords between points on the arc (a mesh's boundary edges along it).
+  const double inner = arc.radius * std::cos(half_chord_turn);
+  const double outer =
+      arc.outside ? arc.radius + (1.0 + kEndOvershoot) * (arc.radius / std::cos(half_chord_turn) - arc.radius) : arc.radius;
+  if (d > outer + tolerance || d < inner - tolerance) return false;
+  if (std::fabs(arc.sweep) >= kTwoPi - 1e-12) return true;
+  const double slack = tolerance / arc.radius;
+  const double s = along(std::atan2(dy, dx), arc);
+  return s <= std::fabs(arc.sweep) + slack || s >= kTwoPi - slack;
+}
+
+Point2 project_to_circle(Point2 p, const CircularArc& arc) {
+  const double dx = p.x - arc.center.x, dy = p.y - arc.center.y;
+  const double d = std::hypot(dx, dy);
+  if (!(d > 0.0)) return p;
+  return Point2{arc.center.x + dx * arc.radius / d, arc.center.y + dy * arc.radius / d};
+}
+
+ArcGap arc_gap(const CircularArc& arc, Point2 a, Point2 b) {
+  const double ax = a.x - arc.center.x, ay = a.y - arc.center.y, bx = b.x - arc.center.x, by = b.y - arc.center.y;
+  const double cross = ax * by - ay * bx;
+  const double turn = std::atan2(cross, ax * bx + ay * by);  // signed, (-pi, pi]
+  return ArcGap{arc.radius * std::fabs(turn), 0.5 * arc.radius * arc.radius * turn - 0.5 * cross};
+}
+
+double circular_segment_area(double chord, double radius) {
+  const double theta = 2.0 * std::asin(std::min(1.0, chord / (2.0 * radius)));
+  return 0.5 * radius * radius * (theta - std::sin(theta));
+}
+
+int FaceArcs::arc_of_point(Point2 p) const {
+  for (size_t k = 0; k < arcs.size(); ++k) {
+    if (point_on_arc_polygon(p, arcs[k], tolerance)) return static_cast<int>(k);
+  }
+  return -1;
+}
+
+int FaceArcs::arc_of_chord(Point2 a, Point2 b) const {
+  const double max_turn = 2.0 * kArcStepDegrees * kPi / 180.0;
+  const Point2 m{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
+  for (size_t k = 0; k < arcs.size(); ++k) {
+    const CircularArc& arc = arcs[k];
+    if (!point_on_arc_polygon(a, arc, tolerance) || !point_on_arc_polygon(b, arc, tolerance) ||
+        !point_on_arc_polygon(m, arc, tolerance)) {
+      continue;
+    }
+    const double ta = std::atan2(a.y - arc.center.y, a.x - arc.center.x);
+    const double tb = std::atan2(b.y - arc.center.y, b.x - arc.center.x);
+    double turn = std::fabs(ta - tb);
+    if (turn > kPi) turn = kTwoPi - turn;
+    if (turn <= max_turn) return static_cast<int>(k);
+  }
+  return -1;
+}
+
+}  // namespace autoblock

@@ -1,0 +1,100 @@
+// Circular arcs of a face's boundary (issue 13): what the polygonal engines cut, and what the mesh
+// puts its boundary nodes on.
+//
+// The general engine (core/region) works on polygons. A face's circular edge reaches it as a chain
+// of chords: the arc polygonised so that each chord turns by at most kArcStepDegrees, every sample
+// point on the arc (then on the lattice, within half a quantum of it). Each chord's ends turn by that
+// step at most, which is within the block rules' flat tolerance (block.h), so the samples are side
+// vertices: a block's side may run along an arc, and a block keeps a fillet corner whole. The arcs
+// themselves are kept beside the polygon (FaceArcs): the mesh puts its boundary nodes on them, not on
+// the chords; the conformity check and the quality bound see the true boundary.
+#pragma once
+
+#include <vector>
+
+#include "core/geometry/point.h"
+#include "core/geometry/rectilinear_polygon.h"
+
+namespace autoblock {
+
+// How far, in lattice quanta, a point of a general face may lie off an arc's polygon and be on it
+// (FaceArcs::tolerance): samples and cut ends are rounded to the lattice, T-junctions lie within 3
+// quanta of a side (mesh/block_model.h, kModelToleranceQuanta).
+constexpr double kArcToleranceQuanta = 4.0;
+
+// The largest turn of one chord of a polygonised arc, in degrees (a full circle: 24 chords).
+constexpr double kArcStepDegrees = 15.0;
+
+struct CircularArc {
+  Point2 center;
+  double radius = 0.0;
+  double start = 0.0;  // the angle of the arc's first point (radians, from +X, counter-clockwise)
+  double sweep = 0.0;  // signed: > 0 counter-clockwise; |sweep| <= 2 pi (2 pi: a full circle)
+  // The face lies outside the circle along the arc (a hole's arc, a concave fillet): its polygon is
+  // circumscribed (tangents), so that the polygon's part lies inside the true face wherever the face
+  // is; otherwise inscribed (chords).
+  bool outside = false;
+
+  // Inputs: t in [0, 1]. Output: the point at start + t * sweep.
+  Point2 point_at(double t) const;
+  Point2 first() const { return point_at(0.0); }
+  Point2 last() const { return point_at(1.0); }
+  double length() const;
+};
+
+// Inputs:  arc; max_step_degrees, the largest turn of a chord.
+// Outputs: the number of chords: ceil(|sweep| / step), at least 2 (3 for a full circle).
+int arc_chord_count(const CircularArc& arc, double max_step_degrees = kArcStepDegrees);
+
+// Inputs:  arc. Outputs: its polygon, first point to last: inscribed, arc_chord_count + 1 points on
+//          the arc evenly spaced in angle (a full circle's last point is its first again); circumscribed
+//          (arc.outside), the first point, the n meeting points of the tangents at those samples (at
+//          radius r / cos(step / 2), between them in angle; the first and last a quarter of their
+//          overshoot farther out, so that a tangent join stays a vertex), and the last point.
+std::vector<Point2> polygonise_arc(const CircularArc& arc, double max_step_degrees = kArcStepDegrees);
+
+// Inputs:  p; arc; tolerance. Output: true when p lies within tolerance of the arc (of its circle,
+//          and within its angular range widened by tolerance / radius at each end).
+bool point_on_arc(Point2 p, const CircularArc& arc, double tolerance);
+
+// Inputs:  p; arc; tolerance. Output: true when p lies within tolerance of the arc's polygon
+//          (polygonise_arc) or of a chord between two of the arc's points at most a chord step apart:
+//          between the circle through the chords' middles and the arc's circle (or, circumscribed, the
+//          circle through the polygon's corners), widened by tolerance, and within the arc's angular
+//          range (widened as above).
+bool point_on_arc_polygon(Point2 p, const CircularArc& arc, double tolerance);
+
+// Inputs:  p, a point near the arc's circle (not its centre). Output: p moved along the radius onto the
+//          circle.
+Point2 project_to_circle(Point2 p, const CircularArc& arc);
+
+// Inputs:  arc; a -> b, a segment of its polygon (or of a mesh's boundary along it), the region on its
+//          left. Outputs: the arc's length between a's and b's directions from the centre, and the area
+//          the region has beyond the segment up to the arc: the sector between those directions less
+//          the triangle (centre, a, b), signed (negative where the arc cuts into the segment's side).
+struct ArcGap {
+  double arc_length = 0.0;
+  double area = 0.0;
+};
+ArcGap arc_gap(const CircularArc& arc, Point2 a, Point2 b);
+
+// Inputs:  chord length c, radius r (c <= 2 r). Output: the area between the chord and the shorter
+//          arc of the circle it cuts off: r^2 / 2 (theta - sin theta), theta = 2 asin(c / 2r).
+double circular_segment_area(double chord, double radius);
+
+// The arcs of a face, in the face's frame, with a lookup for the chords and points that lie on them.
+struct FaceArcs {
+  std::vector<CircularArc> arcs;
+  double tolerance = 0.0;  // how far a point may lie off an arc and be on it (a few lattice quanta)
+
+  bool empty() const { return arcs.empty(); }
+  // Inputs: p. Output: the index of an arc whose polygon p lies on (point_on_arc_polygon within
+  //         tolerance: a sample, a point of a chord, or a point already on the arc), or -1.
+  int arc_of_point(Point2 p) const;
+  // Inputs: a, b, the ends of a straight segment. Output: the index of an arc whose polygon both ends
+  //         and the middle lie on, the ends at most two chord steps apart as seen from the centre (so
+  //         a diameter, or a cut across the circle, is no chord of it), or -1.
+  int arc_of_chord(Point2 a, Point2 b) const;
+};
+
+}  // namespace autoblock

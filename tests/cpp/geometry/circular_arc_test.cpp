@@ -1,0 +1,59 @@
+#include "core/geometry/circular_arc.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace autoblock;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+TEST_CASE("an arc is polygonised into chords of at most 15 degrees, every sample on it", "[geometry][arc]") {
+  const CircularArc quarter{{1, 2}, 3.0, 0.0, 0.5 * kPi};  // counter-clockwise from (4, 2) to (1, 5)
+  CHECK(arc_chord_count(quarter) == 6);
+  const std::vector<Point2> points = polygonise_arc(quarter);
+  REQUIRE(points.size() == 7);
+  CHECK(points.front().x == Approx(4.0));
+  CHECK(points.front().y == Approx(2.0));
+  CHECK(points.back().x == Approx(1.0).margin(1e-12));
+  CHECK(points.back().y == Approx(5.0));
+  for (const Point2& p : points) CHECK(std::hypot(p.x - 1, p.y - 2) == Approx(3.0));
+  CHECK(quarter.length() == Approx(1.5 * kPi));
+  // A full circle: 24 chords; a small arc: at least 2; clockwise arcs run the other way.
+  CHECK(arc_chord_count(CircularArc{{0, 0}, 1.0, 0.3, 2 * kPi}) == 24);
+  CHECK(arc_chord_count(CircularArc{{0, 0}, 1.0, 0.3, 0.01}) == 2);
+  const CircularArc clockwise{{0, 0}, 2.0, 0.5 * kPi, -0.5 * kPi};  // (0, 2) to (2, 0)
+  CHECK(clockwise.point_at(0.5).x == Approx(std::sqrt(2.0)));
+  CHECK(clockwise.point_at(0.5).y == Approx(std::sqrt(2.0)));
+}
+
+TEST_CASE("points and chords on an arc's polygon are found, others are not", "[geometry][arc]") {
+  FaceArcs arcs;
+  arcs.arcs.push_back(CircularArc{{0, 0}, 10.0, 0.0, 0.5 * kPi});  // the first quadrant
+  arcs.tolerance = 1e-6;
+  const std::vector<Point2> samples = polygonise_arc(arcs.arcs[0]);
+  // Samples, chord middles and points of a chord lie on the polygon; the centre, a point beyond the
+  // arc's end and one outside the circle do not.
+  CHECK(arcs.arc_of_point(samples[2]) == 0);
+  const Point2 middle{0.5 * (samples[2].x + samples[3].x), 0.5 * (samples[2].y + samples[3].y)};
+  CHECK(arcs.arc_of_point(middle) == 0);
+  CHECK(arcs.arc_of_point(Point2{0, 0}) == -1);
+  CHECK(arcs.arc_of_point(Point2{10 * std::cos(-0.1), 10 * std::sin(-0.1)}) == -1);
+  CHECK(arcs.arc_of_point(Point2{10.01, 0.0}) == -1);
+  // A chord between neighbouring samples, or part of one, is on the arc; the chord from end to end
+  // (90 degrees, its middle far inside the circle) is not, nor is a radius.
+  CHECK(arcs.arc_of_chord(samples[2], samples[3]) == 0);
+  CHECK(arcs.arc_of_chord(samples[2], middle) == 0);
+  CHECK(arcs.arc_of_chord(samples.front(), samples.back()) == -1);
+  CHECK(arcs.arc_of_chord(Point2{5, 0}, samples.front()) == -1);
+  CHECK(project_to_circle(middle, arcs.arcs[0]).x == Approx(10 * std::cos(0.5 * (2 + 3) * kPi / 12)));
+}
+
+TEST_CASE("a circular segment's area against hand values", "[geometry][arc]") {
+  // A diameter cuts off a half disk; a chord of 90 degrees r^2 (pi / 4 - 1 / 2).
+  CHECK(circular_segment_area(4.0, 2.0) == Approx(0.5 * kPi * 4.0));
+  CHECK(circular_segment_area(std::sqrt(2.0) * 3.0, 3.0) == Approx(9.0 * (kPi / 4 - 0.5)));
+  CHECK(circular_segment_area(0.0, 3.0) == Approx(0.0).margin(1e-15));
+}

@@ -1,0 +1,161 @@
+// Faces with circular arcs through the mesh pipeline (issue 13): read as their chords, decomposed by
+// the general engine, cut by OpenCASCADE on the true face, meshed with every boundary node on its arc.
+#include <catch2/catch.hpp>
+
+
+#include <cmath>
+#include <cstdlib>
+#include <random>
+#include <string>
+
+#include "core/geometry/occt_face.h"
+#include "core/geometry/occt_properties.h"
+#include "core/io/input_face.h"
+#include "core/mesh/mesh_pipeline.h"
+#include "core/mesh/mesh_quality.h"
+#include "core/region/region_policy.h"
+#include "support/arc_shapes.h"
+
+using namespace autoblock;
+
+namespace {
+
+struct ArcMesh {
+  InputFace face;
+  MeshResult mesh;
+};
+
+// The face decomposed by the general engine's greedy policy with the mesh preset (deterministic) and
+// meshed at size h (0: the face's longer side / 15).
+ArcMesh mesh_arc_face(const TopoDS_Face& occt, const std::string& name, double h = 0.0) {
+  ArcMesh out{input_face_from_occt(occt, name), {}};
+  REQUIRE(out.face.is_general());
+  RegionGreedyPolicy greedy;
+  RegionEpisodeOptions episode;
+  episode.reward = RewardPreset::Mesh;
+  const RegionDecomposition d = decompose_region(out.face.region, greedy, episode);
+  REQUIRE(d.complete());
+  MeshOptions options;
+  options.size = h > 0 ? h : out.face.region.bbox().longer_side() / 15.0;
+  options.general = episode;
+  out.mesh = mesh_region_decomposition(out.face, d, options);
+  return out;
+}
+
+// The mesh's boundary nodes near an arc (on its polygon), and how far the farthest lies off the arc.
+struct OnArcs {
+  int nodes = 0;
+  double worst = 0.0;  // relative to the radius
+};
+OnArcs boundary_nodes_on_arcs(const ArcMesh& m) {
+  OnArcs result;
+  std::vector<char> boundary(m.mesh.mesh.nodes.size(), 0);
+  for (const MeshEdge& e : mesh_edges(m.mesh.mesh)) {
+    if (e.uses == 1) boundary[static_cast<size_t>(e.a)] = boundary[static_cast<size_t>(e.b)] = 1;
+  }
+  for (size_t v = 0; v < boundary.size(); ++v) {
+    if (!boundary[v]) continue;
+    const Point2 p = m.mesh.mesh.nodes[v];
+    const int arc = m.face.arcs.arc_of_point(p);
+    if (arc < 0) continue;
+    const CircularArc& a = m.face.arcs.arcs[static_cast<size_t>(arc)];
+    ++result.nodes;
+    result.worst = std::max(result.worst, std::fabs(std::hypot(p.x - a.center.x, p.y - a.center.y) - a.radius) / a.radius);
+  }
+  return result;
+}
+
+// The checks every face with arcs must pass: conformal, no inverted quad, the face's true area (the
+// check's, from the arcs, against OpenCASCADE's), the quads' area plus the gap to the arcs equal to
+// it, OpenCASCADE's blocks covering the face, and every boundary node near an arc on it.
+void check_arc_mesh(const ArcMesh& m, const TopoDS_Face& occt) {
+  const Conformity& c = m.mesh.conformity;
+  INFO(c.problem);
+  CHECK(c.conformal);
+  CHECK(c.inverted_quads == 0);
+  CHECK(c.face_area == Approx(occt_area(occt)).epsilon(1e-6));
+  CHECK(c.quad_area + c.curved_gap_area == Approx(occt_area(occt)).epsilon(1e-6));
+  CHECK(c.curved_gap_area != 0.0);
+  CHECK(occt_area(m.mesh.model.compound) == Approx(occt_area(occt)).epsilon(1e-6));
+  CHECK(occt_shape_valid(m.mesh.model.compound));
+  const OnArcs on = boundary_nodes_on_arcs(m);
+  CHECK(on.nodes > 0);
+  CHECK(on.worst < 1e-9);
+}
+
+}  // namespace
+
+TEST_CASE("arc faces: a plate with a round hole is read as chords and its arc", "[mesh][arc][occt]") {
+  const TopoDS_Face plate = test::plate_with_holes(10, 6, {{5, 3, 1.5}});
+  const InputFace face = input_face_from_occt(plate, "plate");
+  REQUIRE(face.is_general());
+  REQUIRE(face.arcs.arcs.size() == 1);
+  const CircularArc& hole = face.arcs.arcs[0];
+  CHECK(hole.center.x == Approx(5.0));
+  CHECK(hole.center.y == Approx(3.0));
+  CHECK(hole.radius == Approx(1.5));
+  CHECK(std::fabs(hole.sweep) == Approx(2 * M_PI));
+  REQUIRE(face.region.holes().size() == 1);
+  CHECK(face.region.holes()[0].size() == 24);
+  // The face lies outside the hole's circle: its polygon is circumscribed (tangents meeting at
+  // r / cos 7.5 degrees), so the engine's polygon lies inside the true face.
+  CHECK(hole.outside);
+  for (const Point2& p : face.region.holes()[0]) CHECK(std::hypot(p.x - 5, p.y - 3) == Approx(1.5 / std::cos(M_PI / 24)).epsilon(1e-6));
+  CHECK(face.region.area() < occt_area(plate));
+  // A rounded rectangle's fillets are inscribed (chords): its polygon lies inside it too.
+  const TopoDS_Face rounded = test::filleted_polygon(RectilinearPolygon{{{0, 0}, {10, 0}, {10, 6}, {0, 6}}, {}}, 1.5);
+  const InputFace convex = input_face_from_occt(rounded, "rounded");
+  REQUIRE(convex.arcs.arcs.size() == 4);
+  for (const CircularArc& arc : convex.arcs.arcs) CHECK_FALSE(arc.outside);
+  CHECK(convex.region.area() < occt_area(rounded));
+  CHECK(convex.region.outer().size() == 4 * 7);
+}
+
+TEST_CASE("arc faces: plates with holes, fillets and a slot mesh conformally with nodes on the arcs",
+          "[mesh][arc]") {
+  const struct {
+    TopoDS_Face face;
+    const char* name;
+  } faces[] = {
+      {test::plate_with_holes(10, 6, {{5, 3, 1.5}}), "plate with a hole"},
+      {test::plate_with_holes(20, 10, {{4, 3, 1}, {10, 6, 1.5}, {16, 4, 2}}), "plate with three holes"},
+      {test::filleted_polygon(RectilinearPolygon{{{0, 0}, {10, 0}, {10, 6}, {0, 6}}, {}}, 1.5), "rounded rectangle"},
+      {test::filleted_polygon(RectilinearPolygon{{{0, 0}, {10, 0}, {10, 4}, {4, 4}, {4, 10}, {0, 10}}, {}}, 1.0), "filleted L"},
+      {test::slotted_plate(), "slotted plate"},
+      {test::disk(1, 2, 3), "disk"},
+  };
+  for (const auto& f : faces) {
+    INFO(f.name);
+    const ArcMesh m = mesh_arc_face(f.face, f.name);
+    check_arc_mesh(m, f.face);
+  }
+}
+
+TEST_CASE("arc faces: the gap between the quads and the arcs shrinks with the element size", "[mesh][arc]") {
+  // Chords of length c on a circle of radius r leave c^3 / (12 r) each: once every model edge along
+  // the arc carries several intervals, a quarter of the size leaves about a sixteenth of the gap.
+  const TopoDS_Face plate = test::plate_with_holes(10, 6, {{5, 3, 1.5}});
+  const ArcMesh coarse = mesh_arc_face(plate, "coarse", 0.2), fine = mesh_arc_face(plate, "fine", 0.05);
+  const double ratio = fine.mesh.conformity.curved_gap_area / coarse.mesh.conformity.curved_gap_area;
+  INFO("gaps " << coarse.mesh.conformity.curved_gap_area << " " << fine.mesh.conformity.curved_gap_area);
+  CHECK(ratio > 0.0);
+  CHECK(ratio < 0.25);
+  // A hole: the quads cover part of it (their chords cut across the circle), so the gap is negative.
+  CHECK(coarse.mesh.conformity.curved_gap_area < 0);
+  check_arc_mesh(fine, plate);
+}
+
+TEST_CASE("arc faces: generated plates, fillets and slots all mesh conformally", "[mesh][arc][property]") {
+  std::mt19937_64 rng(20261201);
+  int faces = 0;
+  const int count = std::getenv("AUTOBLOCK_ARC_FACES") ? std::atoi(std::getenv("AUTOBLOCK_ARC_FACES")) : 60;
+  for (int i = 0; i < count; ++i) {
+    const test::ArcFace f = test::random_arc_face(rng, i % 2 ? 1.0 : 37.0);
+    INFO("face " << i << ": " << f.name);
+    REQUIRE(occt_shape_valid(f.face));
+    const ArcMesh m = mesh_arc_face(f.face, f.name);
+    check_arc_mesh(m, f.face);
+    faces += m.mesh.conformity.conformal;
+  }
+  CHECK(faces == count);
+}
