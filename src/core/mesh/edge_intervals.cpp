@@ -177,6 +177,11 @@ IntervalAssignment assign_edge_intervals(const BlockModel& model, const Interval
   parameters.tm_lim = static_cast<int>(std::min(1e9, std::max(1.0, options.time_limit * 1000.0)));
   const int code = glp_intopt(lp, &parameters);
   const int status = glp_mip_status(lp);
+  if ((code == GLP_ENOPFS || status == GLP_NOFEAS) && options.fixed.empty()) {
+    // Not the user's doing: the blocks themselves admit no counts (a block whose opposite sides
+    // share edges so that they cannot be equal).
+    throw std::runtime_error("the blocks admit no interval assignment (opposite sides of some block cannot get equal counts)");
+  }
   if (code == GLP_ENOPFS || status == GLP_NOFEAS) {
     std::string list;
     for (const FixedIntervals& f : options.fixed) list += (list.empty() ? "" : "; ") + f.what + " = " + std::to_string(f.intervals);
