@@ -981,6 +981,90 @@ class TestGeneralFaces(unittest.TestCase):
         self.assertIsNone(self.doc.getObject(feature_name))
 
 
+def add_filleted_pad(doc):
+    """A PartDesign Pad of a 40 x 25 rectangle, 5 high, two vertical edges filleted (radius 6): returns (fillet,
+    name of its top face, the top face)."""
+    import Sketcher  # noqa: F401
+
+    V = FreeCAD.Vector
+    body = doc.addObject("PartDesign::Body", "Body")
+    sketch = body.newObject("Sketcher::SketchObject", "PadSketch")
+    corners = [V(0, 0, 0), V(40, 0, 0), V(40, 25, 0), V(0, 25, 0)]
+    for a, b in zip(corners, corners[1:] + corners[:1]):
+        sketch.addGeometry(Part.LineSegment(a, b))
+    pad = body.newObject("PartDesign::Pad", "Pad")
+    pad.Profile = sketch
+    pad.Length = 5.0
+    doc.recompute()
+    edges = ["Edge{}".format(i) for i, e in enumerate(pad.Shape.Edges, 1)
+             if abs(e.Vertexes[0].Z - e.Vertexes[1].Z) > 1 and abs(e.Vertexes[0].X - 40) < 1e-9]
+    fillet = body.newObject("PartDesign::Fillet", "Fillet")
+    fillet.Base = (pad, edges)
+    fillet.Radius = 6.0
+    doc.recompute()
+    number, top = max(enumerate(fillet.Shape.Faces, 1), key=lambda f: f[1].CenterOfMass.z)
+    return fillet, "Face{}".format(number), top
+
+
+class TestArcFaces(unittest.TestCase):
+    """Faces with circular arcs (issue 13): a filleted Pad's top as a parametric object, a plate with drilled
+    holes meshed from the console, every boundary node on its arc."""
+
+    def setUp(self):
+        self.doc = support.new_document("arcs")
+
+    def tearDown(self):
+        support.close_document(self.doc)
+
+    def check_nodes_on_circles(self, mesh, circles, holes=False):
+        """Returns how many mesh nodes lie on one of the circles; for holes, also checks that no node lies
+        inside one."""
+        on = 0
+        for node in mesh.nodes:
+            for centre, r in circles:
+                d = (node - centre).Length
+                if holes:
+                    self.assertGreater(d, r - 1e-6 * r)
+                on += abs(d - r) < 1e-6 * r
+        return on
+
+    def test_a_filleted_pad_face_as_a_parametric_object(self):
+        fillet, top_name, top = add_filleted_pad(self.doc)
+        self.assertAlmostEqual(top.Area, 40 * 25 - 2 * (36 - 3.141592653589793 * 9), places=6)
+        body = self.doc.getObject("Body")
+        obj = AutoBlock.make_autoblock(body, "Fillet." + top_name, policy="greedy")
+        self.assertIn("Up-to-date", obj.State)
+        self.assertEqual(json.loads(obj.CutSequence)["engine"], "general")
+        # OpenCASCADE's blocks, cut from the true face, cover it.
+        self.assertAlmostEqual(sum(f.Area for f in obj.Shape.Faces), top.Area, delta=1e-6 * top.Area)
+        self.assertTrue(obj.Shape.isValid())
+        mesh = AutoBlock.mesh(top, size=1.0)
+        self.assertTrue(mesh.conformal)
+        circles = [(e.Curve.Center, e.Curve.Radius) for e in top.Edges if isinstance(e.Curve, Part.Circle)]
+        self.assertEqual(len(circles), 2)
+        # Nodes on the fillets' arcs (not on chords): at least one per unit of arc length.
+        self.assertGreaterEqual(self.check_nodes_on_circles(mesh, circles), 2 * int(3.141592653589793 * 6 / 2))
+
+    def test_a_plate_with_drilled_holes_meshes_with_nodes_on_the_holes(self):
+        V = FreeCAD.Vector
+        plate = Part.makeBox(30, 12, 2)
+        holes = [(V(7, 6, 0), 2.5), (V(20, 5, 0), 1.5)]
+        for centre, r in holes:
+            plate = plate.cut(Part.makeCylinder(r, 4, centre + V(0, 0, -1)))
+        top = max(plate.Faces, key=lambda f: f.CenterOfMass.z)
+        self.assertEqual(len(top.Wires), 3)
+        mesh = AutoBlock.mesh(top)
+        self.assertTrue(mesh.conformal)
+        on = self.check_nodes_on_circles(mesh, [(c + V(0, 0, 2), r) for c, r in holes], holes=True)
+        self.assertGreaterEqual(on, 24 * 2)  # at least the holes' polygons' directions
+        area = 0.0
+        for a, b, c, d in mesh.quads:
+            area += ((mesh.nodes[c] - mesh.nodes[a]).cross(mesh.nodes[d] - mesh.nodes[b])).Length / 2
+        # The quads' chords cut across the holes a little: a little more area than the face, shrinking with h.
+        self.assertGreater(area, top.Area)
+        self.assertLess(area, top.Area * 1.01)
+
+
 class TestFemMesh(unittest.TestCase):
     def test_quads_become_a_fem_mesh_object(self):
         from AutoBlock.objects.fem_mesh import make_fem_mesh_object
