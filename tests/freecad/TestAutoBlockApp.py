@@ -674,9 +674,8 @@ class TestAutoBlockObject(unittest.TestCase):
         self.assertIsNotNone(self.doc.getObject(obj.Name))
 
 
-def add_chamfered_pad(doc):
-    """A PartDesign Pad of a 40 x 25 rectangle, 5 high, one vertical edge chamfered by 8: returns (chamfer,
-    name of its top face, the top face)."""
+def add_rectangle_pad(doc):
+    """A PartDesign Body with a Pad of a 40 x 25 rectangle (corner at the origin), 5 high: returns (body, pad)."""
     import Sketcher  # noqa: F401
 
     V = FreeCAD.Vector
@@ -689,6 +688,13 @@ def add_chamfered_pad(doc):
     pad.Profile = sketch
     pad.Length = 5.0
     doc.recompute()
+    return body, pad
+
+
+def add_chamfered_pad(doc):
+    """add_rectangle_pad's Pad with one vertical edge chamfered by 8: returns (chamfer, name of its top face,
+    the top face)."""
+    body, pad = add_rectangle_pad(doc)
     edge = next("Edge{}".format(i) for i, e in enumerate(pad.Shape.Edges, 1)
                 if all(abs(v.X - 40) < 1e-9 and abs(v.Y - 25) < 1e-9 for v in e.Vertexes))
     chamfer = body.newObject("PartDesign::Chamfer", "Chamfer")
@@ -982,20 +988,9 @@ class TestGeneralFaces(unittest.TestCase):
 
 
 def add_filleted_pad(doc):
-    """A PartDesign Pad of a 40 x 25 rectangle, 5 high, two vertical edges filleted (radius 6): returns (fillet,
-    name of its top face, the top face)."""
-    import Sketcher  # noqa: F401
-
-    V = FreeCAD.Vector
-    body = doc.addObject("PartDesign::Body", "Body")
-    sketch = body.newObject("Sketcher::SketchObject", "PadSketch")
-    corners = [V(0, 0, 0), V(40, 0, 0), V(40, 25, 0), V(0, 25, 0)]
-    for a, b in zip(corners, corners[1:] + corners[:1]):
-        sketch.addGeometry(Part.LineSegment(a, b))
-    pad = body.newObject("PartDesign::Pad", "Pad")
-    pad.Profile = sketch
-    pad.Length = 5.0
-    doc.recompute()
+    """add_rectangle_pad's Pad with its two vertical edges at x = 40 filleted (radius 6): returns (fillet, name
+    of its top face, the top face)."""
+    body, pad = add_rectangle_pad(doc)
     edges = ["Edge{}".format(i) for i, e in enumerate(pad.Shape.Edges, 1)
              if abs(e.Vertexes[0].Z - e.Vertexes[1].Z) > 1 and abs(e.Vertexes[0].X - 40) < 1e-9]
     fillet = body.newObject("PartDesign::Fillet", "Fillet")
