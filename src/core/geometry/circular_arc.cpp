@@ -22,6 +22,8 @@ double along(double a, const CircularArc& arc) {
   return arc.sweep >= 0.0 ? wrap(a - arc.start) : wrap(arc.start - a);
 }
 
+bool full_circle(const CircularArc& arc) { return std::fabs(arc.sweep) >= kTwoPi - 1e-12; }
+
 }  // namespace
 
 Point2 CircularArc::point_at(double t) const {
@@ -32,7 +34,7 @@ Point2 CircularArc::point_at(double t) const {
 double CircularArc::length() const { return radius * std::fabs(sweep); }
 
 int arc_chord_count(const CircularArc& arc, double max_step_degrees) {
-  const bool full = std::fabs(arc.sweep) >= kTwoPi - 1e-12;
+  const bool full = full_circle(arc);
   const int count = static_cast<int>(std::ceil(std::fabs(arc.sweep) / (max_step_degrees * kPi / 180.0) - 1e-9));
   return std::max(count, full ? 3 : 2);
 }
@@ -48,7 +50,7 @@ std::vector<Point2> polygonise_arc(const CircularArc& arc, double max_step_degre
   // The tangents' meeting points; at an arc's ends (not a full circle's), a quarter of their overshoot
   // farther out, so that the arc's end is no straight vertex between a tangent neighbour and the first
   // segment (the region's canonical form would merge it, region.h).
-  const bool full = std::fabs(arc.sweep) >= 2.0 * kPi - 1e-12;
+  const bool full = full_circle(arc);
   const double reach = arc.radius / std::cos(0.5 * std::fabs(arc.sweep) / n);
   points.push_back(arc.first());
   for (int k = 0; k < n; ++k) {
@@ -60,16 +62,6 @@ std::vector<Point2> polygonise_arc(const CircularArc& arc, double max_step_degre
   return points;
 }
 
-bool point_on_arc(Point2 p, const CircularArc& arc, double tolerance) {
-  const double dx = p.x - arc.center.x, dy = p.y - arc.center.y;
-  const double d = std::hypot(dx, dy);
-  if (std::fabs(d - arc.radius) > tolerance) return false;
-  if (std::fabs(arc.sweep) >= kTwoPi - 1e-12) return true;
-  const double slack = tolerance / arc.radius;
-  const double s = along(std::atan2(dy, dx), arc);
-  return s <= std::fabs(arc.sweep) + slack || s >= kTwoPi - slack;
-}
-
 bool point_on_arc_polygon(Point2 p, const CircularArc& arc, double tolerance) {
   const double dx = p.x - arc.center.x, dy = p.y - arc.center.y;
   const double d = std::hypot(dx, dy);
@@ -79,7 +71,7 @@ bool point_on_arc_polygon(Point2 p, const CircularArc& arc, double tolerance) {
   const double outer =
       arc.outside ? arc.radius + (1.0 + kEndOvershoot) * (arc.radius / std::cos(half_chord_turn) - arc.radius) : arc.radius;
   if (d > outer + tolerance || d < inner - tolerance) return false;
-  if (std::fabs(arc.sweep) >= kTwoPi - 1e-12) return true;
+  if (full_circle(arc)) return true;
   const double slack = tolerance / arc.radius;
   const double s = along(std::atan2(dy, dx), arc);
   return s <= std::fabs(arc.sweep) + slack || s >= kTwoPi - slack;
@@ -97,11 +89,6 @@ ArcGap arc_gap(const CircularArc& arc, Point2 a, Point2 b) {
   const double cross = ax * by - ay * bx;
   const double turn = std::atan2(cross, ax * bx + ay * by);  // signed, (-pi, pi]
   return ArcGap{arc.radius * std::fabs(turn), 0.5 * arc.radius * arc.radius * turn - 0.5 * cross};
-}
-
-double circular_segment_area(double chord, double radius) {
-  const double theta = 2.0 * std::asin(std::min(1.0, chord / (2.0 * radius)));
-  return 0.5 * radius * radius * (theta - std::sin(theta));
 }
 
 int FaceArcs::arc_of_point(Point2 p) const {

@@ -53,15 +53,11 @@ int arc_chord_count(const CircularArc& arc, double max_step_degrees = kArcStepDe
 //          overshoot farther out, so that a tangent join stays a vertex), and the last point.
 std::vector<Point2> polygonise_arc(const CircularArc& arc, double max_step_degrees = kArcStepDegrees);
 
-// Inputs:  p; arc; tolerance. Output: true when p lies within tolerance of the arc (of its circle,
-//          and within its angular range widened by tolerance / radius at each end).
-bool point_on_arc(Point2 p, const CircularArc& arc, double tolerance);
-
 // Inputs:  p; arc; tolerance. Output: true when p lies within tolerance of the arc's polygon
 //          (polygonise_arc) or of a chord between two of the arc's points at most a chord step apart:
 //          between the circle through the chords' middles and the arc's circle (or, circumscribed, the
 //          circle through the polygon's corners), widened by tolerance, and within the arc's angular
-//          range (widened as above).
+//          range widened by tolerance / radius at each end.
 bool point_on_arc_polygon(Point2 p, const CircularArc& arc, double tolerance);
 
 // Inputs:  p, a point near the arc's circle (not its centre). Output: p moved along the radius onto the
@@ -77,10 +73,6 @@ struct ArcGap {
   double area = 0.0;
 };
 ArcGap arc_gap(const CircularArc& arc, Point2 a, Point2 b);
-
-// Inputs:  chord length c, radius r (c <= 2 r). Output: the area between the chord and the shorter
-//          arc of the circle it cuts off: r^2 / 2 (theta - sin theta), theta = 2 asin(c / 2r).
-double circular_segment_area(double chord, double radius);
 
 // The arcs of a face, in the face's frame, with a lookup for the chords and points that lie on them.
 struct FaceArcs {

@@ -77,6 +77,18 @@ void assign_with_fixed(MeshResult& result, const MeshOptions& options, double h,
   result.intervals = assign(interval_options);
 }
 
+// Inputs: mesh; parts (nullptr, or one flag per part of the decomposition). Output: the number of
+//         quads with a scaled Jacobian <= 0; each one's part flagged in *parts.
+int inverted_quads(const QuadMesh& mesh, std::vector<char>* parts) {
+  int count = 0;
+  for (size_t k = 0; k < mesh.quads.size(); ++k) {
+    if (quad_scaled_jacobian(mesh.corners(k)) > 0.0) continue;
+    ++count;
+    if (parts) (*parts)[static_cast<size_t>(mesh.quad_block[k])] = 1;
+  }
+  return count;
+}
+
 }  // namespace
 
 void require_conformal(const MeshResult& result) {
@@ -180,13 +192,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   std::vector<int> edge_minimum(result.block_model.edges.size(), 0);
   for (int round = 0; round < 3; ++round) {
     std::vector<char> twisted(d.finished.size(), 0);
-    bool any = false;
-    for (size_t k = 0; k < result.mesh.quads.size(); ++k) {
-      if (quad_scaled_jacobian(result.mesh.corners(k)) > 0.0) continue;
-      twisted[static_cast<size_t>(result.mesh.quad_block[k])] = 1;
-      any = true;
-    }
-    if (!any) break;
+    if (inverted_quads(result.mesh, &twisted) == 0) break;
     for (const ModelBlock& block : result.block_model.blocks) {
       if (!twisted[static_cast<size_t>(block.part)]) continue;
       for (const ModelSide& side : block.sides) {
@@ -209,22 +215,13 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   // A fold that finer intervals do not undo (opposite sides spacing their nodes differently: a long
   // side with a fillet facing a short arc): those parts' blocks are filled along their sides' lengths
   // (transfinite_grid_by_length), kept if that leaves fewer inverted quads.
-  auto inverted = [](const QuadMesh& mesh, std::vector<char>* parts) {
-    int count = 0;
-    for (size_t k = 0; k < mesh.quads.size(); ++k) {
-      if (quad_scaled_jacobian(mesh.corners(k)) > 0.0) continue;
-      ++count;
-      if (parts) (*parts)[static_cast<size_t>(mesh.quad_block[k])] = 1;
-    }
-    return count;
-  };
   std::vector<char> folded(d.finished.size(), 0);
-  if (const int before = inverted(result.mesh, &folded); before > 0) {
+  if (const int before = inverted_quads(result.mesh, &folded); before > 0) {
     std::vector<char> by_length(result.block_model.blocks.size(), 0);
     for (size_t b = 0; b < by_length.size(); ++b) by_length[b] = folded[static_cast<size_t>(result.block_model.blocks[b].part)];
     QuadMesh again = block_model_mesh(result.block_model, result.intervals.intervals, face.planar.z, &face.arcs, &by_length);
     const SmoothingReport smoothing = smooth_quad_mesh(again, options.smoothing_sweeps);
-    if (inverted(again, nullptr) < before) {
+    if (inverted_quads(again, nullptr) < before) {
       result.mesh = std::move(again);
       result.smoothing = smoothing;
     }

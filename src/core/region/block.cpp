@@ -289,8 +289,6 @@ std::vector<size_t> smooth_template_corners(const Region& region) {
 }
 
 
-std::vector<QuadPiece> smooth_template_pieces(const Region& region);
-
 // True when every piece's quadrilateral of corners turns counter-clockwise with every angle within
 // [20, 160] degrees: the smooth template of a long or thin part can fold.
 bool pieces_well_shaped(const std::vector<QuadPiece>& pieces) {
@@ -309,23 +307,10 @@ bool pieces_well_shaped(const std::vector<QuadPiece>& pieces) {
   return true;
 }
 
-}  // namespace
-
-bool smooth_template(const Region& region, const BlockRules& rules) {
-  const Ring& ring = region.outer();
-  int corners = 0;
-  for (size_t i = 0; i < ring.size(); ++i) corners += !is_side_vertex(ring, i, rules);
-  return corners < 3 && ring.size() >= 4 && smooth_template_corners(region).size() == 4 &&
-         pieces_well_shaped(smooth_template_pieces(region));
-}
-
-namespace {
-
-// The smooth template's pieces (see block.h).
-std::vector<QuadPiece> smooth_template_pieces(const Region& region) {
+// The smooth template's pieces (see block.h) from its four boundary vertices v (smooth_template_corners).
+std::vector<QuadPiece> smooth_template_pieces(const Region& region, const std::vector<size_t>& v) {
   const Ring& ring = region.outer();
   const size_t n = ring.size();
-  const std::vector<size_t> v = smooth_template_corners(region);
   const Point2 c = region.centroid();
   std::array<Point2, 4> inner;
   for (size_t k = 0; k < 4; ++k) {
@@ -350,10 +335,29 @@ std::vector<QuadPiece> smooth_template_pieces(const Region& region) {
   return pieces;
 }
 
+// The smooth template's pieces when it applies (see block.h), else nothing: made once, both to
+// decide and to use.
+std::optional<std::vector<QuadPiece>> applicable_smooth_template(const Region& region, const BlockRules& rules) {
+  const Ring& ring = region.outer();
+  if (ring.size() < 4) return std::nullopt;
+  int corners = 0;
+  for (size_t i = 0; i < ring.size(); ++i) corners += !is_side_vertex(ring, i, rules);
+  if (corners >= 3) return std::nullopt;
+  const std::vector<size_t> v = smooth_template_corners(region);
+  if (v.size() != 4) return std::nullopt;
+  std::vector<QuadPiece> pieces = smooth_template_pieces(region, v);
+  if (!pieces_well_shaped(pieces)) return std::nullopt;
+  return pieces;
+}
+
 }  // namespace
 
+bool smooth_template(const Region& region, const BlockRules& rules) {
+  return applicable_smooth_template(region, rules).has_value();
+}
+
 std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& rules) {
-  if (smooth_template(region, rules)) return smooth_template_pieces(region);
+  if (std::optional<std::vector<QuadPiece>> smooth = applicable_smooth_template(region, rules)) return std::move(*smooth);
   const Ring& ring = region.outer();
   const size_t n = ring.size();
   const std::vector<size_t> corners = template_corners(ring, rules);

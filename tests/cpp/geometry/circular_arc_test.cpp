@@ -51,9 +51,19 @@ TEST_CASE("points and chords on an arc's polygon are found, others are not", "[g
   CHECK(project_to_circle(middle, arcs.arcs[0]).x == Approx(10 * std::cos(0.5 * (2 + 3) * kPi / 12)));
 }
 
-TEST_CASE("a circular segment's area against hand values", "[geometry][arc]") {
-  // A diameter cuts off a half disk; a chord of 90 degrees r^2 (pi / 4 - 1 / 2).
-  CHECK(circular_segment_area(4.0, 2.0) == Approx(0.5 * kPi * 4.0));
-  CHECK(circular_segment_area(std::sqrt(2.0) * 3.0, 3.0) == Approx(9.0 * (kPi / 4 - 0.5)));
-  CHECK(circular_segment_area(0.0, 3.0) == Approx(0.0).margin(1e-15));
+TEST_CASE("the gap between a segment and its arc against hand values", "[geometry][arc]") {
+  const CircularArc circle2{{0, 0}, 2.0, 0.0, 2 * kPi}, circle3{{0, 0}, 3.0, 0.0, 2 * kPi};
+  // A diameter cuts off a half disk; a chord of 90 degrees r^2 (pi / 4 - 1 / 2), positive with the
+  // centre on the segment's left (the region there has the segment beyond it), negative run the
+  // other way; a zero-length chord nothing.
+  CHECK(std::fabs(arc_gap(circle2, {2, 0}, {-2, 0}).area) == Approx(0.5 * kPi * 4.0));
+  CHECK(arc_gap(circle3, {3, 0}, {0, 3}).area == Approx(9.0 * (kPi / 4 - 0.5)));
+  CHECK(arc_gap(circle3, {0, 3}, {3, 0}).area == Approx(-9.0 * (kPi / 4 - 0.5)));
+  CHECK(arc_gap(circle3, {0, 3}, {3, 0}).arc_length == Approx(1.5 * kPi));
+  CHECK(arc_gap(circle3, {3, 0}, {3, 0}).area == Approx(0.0).margin(1e-15));
+  // A tangent (a circumscribed polygon's side) from -15 to +15 degrees: the region inside the circle
+  // lacks the sliver between the tangent and the arc, 9 (pi / 12 - tan 15 degrees).
+  const double t = std::tan(kPi / 12);
+  CHECK(arc_gap(circle3, {3, -3 * t}, {3, 3 * t}).area == Approx(9.0 * (kPi / 12 - t)));
+  CHECK(arc_gap(circle3, {3, -3 * t}, {3, 3 * t}).arc_length == Approx(3.0 * kPi / 6));
 }
