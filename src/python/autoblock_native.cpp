@@ -503,6 +503,7 @@ py::dict mesh_py(const std::string& brep, const py::object& cuts, double size, i
   quality["max_angle"] = q.max_angle;
   quality["irregular_interior_vertices"] = q.irregular_interior_nodes;
   quality["bound"] = result.bound;  // the face's scaled-Jacobian bound (1 for a rectilinear face)
+  quality["topology_bound"] = result.topology_bound;  // with its holes and smooth loops (block.h)
   d["quality"] = quality;
   d["conformal"] = result.conformity.conformal;
   d["file"] = out;

@@ -108,12 +108,14 @@ std::string region_decomposition_svg(const Region& face, const RegionDecompositi
   Canvas c(face.bbox(), title);
   for (size_t b = 0; b < d.finished.size(); ++b) {
     const FinishedRegion& f = d.finished[b];
-    c.svg << "<path fill=\"" << block_colour(static_cast<int>(b)) << "\" stroke=\"#333\" stroke-width=\"1\" d=\"";
+    c.svg << "<path fill=\"" << block_colour(static_cast<int>(b))
+          << "\" fill-rule=\"evenodd\" stroke=\"#333\" stroke-width=\"1\" d=\"";
     c.ring_path(f.region.outer());
+    for (const Ring& hole : f.region.holes()) c.ring_path(hole);  // an O-grid template's hole
     c.svg << "\"/>\n";
-    if (f.is_template) {  // the template's quads, dashed
+    if (f.is_template) {  // the template's pieces, dashed
       c.svg << "<path fill=\"none\" stroke=\"#333\" stroke-width=\"0.8\" stroke-dasharray=\"4 3\" d=\"";
-      for (const auto& quad : template_quads(f.region)) c.ring_path(Ring(quad.begin(), quad.end()));
+      for (const QuadPiece& piece : template_pieces(f.region, d.rules)) c.ring_path(piece.ring);
       c.svg << "\"/>\n";
     }
   }

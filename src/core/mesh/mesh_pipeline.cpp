@@ -169,6 +169,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   const double tolerance = std::max({face.planar.tolerance, kModelToleranceQuanta * q, 1e-9 * face.region.bbox().longer_side()});
   const std::vector<Ring> loops = face.region.loops();
   result.bound = scaled_jacobian_bound(loops, face.arcs);
+  result.topology_bound = topology_jacobian_bound(loops, face.arcs);
 
   // Intervals first: an infeasible request fails before the slower CAD work.
   auto start = std::chrono::steady_clock::now();

@@ -55,6 +55,7 @@ struct MeshResult {
   Conformity conformity;        // the independent check
   bool default_size = false;    // h was derived from the face's size
   double bound = 1.0;           // scaled_jacobian_bound of the face (1 for a rectilinear face)
+  double topology_bound = 1.0;  // topology_jacobian_bound of the face (block.h: its holes and smooth loops too)
   SmoothingReport smoothing;    // a general face's
   double merge_seconds = 0.0;   // replay of the cuts and the conformal merge (OpenCASCADE)
   double interval_seconds = 0.0;

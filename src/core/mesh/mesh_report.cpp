@@ -36,7 +36,9 @@ nlohmann::json common_report(const std::string& input, const std::string& policy
                        {"interior_vertices", q.interior_nodes},
                        {"irregular_interior_vertices", q.irregular_interior_nodes},
                        {"bound", r.bound},
-                       {"min_scaled_jacobian_over_bound", q.min_scaled_jacobian / r.bound}};
+                       {"min_scaled_jacobian_over_bound", q.min_scaled_jacobian / r.bound},
+                       {"topology_bound", r.topology_bound},
+                       {"min_scaled_jacobian_over_topology_bound", q.min_scaled_jacobian / r.topology_bound}};
   report["conformal"] = c.conformal;
   report["conformity"] = {{"interior_edges", c.interior_edges},     {"boundary_edges", c.boundary_edges},
                           {"overused_edges", c.overused_edges},     {"stray_boundary_edges", c.stray_boundary_edges},

@@ -30,7 +30,8 @@ nlohmann::json mesh_report_json(const std::string& input, const Decomposition& d
 
 // Inputs:  input; decomposition, a general face's; result (mesh_region_decomposition's); seconds.
 // Outputs: the report above, with "intervals": {"edges" (model edges) instead of "strips", ...},
-//          "quality" adding "bound" (scaled_jacobian_bound) and "min_scaled_jacobian_over_bound",
+//          "quality" adding "bound" (scaled_jacobian_bound), "min_scaled_jacobian_over_bound",
+//          "topology_bound" (topology_jacobian_bound) and "min_scaled_jacobian_over_topology_bound",
 //          "blocks" counting the finished parts and "templates" those finished by a template,
 //          "smoothing": {"sweeps", "moves", "min_scaled_jacobian_before"} (mesh_smoothing.h), and
 //          "decomposition": {"complete", "cuts", "return", "time_capped", "policy_steps"}.

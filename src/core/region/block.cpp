@@ -1,8 +1,10 @@
 #include "core/region/block.h"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -12,6 +14,10 @@ namespace autoblock {
 namespace {
 
 constexpr double kDegree = M_PI / 180.0;
+// The O-grid template (block.h): the corners' least angle (and 180 less it, the largest), and the
+// room between the hole and every side, in the hole's radii.
+constexpr double kOgridMinCorner = 60.0;
+constexpr double kOgridClearance = 0.5;
 
 // The centre of the largest circle inside a convex polygon (counter-clockwise): the linear program
 // max r subject to dist_k(p) >= r for every side's line, solved at its vertices (three sides' lines
@@ -199,9 +205,20 @@ std::optional<std::array<int, 4>> block_corners(const Region& region, const Bloc
   return corners;
 }
 
+CornerAngle piece_corner_angle(const QuadPiece& piece, int k) {
+  const Point2 v = piece.ring[static_cast<size_t>(piece.corners[static_cast<size_t>(k)])];
+  const Point2 next = piece.ring[static_cast<size_t>(piece.corners[static_cast<size_t>((k + 1) % 4)])];
+  const Point2 prev = piece.ring[static_cast<size_t>(piece.corners[static_cast<size_t>((k + 3) % 4)])];
+  const double ax = next.x - v.x, ay = next.y - v.y, bx = prev.x - v.x, by = prev.y - v.y;
+  const double length = std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by));
+  if (!(length > 0.0)) return {-1.0, 1.0};
+  return {(ax * by - ay * bx) / length, (ax * bx + ay * by) / length};
+}
+
 bool template_applies(const Region& region) {
   if (region.is_convex()) return true;
-  if (region.is_empty() || !region.holes().empty()) return false;
+  if (region.is_empty()) return false;
+  if (!region.holes().empty()) return ogrid_template(region);
   // Convex but for side vertices turned a little the other way (within the flat tolerance; rounding
   // to the lattice makes them): they lie on the template's sides, as on a block's. Together they may
   // turn inwards by no more than the flat tolerance: a concave arc (circular_arc.h) is a chain of such
@@ -294,14 +311,9 @@ std::vector<size_t> smooth_template_corners(const Region& region) {
 bool pieces_well_shaped(const std::vector<QuadPiece>& pieces) {
   const double cos_limit = std::cos(20.0 * M_PI / 180.0);
   for (const QuadPiece& piece : pieces) {
-    for (size_t k = 0; k < 4; ++k) {
-      const Point2 v = piece.ring[static_cast<size_t>(piece.corners[k])];
-      const Point2 next = piece.ring[static_cast<size_t>(piece.corners[(k + 1) % 4])];
-      const Point2 prev = piece.ring[static_cast<size_t>(piece.corners[(k + 3) % 4])];
-      const double ax = next.x - v.x, ay = next.y - v.y, bx = prev.x - v.x, by = prev.y - v.y;
-      const double length = std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by));
-      if (!(length > 0.0) || ax * by - ay * bx <= 0.0) return false;
-      if (std::fabs(ax * bx + ay * by) > cos_limit * length) return false;
+    for (int k = 0; k < 4; ++k) {
+      const CornerAngle a = piece_corner_angle(piece, k);
+      if (a.sine <= 0.0 || std::fabs(a.cosine) > cos_limit) return false;
     }
   }
   return true;
@@ -335,6 +347,146 @@ std::vector<QuadPiece> smooth_template_pieces(const Region& region, const std::v
   return pieces;
 }
 
+// The O-grid template's pieces (see block.h) when it applies, else nothing: made once, both to decide
+// and to use.
+std::optional<std::vector<QuadPiece>> applicable_ogrid_template(const Region& region, const BlockRules& rules) {
+  if (region.holes().size() != 1) return std::nullopt;
+  const double q = region.quantum();
+  // A smooth convex hole (a circle, a slot): every vertex a side vertex, turning 360 degrees in all
+  // (within the flat tolerance: a tangent join may turn slightly the other way).
+  const Ring& hole = region.holes()[0];
+  const size_t m = hole.size();
+  if (m < 8) return std::nullopt;
+  double turning = 0.0;
+  for (size_t i = 0; i < m; ++i) {
+    if (!is_side_vertex(hole, i, BlockRules{})) return std::nullopt;
+    turning += std::fabs(interior_angle(hole, i) - M_PI);
+  }
+  if (turning > 2.0 * M_PI + BlockRules{}.flat_tolerance_degrees * kDegree) return std::nullopt;
+  const Point2 c = ring_centroid(hole);
+  // Four convex corners within [60, 120] degrees and straight sides between them.
+  const Ring& ring = region.outer();
+  const size_t n = ring.size();
+  std::vector<size_t> corner;
+  for (size_t i = 0; i < n; ++i) {
+    const VertexShape shape = vertex_shape(ring, i, rules);
+    if (shape.side) continue;
+    if (shape.reflex || corner.size() == 4) return std::nullopt;
+    const double t = interior_angle(ring, i);
+    if (t < kOgridMinCorner * kDegree || t > M_PI - kOgridMinCorner * kDegree) return std::nullopt;
+    corner.push_back(i);
+  }
+  if (corner.size() != 4) return std::nullopt;
+  // Side k runs from corner k to corner k + 1: its unit direction, inward normal, and the hole
+  // centre's distance from it. Side vertices (T-junctions) must lie on its chord.
+  std::array<Point2, 4> e, normal;
+  std::array<double, 4> length{}, d{}, reach{};
+  for (size_t k = 0; k < 4; ++k) {
+    const Point2 a = ring[corner[k]], b = ring[corner[(k + 1) % 4]];
+    length[k] = std::hypot(b.x - a.x, b.y - a.y);
+    e[k] = {(b.x - a.x) / length[k], (b.y - a.y) / length[k]};
+    normal[k] = {-e[k].y, e[k].x};
+    d[k] = normal[k].x * (c.x - a.x) + normal[k].y * (c.y - a.y);
+    for (size_t i = corner[k]; i != corner[(k + 1) % 4]; i = (i + 1) % n) {
+      const Point2 v = ring[i];
+      if (std::fabs(normal[k].x * (v.x - a.x) + normal[k].y * (v.y - a.y)) > 2.0 * q) return std::nullopt;
+    }
+    // How far the hole reaches from its centre towards side k.
+    for (const Point2& v : hole) reach[k] = std::max(reach[k], -(normal[k].x * (v.x - c.x) + normal[k].y * (v.y - c.y)));
+  }
+  // Room on every side: the gap to the side at least half the hole's smallest reach (its radius) and
+  // 64 quanta, for a ring and a strip beyond it.
+  const double radius = *std::min_element(reach.begin(), reach.end());
+  for (size_t k = 0; k < 4; ++k) {
+    if (!(d[k] - reach[k] >= std::max(kOgridClearance * radius, 64.0 * q))) return std::nullopt;
+  }
+  // The box: its side k parallel to side k, halfway from the hole to the side (the ring and the strip
+  // beyond equally thick) but at most a radius beyond the hole.
+  std::array<double, 4> offset{};
+  for (size_t k = 0; k < 4; ++k) offset[k] = std::min(0.5 * (reach[k] + d[k]), reach[k] + radius);
+  std::array<Point2, 4> box, foot_on_side, foot_on_previous;
+  for (size_t k = 0; k < 4; ++k) {
+    // Box corner k: on box lines k - 1 and k, normal . (x - c) = -offset.
+    const size_t p = (k + 3) % 4;
+    const double a11 = normal[p].x, a12 = normal[p].y, a21 = normal[k].x, a22 = normal[k].y;
+    const double det = a11 * a22 - a12 * a21;
+    if (!(std::fabs(det) > 1e-9)) return std::nullopt;
+    const double b1 = -offset[p], b2 = -offset[k];
+    const Point2 x{c.x + (b1 * a22 - a12 * b2) / det, c.y + (a11 * b2 - b1 * a21) / det};
+    box[k] = {snap_to_lattice(x.x, q), snap_to_lattice(x.y, q)};
+    foot_on_side[k] = {x.x - (d[k] - offset[k]) * normal[k].x, x.y - (d[k] - offset[k]) * normal[k].y};
+    foot_on_previous[k] = {x.x - (d[p] - offset[p]) * normal[p].x, x.y - (d[p] - offset[p]) * normal[p].y};
+  }
+  // Side k's vertices from corner k up to corner k + 1 (exclusive) with the two feet in place: a
+  // side vertex within 2 quanta of a foot is the foot.
+  struct SideSplit {
+    std::vector<Point2> before, between, after;  // corner k .. foot 1, foot 1 .. foot 2, foot 2 .. corner k + 1
+    Point2 first, second;
+  };
+  std::array<SideSplit, 4> split;
+  for (size_t k = 0; k < 4; ++k) {
+    const Point2 a = ring[corner[k]];
+    auto along = [&](Point2 v) { return e[k].x * (v.x - a.x) + e[k].y * (v.y - a.y); };
+    const double t1 = along(foot_on_side[k]), t2 = along(foot_on_previous[(k + 1) % 4]);
+    if (!(t1 > 32.0 * q && t2 - t1 > 32.0 * q && length[k] - t2 > 32.0 * q)) return std::nullopt;
+    SideSplit& s = split[k];
+    s.first = {snap_to_lattice(a.x + t1 * e[k].x, q), snap_to_lattice(a.y + t1 * e[k].y, q)};
+    s.second = {snap_to_lattice(a.x + t2 * e[k].x, q), snap_to_lattice(a.y + t2 * e[k].y, q)};
+    for (size_t i = corner[k]; i != corner[(k + 1) % 4]; i = (i + 1) % n) {
+      const double t = along(ring[i]);
+      if (std::fabs(t - t1) <= 2.0 * q) s.first = ring[i];
+      else if (std::fabs(t - t2) <= 2.0 * q) s.second = ring[i];
+      else if (t < t1) s.before.push_back(ring[i]);
+      else if (t < t2) s.between.push_back(ring[i]);
+      else s.after.push_back(ring[i]);
+    }
+  }
+  // The hole's vertex nearest each box corner, where the spoke meets the hole about square (the hole
+  // runs clockwise, the box counter-clockwise: h[k + 1] comes before h[k] along the hole).
+  std::array<size_t, 4> h{};
+  for (size_t k = 0; k < 4; ++k) {
+    double best = std::numeric_limits<double>::infinity();
+    for (size_t j = 0; j < m; ++j) {
+      const double dist = std::hypot(hole[j].x - box[k].x, hole[j].y - box[k].y);
+      if (dist < best) best = dist, h[k] = j;
+    }
+  }
+  std::vector<QuadPiece> pieces;
+  auto add = [&](Ring loop, std::array<int, 4> corners) { pieces.push_back(QuadPiece{std::move(loop), corners}); };
+  for (size_t k = 0; k < 4; ++k) {
+    const size_t p = (k + 3) % 4;
+    // The corner piece: corner k, the foot on side k, the box corner, the foot on side k - 1.
+    Ring loop = split[k].before;
+    const int at_foot = static_cast<int>(loop.size());
+    loop.push_back(split[k].first);
+    loop.push_back(box[k]);
+    loop.push_back(split[p].second);
+    loop.insert(loop.end(), split[p].after.begin(), split[p].after.end());
+    add(std::move(loop), {0, at_foot, at_foot + 1, at_foot + 2});
+  }
+  for (size_t k = 0; k < 4; ++k) {
+    // The side piece: the two feet on side k and their box corners.
+    Ring loop{split[k].first};
+    loop.insert(loop.end(), split[k].between.begin(), split[k].between.end());
+    const int at_second = static_cast<int>(loop.size());
+    loop.push_back(split[k].second);
+    loop.push_back(box[(k + 1) % 4]);
+    loop.push_back(box[k]);
+    add(std::move(loop), {0, at_second, at_second + 1, at_second + 2});
+  }
+  for (size_t k = 0; k < 4; ++k) {
+    // The ring piece: box side k, then the hole from h[k + 1] back to h[k].
+    Ring loop{box[k], box[(k + 1) % 4]};
+    for (size_t j = h[(k + 1) % 4]; j != h[k]; j = (j + 1) % m) loop.push_back(hole[j]);
+    const int at_last = static_cast<int>(loop.size());
+    loop.push_back(hole[h[k]]);
+    if (at_last < 3) return std::nullopt;  // two box corners aimed at one hole vertex
+    add(std::move(loop), {0, 1, 2, at_last});
+  }
+  if (!pieces_well_shaped(pieces)) return std::nullopt;
+  return pieces;
+}
+
 // The smooth template's pieces when it applies (see block.h), else nothing: made once, both to
 // decide and to use.
 std::optional<std::vector<QuadPiece>> applicable_smooth_template(const Region& region, const BlockRules& rules) {
@@ -356,7 +508,15 @@ bool smooth_template(const Region& region, const BlockRules& rules) {
   return applicable_smooth_template(region, rules).has_value();
 }
 
+bool ogrid_template(const Region& region, const BlockRules& rules) {
+  return applicable_ogrid_template(region, rules).has_value();
+}
+
 std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& rules) {
+  if (!region.holes().empty()) {
+    if (std::optional<std::vector<QuadPiece>> ogrid = applicable_ogrid_template(region, rules)) return std::move(*ogrid);
+    throw std::logic_error("template_pieces: a part with holes takes only the O-grid template");
+  }
   if (std::optional<std::vector<QuadPiece>> smooth = applicable_smooth_template(region, rules)) return std::move(*smooth);
   const Ring& ring = region.outer();
   const size_t n = ring.size();
@@ -437,35 +597,33 @@ std::vector<std::array<Point2, 4>> template_quads(const Region& region, const Bl
   return quads;
 }
 
-double scaled_jacobian_bound(const std::vector<Ring>& loops) {
-  double bound = 1.0;
-  for (const Ring& ring : loops) {
-    const size_t n = ring.size();
-    for (size_t i = 0; i < n; ++i) {
-      const Point2 prev = ring[(i + n - 1) % n], at = ring[i], next = ring[(i + 1) % n];
-      // Interior angle for the region on the left: the turn from the incoming to the outgoing edge.
-      const double in = std::atan2(at.y - prev.y, at.x - prev.x), out = std::atan2(next.y - at.y, next.x - at.x);
-      double turn = out - in;
-      while (turn <= -M_PI) turn += 2.0 * M_PI;
-      while (turn > M_PI) turn -= 2.0 * M_PI;
-      const double t = M_PI - turn;
-      // sin(t / k) is largest for t / k nearest a right angle: k = floor or ceil of t / (pi / 2).
-      const double k0 = std::max(1.0, std::floor(t / (0.5 * M_PI)));
-      const double best = std::max(std::sin(t / k0), std::sin(t / (k0 + 1.0)));
-      bound = std::min(bound, best);
-    }
-  }
-  return bound;
+namespace {
+
+// Inputs: t, a boundary corner's interior angle (radians). Output: the best scaled Jacobian of k quads
+//         splitting it, over k >= 1: sin(t / k) is largest for t / k nearest a right angle.
+double best_corner_split(double t) {
+  const double k0 = std::max(1.0, std::floor(t / (0.5 * M_PI)));
+  return std::max(std::sin(t / k0), std::sin(t / (k0 + 1.0)));
 }
 
-double scaled_jacobian_bound(const std::vector<Ring>& loops, const FaceArcs& arcs) {
-  if (arcs.empty()) return scaled_jacobian_bound(loops);
-  double bound = 1.0;
+// Inputs: the turn from an incoming to an outgoing direction (radians). Output: the interior angle
+//         for the region on the left, in (0, 2 pi).
+double interior_of_turn(double turn) {
+  while (turn <= -M_PI) turn += 2.0 * M_PI;
+  while (turn > M_PI) turn -= 2.0 * M_PI;
+  return M_PI - turn;
+}
+
+}  // namespace
+
+std::vector<double> boundary_corner_angles(const std::vector<Ring>& loops, const FaceArcs& arcs) {
+  std::vector<double> angles;
   for (const Ring& ring : loops) {
     const size_t n = ring.size();
     for (size_t i = 0; i < n; ++i) {
       const Point2 prev = ring[(i + n - 1) % n], at = ring[i], next = ring[(i + 1) % n];
-      const int arc_in = arcs.arc_of_chord(prev, at), arc_out = arcs.arc_of_chord(at, next);
+      const int arc_in = arcs.empty() ? -1 : arcs.arc_of_chord(prev, at);
+      const int arc_out = arcs.empty() ? -1 : arcs.arc_of_chord(at, next);
       if (arc_in >= 0 && arc_in == arc_out) continue;  // inside an arc: smooth
       // The directions of travel at the vertex: along an edge, or along an arc's tangent there.
       auto direction = [&](int arc, Point2 from, Point2 to) {
@@ -479,16 +637,64 @@ double scaled_jacobian_bound(const std::vector<Ring>& loops, const FaceArcs& arc
         }
         return std::atan2(dy, dx);
       };
-      const double in = direction(arc_in, prev, at), out = direction(arc_out, at, next);
-      double turn = out - in;
-      while (turn <= -M_PI) turn += 2.0 * M_PI;
-      while (turn > M_PI) turn -= 2.0 * M_PI;
-      const double t = M_PI - turn;
-      const double k0 = std::max(1.0, std::floor(t / (0.5 * M_PI)));
-      bound = std::min(bound, std::max(std::sin(t / k0), std::sin(t / (k0 + 1.0))));
+      const double t = interior_of_turn(direction(arc_out, at, next) - direction(arc_in, prev, at));
+      // A tangent join (an arc's end meeting its neighbour smoothly) is no corner.
+      if (std::fabs(t - M_PI) < 1e-9) continue;
+      angles.push_back(t);
     }
   }
+  return angles;
+}
+
+double scaled_jacobian_bound(const std::vector<Ring>& loops) { return scaled_jacobian_bound(loops, FaceArcs{}); }
+
+double scaled_jacobian_bound(const std::vector<Ring>& loops, const FaceArcs& arcs) {
+  double bound = 1.0;
+  for (const double t : boundary_corner_angles(loops, arcs)) bound = std::min(bound, best_corner_split(t));
   return bound;
+}
+
+double topology_jacobian_bound(const std::vector<Ring>& loops, const FaceArcs& arcs) {
+  const std::vector<double> angles = boundary_corner_angles(loops, arcs);
+  const int holes = static_cast<int>(loops.size()) - 1;
+  const int n = static_cast<int>(angles.size());
+  constexpr int kMaxSplit = 8;  // quads at one corner: more would leave angles under 45 degrees of a 360
+  // The scaled Jacobians a corner can have (sin(t / k), k = 1..kMaxSplit) are the thresholds tried.
+  std::vector<double> thresholds{1.0};
+  for (const double t : angles) {
+    for (int k = 1; k <= kMaxSplit; ++k) thresholds.push_back(std::sin(t / k));
+  }
+  std::sort(thresholds.begin(), thresholds.end(), std::greater<double>());
+  const double valence_five = std::sin(0.4 * M_PI), valence_three = std::sin(2.0 * M_PI / 3.0);
+  double best = 0.0;
+  for (const double tau : thresholds) {
+    if (tau <= best) break;
+    // Each corner's splits k with sin(t / k) >= tau form an interval (sin(t / k) is unimodal in k);
+    // their sum K over the corners ranges over [low, high].
+    int low = 0, high = 0;
+    bool feasible = true;
+    for (const double t : angles) {
+      int lo = 0, hi = 0;
+      for (int k = 1; k <= kMaxSplit; ++k) {
+        if (std::sin(t / k) >= tau - 1e-12) {
+          if (lo == 0) lo = k;
+          hi = k;
+        }
+      }
+      if (lo == 0) {
+        feasible = false;
+        break;
+      }
+      low += lo;
+      high += hi;
+    }
+    if (!feasible) continue;
+    // The index the interior must make up: D = 4 (1 - holes) - sum over corners of (2 - k).
+    const int d_low = 4 * (1 - holes) - 2 * n + low, d_high = 4 * (1 - holes) - 2 * n + high;
+    const double topology = d_low <= 0 && d_high >= 0 ? 1.0 : (d_high < 0 ? valence_five : valence_three);
+    best = std::max(best, std::min(tau, topology));
+  }
+  return best;
 }
 
 BlockRules mesh_block_rules(const std::vector<Ring>& loops, double fraction) {

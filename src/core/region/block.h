@@ -53,7 +53,8 @@ inline bool is_block(const Region& region, const BlockRules& rules = {}) {
 }
 
 // Inputs:  region. Output: true when the template can finish it: no holes, convex but for side
-//          vertices (within the default flat tolerance) that turn slightly inwards.
+//          vertices (within the default flat tolerance) that turn slightly inwards; or one round hole
+//          that the O-grid template takes (ogrid_template).
 bool template_applies(const Region& region);
 
 // A smooth part (fewer than three corners: a disk, a rounded rectangle, a D-shape; arcs reach the
@@ -66,6 +67,21 @@ bool template_applies(const Region& region);
 // thin part's would fold); otherwise the template is the usual one.
 // Inputs: region; rules. Output: true when the smooth template applies (template_pieces makes it).
 bool smooth_template(const Region& region, const BlockRules& rules = {});
+
+// A part with one round hole (issue 13: a circle reaches the engine as a ring of side vertices,
+// circular_arc.h), or any smooth convex one (a slot), and four convex corners of 60-120 degrees joined
+// by straight sides gets the O-grid template: a box around the hole, its side k parallel to the part's
+// side k, halfway between the hole and that side but at most one radius (the hole's smallest reach
+// from its centroid) beyond the hole; four pieces between the box and the hole (each box corner
+// joined to the hole's vertex in its direction from the hole's centroid), four between the box and
+// the sides (the box corners' feet on the sides), and four at the part's corners: twelve pieces in
+// that order, every corner of the part, foot and box side a right angle on a rectangle. The box
+// corners are the five-valent vertices that a quad mesh of a part with a round hole needs
+// (topology_jacobian_bound). It applies only where every side leaves room (the hole at least half a
+// radius and 64 quanta from it), the feet fall inside their sides, and every piece's quadrilateral of
+// corners is convex with angles within [20, 160] degrees.
+// Inputs: region; rules. Output: true when the O-grid template applies (template_pieces makes it).
+bool ogrid_template(const Region& region, const BlockRules& rules = {});
 
 // Inputs:  region, convex (template_applies); rules (which vertices are side vertices).
 // Outputs: the template's quadrilaterals, one per corner of the region, each counter-clockwise
@@ -82,12 +98,22 @@ struct QuadPiece {
   std::array<int, 4> corners{};
 };
 
+// Inputs:  piece; k, one of its corners (0-3).
+// Outputs: the sine and cosine of the angle at corner k of its quadrilateral of corners (the sine
+//          negative where it turns clockwise; -1 and 1 for a degenerate corner).
+struct CornerAngle {
+  double sine = 0.0, cosine = 1.0;
+};
+CornerAngle piece_corner_angle(const QuadPiece& piece, int k);
+
 // Inputs:  region, convex (template_applies); rules (which vertices are side vertices).
 // Outputs: the template's pieces, one per corner of the region, in the order of template_quads:
 //          piece k runs from corner k along the region's boundary (through its side vertices) to the
 //          foot on that side, to the centre, to the foot on the side that ends at corner k, and back
 //          along the boundary. A foot within the region's quantum of a side vertex is that vertex.
-//          The pieces' loops share their spokes (foot to centre) exactly.
+//          The pieces' loops share their spokes (foot to centre) exactly. A smooth part's template
+//          (smooth_template) and the O-grid (ogrid_template) give their own pieces instead. Throws
+//          std::logic_error for a part with holes that the O-grid does not take.
 std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& rules = {});
 
 // The best minimum scaled Jacobian any all-quad mesh of a face can have, set by its corners: k quads
@@ -102,6 +128,23 @@ double scaled_jacobian_bound(const std::vector<Ring>& loops);
 // where a vertex inside an arc is smooth (no corner) and an arc's end meets its neighbour at the
 // arc's tangent (a tangent join counts as 180 degrees).
 double scaled_jacobian_bound(const std::vector<Ring>& loops, const FaceArcs& arcs);
+
+// Inputs: loops, arcs, as for scaled_jacobian_bound. Output: the interior angles (radians, in
+//         (0, 2 pi)) of the face's true corners: every vertex but those inside an arc and the tangent
+//         joins of arcs with their neighbours.
+std::vector<double> boundary_corner_angles(const std::vector<Ring>& loops, const FaceArcs& arcs);
+
+// The bound of the face's corners and its topology together (<= scaled_jacobian_bound). In an all-quad
+// mesh of a face with h holes, sum over interior vertices of (4 - valence) plus sum over boundary
+// vertices of (3 - valence) is 4 (1 - h). A corner split into k quads adds 2 - k, a smooth boundary
+// vertex with two quads nothing; whatever the corners leave over, D, interior vertices must make up:
+// D > 0 needs a three-valent one (three angles summing to 360 degrees: one at least 120, scaled
+// Jacobian at most sin 120 = 0.866), D < 0 a five-valent one or more (one angle at most 72: sin 72 =
+// 0.951). So a disk, a rounded rectangle or a rectangle with one convex fillet cannot pass 0.866, a
+// plate with a round hole 0.951, whatever their corner bound (1). The bound is the best over the
+// corners' splits k of min(min over corners of sin(t / k), that cost).
+// Inputs: loops, arcs, as for scaled_jacobian_bound. Output: the bound, in (0, 1].
+double topology_jacobian_bound(const std::vector<Ring>& loops, const FaceArcs& arcs);
 
 // The mesh preset's block rules for a face: a block's corners must lie within
 // [asin(f B), 180 - asin(f B)] degrees, B the face's bound (scaled_jacobian_bound), so that no block

@@ -1,6 +1,10 @@
 #include "core/region/region_candidates.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
+#include <utility>
 
 namespace autoblock {
 namespace {
@@ -31,6 +35,51 @@ bool points_inside(Point2 in, Point2 out, Point2 u) {
   if (dot(u, in) > 0.0 && std::fabs(cross(u, in)) <= margin) return false;
   if (dot(u, out) > 0.0 && std::fabs(cross(out, u)) <= margin) return false;
   return !(cross(in, u) >= 0.0 && cross(u, out) >= 0.0);
+}
+
+// Inputs: part; p, a point; u, a unit direction. Output: a point where the line through p along u
+//         crosses the part's outer loop (the origin of a full cut along that line), or nothing.
+std::optional<Point2> line_meets_outer(const Region& part, Point2 p, Point2 u) {
+  const Ring& ring = part.outer();
+  const size_t m = ring.size();
+  for (size_t i = 0; i < m; ++i) {
+    const Point2 a = ring[i], b = ring[(i + 1) % m];
+    const double sa = cross(u, {a.x - p.x, a.y - p.y}), sb = cross(u, {b.x - p.x, b.y - p.y});
+    if ((sa < 0.0) == (sb < 0.0) || sa == sb) continue;
+    const double t = sa / (sa - sb);
+    return Point2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+  }
+  return std::nullopt;
+}
+
+// Inputs: part with two holes or more; smooth, which of them are smooth (circles, slots); ax, ay, the
+//         axes of its minimum-area rectangle.
+// Output: full cuts that separate two smooth holes: for every pair whose extents along an axis leave
+//         a gap, the line across that axis through the gap's middle.
+void hole_separating_cuts(const Region& part, const std::vector<char>& smooth, Point2 ax, Point2 ay,
+                          std::vector<RegionAction>* actions) {
+  const std::vector<Ring>& holes = part.holes();
+  for (const Point2 u : {ax, ay}) {
+    std::vector<std::pair<double, double>> extent;
+    for (const Ring& hole : holes) {
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (const Point2& v : hole) {
+        lo = std::min(lo, dot(u, v));
+        hi = std::max(hi, dot(u, v));
+      }
+      extent.push_back({lo, hi});
+    }
+    for (size_t i = 0; i < holes.size(); ++i) {
+      for (size_t j = 0; j < holes.size(); ++j) {
+        if (i == j || !smooth[i] || !smooth[j] || !(extent[i].second < extent[j].first)) continue;
+        const double mid = 0.5 * (extent[i].second + extent[j].first);
+        const Point2 along{-u.y, u.x};
+        if (const auto origin = line_meets_outer(part, {mid * u.x, mid * u.y}, along)) {
+          actions->push_back({RegionAction::Kind::Cut, {CutKind::Full, *origin, along}});
+        }
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -75,9 +124,15 @@ std::vector<RegionAction> region_candidates(const Region& part) {
   const bool convex = part.is_convex();
   // Scratch lists, cleared per vertex (their storage kept: no allocation per vertex).
   std::vector<Point2> directions, partial, full, partial_unit, full_unit;
+  std::vector<char> smooth_holes;
   for (int k = 0; k < part.loop_count(); ++k) {
     const Ring& ring = part.loop(k);
     const size_t m = ring.size();
+    // A smooth hole (a circle, a slot: every vertex a side vertex): at its vertices only the cuts
+    // along the bisector, square to the hole; the others run nearly along it.
+    bool smooth_hole = k > 0;
+    for (size_t i = 0; i < m && smooth_hole; ++i) smooth_hole = is_side_vertex(ring, i);
+    if (k > 0) smooth_holes.push_back(smooth_hole);
     for (size_t i = 0; i < m; ++i) {
       const Point2 p = ring[(i + m - 1) % m], v = ring[i], n = ring[(i + 1) % m];
       const Point2 e_in = unit({v.x - p.x, v.y - p.y}), e_out = unit({n.x - v.x, n.y - v.y});
@@ -85,8 +140,12 @@ std::vector<RegionAction> region_candidates(const Region& part) {
       Point2 bisector = unit({e_out.x + to_p.x, e_out.y + to_p.y});
       if (!(std::hypot(bisector.x, bisector.y) > 0.5)) bisector = {-e_out.y, e_out.x};  // a flat vertex
       if (!points_inside(to_p, e_out, unit(bisector))) bisector = {-bisector.x, -bisector.y};
-      directions.assign({e_in, {-e_out.x, -e_out.y}, bisector, {-e_in.y, e_in.x}, {-e_out.y, e_out.x},
-                         ax,   {-ax.x, -ax.y},       ay,       {-ay.x, -ay.y}});
+      if (smooth_hole) {
+        directions.assign({bisector});
+      } else {
+        directions.assign({e_in, {-e_out.x, -e_out.y}, bisector, {-e_in.y, e_in.x}, {-e_out.y, e_out.x},
+                           ax,   {-ax.x, -ax.y},       ay,       {-ay.x, -ay.y}});
+      }
       // On a convex part, the diagonals to every vertex but the neighbours (a hexagon into two
       // quadrilaterals, a pentagon into a quadrilateral and a triangle).
       if (convex) {
@@ -124,6 +183,7 @@ std::vector<RegionAction> region_candidates(const Region& part) {
       actions.push_back({RegionAction::Kind::Cut, {CutKind::Partial, mid, {-e_out.y, e_out.x}}});
     }
   }
+  if (part.holes().size() >= 2) hole_separating_cuts(part, smooth_holes, ax, ay, &actions);
   if (template_applies(part) && !is_block(part)) actions.push_back({RegionAction::Kind::Template, {}});
   return actions;
 }

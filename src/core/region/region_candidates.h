@@ -8,9 +8,15 @@
 //   partial     a ray along each direction that enters the interior from v;
 //   full        the line along each distinct direction (up to sign) through v (not on a convex
 //               part, where the full cut is the partial one);
-// and from the midpoint of every edge, the partial cut along the edge's inward normal.
+// and from the midpoint of every edge, the partial cut along the edge's inward normal; on a part with
+// two smooth holes or more, for every two whose extents along an axis of the part's minimum-area
+// rectangle leave a gap, the full cut across that axis through the gap's middle (it separates them,
+// so that each may get the O-grid, block.h).
+// At the vertices of a smooth hole (every vertex a side vertex: a circle, a slot, circular_arc.h) only
+// the bisector (square to the hole), the others running nearly along it.
 // Duplicate directions (parallel within 1e-9 rad) are listed once. On a convex part that is not a
-// block, finishing it with the template is a candidate too. Every candidate a policy picks
+// block, or on a part with one round hole that the O-grid takes (block.h), finishing it with the
+// template is a candidate too. Every candidate a policy picks
 // from here is a real number angle; a learned policy may choose any other.
 //
 // Progress: the complexity of a part is (holes, reflex vertices, corners), compared

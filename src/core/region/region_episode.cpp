@@ -54,7 +54,7 @@ const RegionCutRecord& RegionEpisode::step(const RegionAction& action, CutOutcom
   record.action = action;
   record.reward = reward_of(action, outcome);
   if (action.kind == RegionAction::Kind::Template) {
-    if (!template_applies(current_part())) throw std::logic_error("RegionEpisode::step: the template needs a convex part");
+    if (!template_applies(current_part())) throw std::logic_error("RegionEpisode::step: the template needs a convex part or one with a round hole");
     finished_.push_back({record.part_id, current_part(), true, {}});
     record.children = {record.part_id};
     queue_.pop_front();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace autoblock {
 namespace {
@@ -132,6 +133,39 @@ double region_cut_reward_bound(RewardPreset preset, const Region& part, const st
 }
 
 double region_template_reward(RewardPreset preset, const Region& part, double face_size, const BlockRules& rules) {
+  if (preset == RewardPreset::Mesh && !part.holes().empty()) {
+    // The O-grid (block.h): its corner and side pieces' corners are its own (right angles on a
+    // rectangle); a ring piece meets the hole at the angle its spoke makes with the hole's tangent
+    // there (the direction between the hole vertex's neighbours), and its box corners are the
+    // five-valent vertices every quad mesh of the part needs, whose best is sin 72 degrees
+    // (topology_jacobian_bound), what smoothing works towards.
+    const Ring& hole = part.holes()[0];
+    const std::vector<QuadPiece> pieces = template_pieces(part, rules);
+    double j_new = 1.0;
+    for (size_t p = 0; p < pieces.size(); ++p) {
+      const QuadPiece& piece = pieces[p];
+      const bool ring_piece = p + 4 >= pieces.size();
+      for (int k = 0; k < 4; ++k) {
+        const double j = piece_corner_angle(piece, k).sine;
+        if (ring_piece && k < 2) {
+          j_new = std::min(j_new, j > 0.0 ? std::sin(0.4 * M_PI) : j);
+        } else if (ring_piece) {
+          // The hole's vertex: its spoke runs to the box corner before it (k = 2) or after it (k = 3).
+          const Point2 v = piece.ring[static_cast<size_t>(piece.corners[static_cast<size_t>(k)])];
+          const Point2 spoke = piece.ring[static_cast<size_t>(piece.corners[k == 2 ? 1 : 0])];
+          const size_t at = static_cast<size_t>(std::find(hole.begin(), hole.end(), v) - hole.begin());
+          if (at == hole.size()) throw std::logic_error("region_template_reward: an O-grid spoke ends off the hole");
+          const Point2 before = hole[(at + hole.size() - 1) % hole.size()], after = hole[(at + 1) % hole.size()];
+          const double tx = after.x - before.x, ty = after.y - before.y, sx = spoke.x - v.x, sy = spoke.y - v.y;
+          const double l = std::sqrt((tx * tx + ty * ty) * (sx * sx + sy * sy));
+          j_new = std::min(j_new, l > 0.0 ? std::fabs(tx * sy - ty * sx) / l : 0.0);
+        } else {
+          j_new = std::min(j_new, j);
+        }
+      }
+    }
+    return -static_cast<double>(pieces.size() - 1) - kMeshShapeWeight * (1.0 - j_new);
+  }
   const auto quads = template_quads(part);
   if (preset == RewardPreset::Mesh) {
     // The shape term for the corners the template creates (at its feet and its centre) and for the

@@ -53,7 +53,7 @@ void check_action(const RegionEpisode& episode, const RegionActionSpec& spec, si
   if (spec.action.kind == RegionAction::Kind::Template) {
     if (!template_applies(part)) {
       throw InputError("the sequence does not belong to this face: " + which + " finishes part " +
-                       std::to_string(spec.part_id) + " with a template, which needs a convex part");
+                       std::to_string(spec.part_id) + " with a template, which needs a convex part or one with a round hole (the O-grid)");
     }
     return;
   }

@@ -1,5 +1,6 @@
 #include "core/region/block.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <catch2/catch.hpp>
@@ -142,6 +143,126 @@ TEST_CASE("the scaled Jacobian bound of a face's corners", "[region][block]") {
   const double t = 30.0 * M_PI / 180.0;
   const Ring sharp_hole{{4, 4}, {4 + 3 * std::cos(t), 4 + 3 * std::sin(t)}, {7, 4}};  // clockwise
   CHECK(scaled_jacobian_bound({square, sharp_hole}) == Approx(std::sin(82.5 * M_PI / 180.0)));
+}
+
+TEST_CASE("the O-grid template: a box around a round hole, twelve pieces", "[region][block][arc]") {
+  // A 10 x 6 plate with a hole of radius 1.5 at (4, 3), its circle as the face reader gives it
+  // (circumscribed: the polygon's vertices lie just outside the circle).
+  auto round_hole = [](double x, double y, double r) {
+    CircularArc arc;
+    arc.center = {x, y};
+    arc.radius = r;
+    arc.sweep = -2.0 * M_PI;
+    arc.outside = true;
+    Ring ring = polygonise_arc(arc);
+    ring.pop_back();
+    return ring;
+  };
+  const Ring plate{{0, 0}, {10, 0}, {10, 6}, {0, 6}};
+  const Region part(plate, {round_hole(4, 3, 1.5)}, kQ);
+  REQUIRE(template_applies(part));
+  REQUIRE(ogrid_template(part));
+  const std::vector<QuadPiece> pieces = template_pieces(part);
+  REQUIRE(pieces.size() == 12);
+  double area = 0.0;
+  for (size_t p = 0; p < pieces.size(); ++p) {
+    const QuadPiece& piece = pieces[p];
+    CHECK(signed_area(piece.ring) > 0.0);
+    area += signed_area(piece.ring);
+    // The corner and side pieces (the first eight) are rectangles; a ring piece's corners at the box
+    // make up the box's right angle between them.
+    for (size_t k = 0; k < 4; ++k) {
+      const Point2 v = piece.ring[static_cast<size_t>(piece.corners[k])];
+      const Point2 next = piece.ring[static_cast<size_t>(piece.corners[(k + 1) % 4])];
+      const Point2 prev = piece.ring[static_cast<size_t>(piece.corners[(k + 3) % 4])];
+      const double cosine = ((next.x - v.x) * (prev.x - v.x) + (next.y - v.y) * (prev.y - v.y)) /
+                            (std::hypot(next.x - v.x, next.y - v.y) * std::hypot(prev.x - v.x, prev.y - v.y));
+      if (p < 8) CHECK(std::fabs(cosine) < 1e-6);
+    }
+  }
+  CHECK(area == Approx(part.area()).epsilon(1e-9));
+  // Every hole vertex lies on a ring piece: the four ring pieces go round the hole once.
+  size_t on_ring_pieces = 0;
+  for (size_t p = 8; p < 12; ++p) on_ring_pieces += pieces[p].ring.size() - 3;
+  CHECK(on_ring_pieces == part.holes()[0].size());
+  // The box's first corner (lower left): halfway between the hole and the sides, at most a radius
+  // beyond the hole. The hole's polygon reaches 1.5 from its centre towards each side (its edges are
+  // tangents, one of them at each axis direction).
+  const Point2 c = ring_centroid(part.holes()[0]);
+  double reach_left = 0.0, reach_down = 0.0;
+  for (const Point2& v : part.holes()[0]) reach_left = std::max(reach_left, c.x - v.x), reach_down = std::max(reach_down, c.y - v.y);
+  CHECK(reach_left == Approx(1.5).margin(1e-6));
+  CHECK(reach_down == Approx(1.5).margin(1e-6));
+  const Point2 box = pieces[8].ring[0];
+  CHECK(box.x == Approx(4.0 - 0.5 * (1.5 + 4.0)).margin(1e-6));  // 2.75 left of the centre: halfway
+  CHECK(box.y == Approx(3.0 - 0.5 * (1.5 + 3.0)).margin(1e-6));  // 2.25 below: halfway
+  // A small hole: the box a radius beyond it.
+  const std::vector<QuadPiece> small = template_pieces(Region(plate, {round_hole(4, 3, 0.5)}, kQ));
+  REQUIRE(small.size() == 12);
+  CHECK(small[8].ring[0].x == Approx(3.0).margin(1e-6));
+  CHECK(small[8].ring[0].y == Approx(2.0).margin(1e-6));
+
+  // Not an O-grid: a hole too near a side, a hole with corners, two holes, a part with six corners.
+  CHECK_FALSE(ogrid_template(Region(plate, {round_hole(1.8, 3, 1.5)}, kQ)));
+  CHECK_FALSE(ogrid_template(Region(plate, {Ring{{3, 2}, {3, 4}, {5, 4}, {5, 2}}}, kQ)));
+  CHECK_FALSE(template_applies(Region(plate, {Ring{{3, 2}, {3, 4}, {5, 4}, {5, 2}}}, kQ)));
+  CHECK_FALSE(ogrid_template(Region(plate, {round_hole(2.5, 3, 0.8), round_hole(7.5, 3, 0.8)}, kQ)));
+  const Ring l_shape{{0, 0}, {10, 0}, {10, 6}, {6, 6}, {6, 10}, {0, 10}};
+  CHECK_FALSE(ogrid_template(Region(l_shape, {round_hole(3, 3, 1)}, kQ)));
+}
+
+TEST_CASE("the topology bound: corners and the irregular vertices a face's holes and smooth loops need",
+          "[region][block][arc]") {
+  const double sin72 = std::sin(0.4 * M_PI), sin120 = std::sin(2.0 * M_PI / 3.0);
+  auto circle = [](double x, double y, double r, bool hole) {
+    CircularArc arc;
+    arc.center = {x, y};
+    arc.radius = r;
+    arc.sweep = hole ? -2.0 * M_PI : 2.0 * M_PI;
+    arc.outside = hole;
+    return arc;
+  };
+  auto polygon = [](const CircularArc& arc) {
+    Ring ring = polygonise_arc(arc);
+    ring.pop_back();  // a full circle ends where it starts
+    return ring;
+  };
+  const Ring plate{{0, 0}, {10, 0}, {10, 6}, {0, 6}};
+  // Polygons whose corners settle it: a rectangle, an L (its reflex corner three quads), a triangle
+  // (one quad a corner: a three-valent vertex inside, as its corners' sin 60), a chamfered square.
+  CHECK(topology_jacobian_bound({plate}, {}) == Approx(1.0));
+  CHECK(topology_jacobian_bound({Ring{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}}, {}) == Approx(1.0));
+  CHECK(topology_jacobian_bound({Ring{{0, 0}, {2, 0}, {1, std::sqrt(3.0)}}}, {}) == Approx(std::sin(M_PI / 3.0)));
+  // A chamfered square: its eight 135-degree corners split in two (sin 67.5 = 0.924) leave 4 over,
+  // four three-valent vertices; one quad at four of them (sin 135 = 0.707) would settle the sum.
+  const Ring chamfered{{1, 0}, {3, 0}, {4, 1}, {4, 3}, {3, 4}, {1, 4}, {0, 3}, {0, 1}};
+  CHECK(scaled_jacobian_bound({chamfered}) == Approx(std::sin(67.5 * M_PI / 180.0)));
+  CHECK(topology_jacobian_bound({chamfered}, {}) == Approx(sin120));
+  // A regular pentagon: 108-degree corners, one quad each, one five-valent vertex inside (sin 72 both).
+  Ring pentagon;
+  for (int k = 0; k < 5; ++k) pentagon.push_back({std::cos(0.4 * M_PI * k), std::sin(0.4 * M_PI * k)});
+  CHECK(topology_jacobian_bound({pentagon}, {}) == Approx(sin72));
+  // A rectangular hole: its four reflex corners make up the plate's four convex ones.
+  CHECK(topology_jacobian_bound({plate, Ring{{4, 2}, {4, 4}, {6, 4}, {6, 2}}}, {}) == Approx(1.0));
+  // A round hole has no corner to do so: five-valent vertices inside (the corner bound says 1).
+  FaceArcs hole_arcs;
+  hole_arcs.arcs = {circle(5, 3, 1.5, true)};
+  hole_arcs.tolerance = 1e-6;
+  const std::vector<Ring> plate_with_hole{plate, polygon(hole_arcs.arcs[0])};
+  CHECK(scaled_jacobian_bound(plate_with_hole, hole_arcs) == Approx(1.0));
+  CHECK(topology_jacobian_bound(plate_with_hole, hole_arcs) == Approx(sin72));
+  // A disk: no corner at all, four three-valent vertices.
+  FaceArcs disk_arcs;
+  disk_arcs.arcs = {circle(0, 0, 2, false)};
+  disk_arcs.tolerance = 1e-6;
+  CHECK(boundary_corner_angles({polygon(disk_arcs.arcs[0])}, disk_arcs).empty());
+  CHECK(topology_jacobian_bound({polygon(disk_arcs.arcs[0])}, disk_arcs) == Approx(sin120));
+  // An annulus: the two circles need nothing (a polar grid).
+  FaceArcs annulus_arcs;
+  annulus_arcs.arcs = {circle(0, 0, 3, false), circle(0, 0, 1, true)};
+  annulus_arcs.tolerance = 1e-6;
+  CHECK(topology_jacobian_bound({polygon(annulus_arcs.arcs[0]), polygon(annulus_arcs.arcs[1])}, annulus_arcs) ==
+        Approx(1.0));
 }
 
 TEST_CASE("smooth parts: the disk's template, and no template on a part with a concave arc", "[region][block][arc]") {
