@@ -11,8 +11,8 @@ namespace autoblock {
 
 namespace {
 
-// Which model edges lie on an arc of the face (-1: none): the boundary edges (used by one block's
-// side) that are chords of an arc.
+// Which model edges lie on an arc of the face (-1: none): those merge_arc_chains marked, else the
+// boundary edges (used by one block's side) that are chords of an arc.
 std::vector<int> edge_arcs(const BlockModel& model, const FaceArcs& arcs) {
   std::vector<int> uses(model.edges.size(), 0);
   for (const ModelBlock& block : model.blocks) {
@@ -22,8 +22,12 @@ std::vector<int> edge_arcs(const BlockModel& model, const FaceArcs& arcs) {
   }
   std::vector<int> on(model.edges.size(), -1);
   for (size_t e = 0; e < model.edges.size(); ++e) {
-    if (uses[e] != 1) continue;
     const ModelEdge& edge = model.edges[e];
+    if (edge.arc >= 0) {
+      on[e] = edge.arc;
+      continue;
+    }
+    if (uses[e] != 1) continue;
     on[e] = arcs.arc_of_chord(model.vertices[static_cast<size_t>(edge.a)], model.vertices[static_cast<size_t>(edge.b)]);
   }
   return on;
@@ -57,12 +61,14 @@ QuadMesh block_model_mesh(const BlockModel& model, const std::vector<int>& inter
     std::vector<int>& nodes = edge_nodes[e];
     nodes.push_back(edge.a);
     if (on_arc[e] >= 0) {
-      // On the arc, evenly in angle (a chord spans less than a half turn: the shorter way).
+      // On the arc, evenly in angle: over the turn merge_arc_chains measured along the chain, or (a
+      // single chord spans less than a half turn) the shorter way.
       const CircularArc& arc = arcs->arcs[static_cast<size_t>(on_arc[e])];
       const double ta = std::atan2(a.y - arc.center.y, a.x - arc.center.x);
       double turn = std::atan2(b.y - arc.center.y, b.x - arc.center.x) - ta;
       if (turn > M_PI) turn -= 2.0 * M_PI;
       if (turn < -M_PI) turn += 2.0 * M_PI;
+      if (edge.arc >= 0) turn = edge.arc_sweep;
       for (int k = 1; k < n; ++k) {
         const double t = ta + turn * static_cast<double>(k) / n;
         nodes.push_back(static_cast<int>(mesh.nodes.size()));

@@ -174,4 +174,86 @@ BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, do
   return model;
 }
 
+void merge_arc_chains(BlockModel& model, const FaceArcs& arcs) {
+  if (arcs.empty()) return;
+  const size_t edge_count = model.edges.size();
+  std::vector<int> uses(edge_count, 0), degree(model.vertices.size(), 0), arc_of(edge_count, -1);
+  std::vector<char> corner(model.vertices.size(), 0);
+  for (const ModelBlock& block : model.blocks) {
+    for (const ModelSide& side : block.sides) {
+      for (const int e : side.edges) ++uses[static_cast<size_t>(e)];
+      const ModelEdge& first = model.edges[static_cast<size_t>(side.edges.front())];
+      corner[static_cast<size_t>(side.forward.front() ? first.a : first.b)] = 1;
+    }
+  }
+  for (size_t e = 0; e < edge_count; ++e) {
+    const ModelEdge& edge = model.edges[e];
+    ++degree[static_cast<size_t>(edge.a)];
+    ++degree[static_cast<size_t>(edge.b)];
+    if (uses[e] == 1) {
+      arc_of[e] = arcs.arc_of_chord(model.vertices[static_cast<size_t>(edge.a)], model.vertices[static_cast<size_t>(edge.b)]);
+    }
+  }
+  // The signed turn of a chord about its arc's centre (a chord spans less than a half turn).
+  auto turn = [&](int from, int to, const CircularArc& arc) {
+    const Point2 a = model.vertices[static_cast<size_t>(from)], b = model.vertices[static_cast<size_t>(to)];
+    double t = std::atan2(b.y - arc.center.y, b.x - arc.center.x) - std::atan2(a.y - arc.center.y, a.x - arc.center.x);
+    if (t > M_PI) t -= 2.0 * M_PI;
+    if (t < -M_PI) t += 2.0 * M_PI;
+    return t;
+  };
+  std::vector<ModelEdge> edges;
+  std::vector<int> renumbered(edge_count, -1);  // unmerged edges keep one new number
+  for (ModelBlock& block : model.blocks) {
+    for (ModelSide& side : block.sides) {
+      ModelSide merged;
+      for (size_t i = 0; i < side.edges.size(); ++i) {
+        const int e = side.edges[i];
+        const ModelEdge& edge = model.edges[static_cast<size_t>(e)];
+        const int from = side.forward[i] ? edge.a : edge.b, to = side.forward[i] ? edge.b : edge.a;
+        const int arc = arc_of[static_cast<size_t>(e)];
+        // Go on along the side while the next edge lies on the same arc past a vertex nothing else uses.
+        size_t j = i;
+        int end = to;
+        while (arc >= 0 && j + 1 < side.edges.size() && arc_of[static_cast<size_t>(side.edges[j + 1])] == arc &&
+               degree[static_cast<size_t>(end)] == 2 && !corner[static_cast<size_t>(end)]) {
+          ++j;
+          const ModelEdge& next = model.edges[static_cast<size_t>(side.edges[j])];
+          end = side.forward[j] ? next.b : next.a;
+        }
+        if (j == i) {
+          int& n = renumbered[static_cast<size_t>(e)];
+          if (n < 0) {
+            n = static_cast<int>(edges.size());
+            edges.push_back(edge);
+            if (arc >= 0) {
+              edges.back().arc = arc;
+              edges.back().arc_sweep = turn(edge.a, edge.b, arcs.arcs[static_cast<size_t>(arc)]);
+            }
+          }
+          merged.edges.push_back(n);
+          merged.forward.push_back(side.forward[i]);
+          continue;
+        }
+        // Chords i..j become one edge from `from` to `end` (boundary edges: this side alone uses them).
+        ModelEdge chain{from, end, 0.0, arc, 0.0};
+        int at = from;
+        for (size_t k = i; k <= j; ++k) {
+          const ModelEdge& part = model.edges[static_cast<size_t>(side.edges[k])];
+          const int next = side.forward[k] ? part.b : part.a;
+          chain.length += part.length;
+          chain.arc_sweep += turn(at, next, arcs.arcs[static_cast<size_t>(arc)]);
+          at = next;
+        }
+        merged.edges.push_back(static_cast<int>(edges.size()));
+        merged.forward.push_back(1);
+        edges.push_back(chain);
+        i = j;
+      }
+      side = std::move(merged);
+    }
+  }
+  model.edges = std::move(edges);
+}
+
 }  // namespace autoblock

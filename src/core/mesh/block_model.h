@@ -31,6 +31,10 @@ constexpr double kModelToleranceQuanta = 3.0;
 struct ModelEdge {
   int a = 0, b = 0;  // vertex ids; the edge runs from a to b
   double length = 0.0;
+  // An edge along an arc of the face's boundary (merge_arc_chains): the arc's index in FaceArcs and
+  // the signed angle it turns from a to b about the arc's centre; -1 for any other edge.
+  int arc = -1;
+  double arc_sweep = 0.0;
 };
 
 // A logical side: model edges in order from one corner to the next (counter-clockwise around the
@@ -63,5 +67,14 @@ struct BlockModel {
 // Throws std::logic_error when the pieces do not fit together (an edge used by more than two
 // pieces, a corner lost).
 BlockModel block_model(const RegionDecomposition& decomposition, const BlockRules& rules, double quantum);
+
+// Along an arc of the face's boundary every sample of its polygon is a model vertex, so each chord
+// would get its own whole number of intervals and the nodes would bunch where chords round up. This
+// merges the chords of one piece's side that lie on one arc into one model edge wherever the vertex
+// between them is no piece's corner and no other edge's end: its intervals then spread evenly in
+// angle over the whole stretch (block_mesh.h), and its length is the chords' sum.
+// Inputs: model (block_model's); arcs, the face's (FaceArcs). Output: model with those chains merged
+//         (edges renumbered, sides updated; vertices kept, the merged ones unused).
+void merge_arc_chains(BlockModel& model, const FaceArcs& arcs);
 
 }  // namespace autoblock

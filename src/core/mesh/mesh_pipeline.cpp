@@ -174,9 +174,20 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   // Intervals first: an infeasible request fails before the slower CAD work.
   auto start = std::chrono::steady_clock::now();
   result.block_model = block_model(d, d.rules, q);
+  merge_arc_chains(result.block_model, face.arcs);
+  // An edge along an arc turns at most one chord step per interval (as its chords had one interval
+  // at least each): a quad's edge along the arc stays within the band of the arc's polygon, where the
+  // conformity check finds it on the arc (FaceArcs::arc_of_chord).
+  std::vector<int> edge_minimum(result.block_model.edges.size(), 0);
+  for (size_t e = 0; e < edge_minimum.size(); ++e) {
+    const ModelEdge& edge = result.block_model.edges[e];
+    if (edge.arc >= 0) {
+      edge_minimum[e] = static_cast<int>(std::ceil(std::fabs(edge.arc_sweep) / (kArcStepDegrees * M_PI / 180.0) - 1e-6));
+    }
+  }
   assign_with_fixed(result, options, h, [&](const EdgeIntervals& e) {
     return fixed_edge_intervals(result.block_model, e.a, e.b, e.intervals, tolerance);
-  }, [&](const IntervalOptions& o) { return assign_edge_intervals(result.block_model, o); });
+  }, [&](const IntervalOptions& o) { return assign_edge_intervals(result.block_model, o); }, edge_minimum);
   result.interval_seconds = since(start);
 
   start = std::chrono::steady_clock::now();
@@ -190,7 +201,6 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   // (inverted) quad when those sides carry few intervals, each vertex being a node: up to three times,
   // the edges of the parts with an inverted quad get twice their count as a minimum, and intervals
   // and mesh are made again (stopping where the quad limit or fixed counts forbid it).
-  std::vector<int> edge_minimum(result.block_model.edges.size(), 0);
   for (int round = 0; round < 3; ++round) {
     std::vector<char> twisted(d.finished.size(), 0);
     if (inverted_quads(result.mesh, &twisted) == 0) break;

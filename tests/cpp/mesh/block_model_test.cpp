@@ -2,6 +2,7 @@
 #include "core/mesh/block_model.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <catch2/catch.hpp>
 
@@ -81,4 +82,57 @@ TEST_CASE("block model: a template's pieces share their spokes and midpoints", "
   for (size_t e = 0; e < m.edges.size(); ++e) shared += edge_uses(m, e) == 2;
   CHECK(shared == 3);
   for (const ModelBlock& b : m.blocks) CHECK(b.from_template);
+}
+
+TEST_CASE("block model: an O-grid's hole is four edges along its arc, each a quarter turn", "[mesh][block_model][arc]") {
+  // A 10 x 6 plate with a round hole of radius 1.5 at (5, 3), as the face reader gives it: the circle
+  // (clockwise: a hole) and its circumscribed polygon.
+  FaceArcs arcs;
+  CircularArc circle;
+  circle.center = {5, 3};
+  circle.radius = 1.5;
+  circle.sweep = -2.0 * M_PI;
+  circle.outside = true;
+  arcs.arcs = {circle};
+  arcs.tolerance = 4.0 * kQ;
+  Ring hole = polygonise_arc(circle);
+  hole.pop_back();
+  RegionDecomposition d;
+  d.status = EpisodeStatus::Complete;
+  FinishedRegion plate;
+  plate.region = Region(Ring{{0, 0}, {10, 0}, {10, 6}, {0, 6}}, {hole}, kQ);
+  plate.is_template = true;
+  REQUIRE(ogrid_template(plate.region));
+  d.finished.push_back(plate);
+  BlockModel m = block_model(d, BlockRules{}, kQ);
+  REQUIRE(m.blocks.size() == 12);
+  const size_t before = m.edges.size();
+  merge_arc_chains(m, arcs);
+  // The hole's 24 chords became 4 edges (one per ring piece), the others stay as they were.
+  CHECK(m.edges.size() == before - 20);
+  int on_arc = 0;
+  double sweep = 0.0, length = 0.0;
+  for (size_t e = 0; e < m.edges.size(); ++e) {
+    if (m.edges[e].arc < 0) continue;
+    ++on_arc;
+    sweep += m.edges[e].arc_sweep;
+    length += m.edges[e].length;
+    CHECK(edge_uses(m, e) == 1);
+    // The spokes run to the hole's vertices nearest the box corners, near the diagonals.
+    CHECK(std::fabs(m.edges[e].arc_sweep) > 0.25 * M_PI);
+    CHECK(std::fabs(m.edges[e].arc_sweep) < 0.75 * M_PI);
+  }
+  CHECK(on_arc == 4);
+  CHECK(sweep == Approx(-2.0 * M_PI));                   // once round, clockwise
+  CHECK(length == Approx(region_perimeter(Region(hole, {}, kQ))));  // the chords' lengths
+  // Every block still has four sides of at least one edge, chained end to end.
+  for (const ModelBlock& b : m.blocks) {
+    for (size_t k = 0; k < 4; ++k) {
+      const ModelSide& side = b.sides[k];
+      REQUIRE_FALSE(side.edges.empty());
+      const ModelEdge& last = m.edges[static_cast<size_t>(side.edges.back())];
+      const ModelEdge& next = m.edges[static_cast<size_t>(b.sides[(k + 1) % 4].edges.front())];
+      CHECK((side.forward.back() ? last.b : last.a) == (b.sides[(k + 1) % 4].forward.front() ? next.a : next.b));
+    }
+  }
 }
