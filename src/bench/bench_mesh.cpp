@@ -10,6 +10,12 @@
 // Prints Markdown.
 //
 //   build/bin/autoblock_bench_mesh --small 200 --large 100
+//   build/bin/autoblock_bench_mesh --arcs 200 --seed 20261202 --keep /tmp/arcbench
+//
+// --arcs N: N faces with circular arcs (arc_generator.h; the same faces as `autoblock generate --kind
+// arcs --count N --seed S`), `autoblock mesh` as a whole process against gmsh, both judged by one
+// check against the true face (curved_conformity.h: every boundary node on the face's lines and
+// circles, the quads plus the gaps to the arcs covering the face); gmsh reads the same .brep file.
 //
 // Quality is measured with the same code for both (mesh_quality.h); a gmsh mesh that comes out
 // clockwise as a whole is reversed first (orientation is not quality; a single inverted quad
@@ -40,6 +46,7 @@
 #include "core/sac/compute_threads.h"
 #include "core/api/policy_source.h"
 #include "core/common/error.h"
+#include "core/data/arc_generator.h"
 #include "core/data/general_generator.h"
 #include "core/data/shape_generator.h"
 #include "core/env/decomposition.h"
@@ -51,6 +58,7 @@
 #include "core/mesh/mesh_conformity.h"
 #include "core/mesh/mesh_pipeline.h"
 #include "core/mesh/mesh_quality.h"
+#include "curved_conformity.h"
 #include "gmsh_output.h"
 
 using namespace autoblock;
@@ -63,6 +71,13 @@ struct Sample {
   int irregular = 0, quads = 0, triangles = 0;
   bool conformal = false;
   double seconds = 0, process_seconds = 0;
+  // Faces with arcs: the judge against the true face (curved_conformity.h), and AutoBlock's own check.
+  bench::CurvedConformity judged;
+  bool own_conformal = false;
+  double own_gap = 0.0;
+  double off_relative = 0.0;  // the farthest boundary node from the face's boundary / the face's size
+  double off_circles_relative = 0.0;  // the same over the nodes nearest a circle
+  int blocks = 0;
 };
 
 struct Face {
@@ -71,6 +86,9 @@ struct Face {
   // The loops the conformity check uses, and its tolerance (a general face: its lattice's).
   std::vector<Ring> loops;
   double tolerance = 0.0;
+  // A face with arcs: judged against its true boundary (the model face), nodes within this distance.
+  bool arcs = false;
+  double judge_tolerance = 0.0;
 };
 
 double median(std::vector<double> v) {
@@ -158,6 +176,17 @@ Sample gmsh_sample(const Face& f, const std::string& folder, int k, double h) {
   s.mean_sj = q.mean_scaled_jacobian;
   s.max_aspect = q.max_aspect_ratio;
   s.irregular = q.irregular_interior_nodes;
+  if (f.arcs) {
+    s.judged = bench::check_curved_conformity(mesh, f.face.model, f.judge_tolerance);
+    s.off_relative = s.judged.worst_off / (1e6 * f.judge_tolerance);
+    s.off_circles_relative = s.judged.worst_off_circles / (1e6 * f.judge_tolerance);
+    s.conformal = s.triangles == 0 && s.judged.conformal;
+    if (!s.judged.conformal) {
+      std::fprintf(stderr, "gmsh mesh of face %d (size %.6g) is not conformal: %s (farthest boundary node %.3g off)\n", k, h,
+                   s.judged.problem.c_str(), s.judged.worst_off);
+    }
+    return s;
+  }
   const Conformity c = f.loops.empty() ? check_conformity(mesh, f.face.planar.polygon)
                                        : check_conformity(mesh, f.loops, f.tolerance);
   s.conformal = s.triangles == 0 && c.conformal;
@@ -261,10 +290,13 @@ void run_set(const std::string& title, int count, int min_rects, int max_rects, 
 std::string keep_folder, keep_tag;
 
 // `autoblock mesh` on a general face, as a user runs it (the whole process), its figures from --json.
+// A face with arcs also writes its mesh (.msh, as gmsh does), judged against the true face.
 Sample cli_sample(const Face& f, const std::string& autoblock, const std::string& folder, int k) {
   const std::string json = folder + "/report" + std::to_string(k) + ".json";
   const std::string err = folder + "/error" + std::to_string(k) + ".txt";
-  const std::string command = "'" + autoblock + "' mesh '" + f.brep + "' --json '" + json + "' > /dev/null 2> '" + err + "'";
+  const std::string msh = folder + "/autoblock" + std::to_string(k) + ".msh";
+  const std::string out = f.arcs ? " --out '" + msh + "'" : "";
+  const std::string command = "'" + autoblock + "' mesh '" + f.brep + "' --json '" + json + "'" + out + " > /dev/null 2> '" + err + "'";
   const auto start = std::chrono::steady_clock::now();
   const int status = std::system(command.c_str());
   Sample s;
@@ -280,6 +312,11 @@ Sample cli_sample(const Face& f, const std::string& autoblock, const std::string
     std::stringstream text;
     text << said.rdbuf();
     std::printf("<!-- autoblock mesh failed on %s/%s.brep: %s -->\n", kept.c_str(), name.c_str(), text.str().c_str());
+    if (!keep_folder.empty()) {
+      const std::string named = keep_folder + "/" + keep_tag + "-face" + std::to_string(k);
+      std::filesystem::copy_file(f.brep, named + ".brep", std::filesystem::copy_options::overwrite_existing);
+      std::filesystem::copy_file(err, named + ".error.txt", std::filesystem::copy_options::overwrite_existing);
+    }
     return s;
   }
   std::ifstream in(json);
@@ -288,6 +325,7 @@ Sample cli_sample(const Face& f, const std::string& autoblock, const std::string
     const std::string name = keep_folder + "/" + keep_tag + "-face" + std::to_string(k);
     std::filesystem::copy_file(f.brep, name + ".brep", std::filesystem::copy_options::overwrite_existing);
     std::filesystem::copy_file(json, name + ".json", std::filesystem::copy_options::overwrite_existing);
+    if (f.arcs) std::filesystem::copy_file(msh, name + ".msh", std::filesystem::copy_options::overwrite_existing);
   }
   s.seconds = r["seconds"].get<double>();
   s.min_sj = r["quality"]["min_scaled_jacobian"].get<double>();
@@ -297,40 +335,94 @@ Sample cli_sample(const Face& f, const std::string& autoblock, const std::string
   s.quads = r["quads"].get<int>();
   s.conformal = r["conformal"].get<bool>();
   s.bound = r["quality"]["bound"].get<double>();
+  s.blocks = r["blocks"].get<int>();
+  if (f.arcs) {
+    s.own_conformal = s.conformal;
+    s.own_gap = r["conformity"]["curved_gap_area"].get<double>();
+    int triangles = 0;
+    s.judged = bench::check_curved_conformity(read_gmsh_output(msh, triangles), f.face.model, f.judge_tolerance);
+    s.off_relative = s.judged.worst_off / (1e6 * f.judge_tolerance);
+    s.off_circles_relative = s.judged.worst_off_circles / (1e6 * f.judge_tolerance);
+    s.conformal = s.judged.conformal && triangles == 0;
+  }
   return s;
 }
 
-// Inputs: method; samples, its runs; bounds, AutoBlock's runs (their faces' bounds); gmsh, gmsh's runs at
-// size h (the time reference).
-void print_general_row(const std::string& method, const std::vector<Sample>& samples, const std::vector<Sample>& bounds,
-                       const std::vector<Sample>& gmsh) {
+const char* const kOurs = "AutoBlock `mesh` (default policy)";
+const char* const kGmshH = "gmsh 4.8, size h";
+const char* const kGmshMatched = "gmsh 4.8, size matched to AutoBlock's count";
+
+// Every face meshed by `autoblock mesh` (cli_sample), by gmsh at size h and at AutoBlock's quad count;
+// the samples by method (kOurs, kGmshH, kGmshMatched). With --keep, a face with arcs keeps gmsh's last mesh.
+std::map<std::string, std::vector<Sample>> sample_faces(const std::string& title, const std::vector<Face>& faces,
+                                                        const std::string& autoblock, const std::string& folder) {
+  std::map<std::string, std::vector<Sample>> samples;
+  const bool tty = isatty(2);
+  for (size_t k = 0; k < faces.size(); ++k) {
+    const int i = static_cast<int>(k);
+    const Sample first = cli_sample(faces[k], autoblock, folder, i);
+    samples[kOurs].push_back(first);
+    const double h = target_size_for(faces[k].face, 0.0);
+    Sample at_h = gmsh_sample(faces[k], folder, i, h);
+    at_h.bound = first.bound;
+    samples[kGmshH].push_back(at_h);
+    samples[kGmshMatched].push_back(gmsh_matched_sample(faces[k], folder, i, h, at_h, first.quads));
+    const std::string gmsh_mesh = folder + "/face" + std::to_string(k) + ".msh";
+    if (faces[k].arcs && !keep_folder.empty() && std::filesystem::exists(gmsh_mesh)) {
+      std::filesystem::copy_file(gmsh_mesh, keep_folder + "/" + keep_tag + "-face" + std::to_string(k) + "-gmsh.msh",
+                                 std::filesystem::copy_options::overwrite_existing);
+    }
+    if (tty) std::fprintf(stderr, "\r%s: %zu/%zu", title.c_str(), k + 1, faces.size());
+  }
+  if (tty) std::fprintf(stderr, "\n");
+  return samples;
+}
+
+// What the general and arc rows add up over a method's runs: each sample against its face's bound and
+// gmsh's run at size h (the time reference).
+struct RowTotals {
   std::vector<double> ms, process_ms, ratios;
-  double worst = 1e300, mean_ratio = 0, mean_min_sj = 0, irregular = 0, quads = 0;
-  int n = 0, above = 0, conformal = 0, failed = 0;
-  for (size_t k = 0; k < samples.size(); ++k) {
-    const Sample& s = samples[k];
+  double worst = 1e300, worst_sj = 1e300, mean_ratio = 0, mean_min_sj = 0, irregular = 0, quads = 0;
+  int n = 0, conformal = 0, failed = 0;
+
+  // Inputs: s; bound, its face's; gmsh, gmsh's run at size h. Output: false (counted as failed) when
+  //         s has no mesh.
+  bool add(const Sample& s, double bound, const Sample& gmsh) {
     if (s.quads <= 0) {
       ++failed;
-      continue;
+      return false;
     }
     ++n;
-    const double ratio = s.min_sj / bounds[k].bound;
+    const double ratio = s.min_sj / bound;
     worst = std::min(worst, ratio);
+    worst_sj = std::min(worst_sj, s.min_sj);
     mean_ratio += ratio;
-    above += ratio >= 0.8;
     mean_min_sj += s.min_sj;
     irregular += s.irregular;
     quads += s.quads;
     conformal += s.conformal;
     ms.push_back(1e3 * s.seconds);
     process_ms.push_back(1e3 * s.process_seconds);
-    if (gmsh[k].quads > 0) ratios.push_back(s.process_seconds / gmsh[k].process_seconds);
+    if (gmsh.quads > 0) ratios.push_back(s.process_seconds / gmsh.process_seconds);
+    return true;
   }
-  const int d = std::max(1, n);
-  std::printf("| %s | %d/%zu | %.1f | %.4f | %.4f | %d | %.4f | %.2f | %d | %.1f | %.1f | %.2f |\n", method.c_str(), n,
-              samples.size(), quads / d, worst, mean_ratio / d, above, mean_min_sj / d, irregular / d, conformal,
-              median(ms), median(process_ms), median(ratios));
-  if (failed) std::printf("<!-- %s failed on %d faces -->\n", method.c_str(), failed);
+  int divisor() const { return std::max(1, n); }
+};
+
+// Inputs: method; samples, its runs; bounds, AutoBlock's runs (their faces' bounds); gmsh, gmsh's runs at
+// size h (the time reference).
+void print_general_row(const std::string& method, const std::vector<Sample>& samples, const std::vector<Sample>& bounds,
+                       const std::vector<Sample>& gmsh) {
+  RowTotals t;
+  int above = 0;
+  for (size_t k = 0; k < samples.size(); ++k) {
+    if (t.add(samples[k], bounds[k].bound, gmsh[k])) above += samples[k].min_sj / bounds[k].bound >= 0.8;
+  }
+  const int d = t.divisor();
+  std::printf("| %s | %d/%zu | %.1f | %.4f | %.4f | %d | %.4f | %.2f | %d | %.1f | %.1f | %.2f |\n", method.c_str(), t.n,
+              samples.size(), t.quads / d, t.worst, t.mean_ratio / d, above, t.mean_min_sj / d, t.irregular / d, t.conformal,
+              median(t.ms), median(t.process_ms), median(t.ratios));
+  if (t.failed) std::printf("<!-- %s failed on %d faces -->\n", method.c_str(), t.failed);
 }
 
 // General faces: AutoBlock's `mesh` (default policy) and gmsh, side by side.
@@ -352,21 +444,8 @@ void run_general_set(const std::string& title, const std::vector<GeneralOptions>
     }
     faces.push_back(std::move(f));
   }
-  const std::string ours = "AutoBlock `mesh` (default policy)", gmsh_h = "gmsh 4.8, size h",
-                    gmsh_matched = "gmsh 4.8, size matched to AutoBlock's count";
-  std::map<std::string, std::vector<Sample>> samples;
-  const bool tty = isatty(2);
-  for (size_t k = 0; k < faces.size(); ++k) {
-    const Sample first = cli_sample(faces[k], autoblock, folder, static_cast<int>(k));
-    samples[ours].push_back(first);
-    const double h = target_size_for(faces[k].face, 0.0);
-    Sample at_h = gmsh_sample(faces[k], folder, static_cast<int>(k), h);
-    at_h.bound = first.bound;
-    samples[gmsh_h].push_back(at_h);
-    samples[gmsh_matched].push_back(gmsh_matched_sample(faces[k], folder, static_cast<int>(k), h, at_h, first.quads));
-    if (tty) std::fprintf(stderr, "\r%s: %zu/%zu", title.c_str(), k + 1, faces.size());
-  }
-  if (tty) std::fprintf(stderr, "\n");
+  const std::string ours = kOurs, gmsh_h = kGmshH, gmsh_matched = kGmshMatched;
+  std::map<std::string, std::vector<Sample>> samples = sample_faces(title, faces, autoblock, folder);
   std::printf("\n### %s (%d faces)\n\n", title.c_str(), count);
   std::printf("| method | meshed | mean quads | worst min SJ / bound | mean min SJ / bound | faces >= 0.8 of the bound | "
               "mean min SJ | mean irregular interior vertices | conformal | median ms in process | median ms, whole "
@@ -375,6 +454,106 @@ void run_general_set(const std::string& title, const std::vector<GeneralOptions>
   // Every row divides by the face's bound (AutoBlock's report gives it) and by gmsh's time at size h.
   for (const std::string& method : {ours, gmsh_h, gmsh_matched}) {
     print_general_row(method, samples[method], samples[ours], samples[gmsh_h]);
+  }
+}
+
+// Faces with arcs: one row per method. Inputs: samples, its runs; ours, AutoBlock's (the bound and the
+// SJ compared against); gmsh_h, gmsh's at size h (the time reference).
+void print_arc_row(const std::string& method, const std::vector<Sample>& samples, const std::vector<Sample>& ours,
+                   const std::vector<Sample>& gmsh_h, bool is_ours) {
+  RowTotals t;
+  double worst_off = 0, worst_off_circles = 0;
+  int own = 0, off_faces = 0, above = 0;
+  for (size_t k = 0; k < samples.size(); ++k) {
+    const Sample& s = samples[k];
+    if (!t.add(s, ours[k].bound, gmsh_h[k])) continue;
+    own += s.own_conformal && s.own_gap != 0.0;
+    off_faces += s.judged.nodes_off > 0;
+    worst_off = std::max(worst_off, s.off_relative);
+    worst_off_circles = std::max(worst_off_circles, s.off_circles_relative);
+    // AutoBlock's minimum at least this method's on the face (both meshed; AutoBlock failing counts as below).
+    if (!is_ours) above += ours[k].quads > 0 && ours[k].min_sj >= s.min_sj;
+  }
+  const int d = t.divisor();
+  const std::string own_column = is_ours ? std::to_string(own) : "-";
+  const std::string above_column = is_ours ? "-" : std::to_string(above) + "/" + std::to_string(samples.size());
+  std::printf("| %s | %d/%zu | %d | %s | %d (%.1e; on circles %.1e) | %.1f | %.4f | %.4f | %.4f | %.4f | %s | %.2f | %.1f | %.2f |\n", method.c_str(),
+              t.n, samples.size(), t.conformal, own_column.c_str(), off_faces, worst_off, worst_off_circles, t.quads / d, t.mean_min_sj / d,
+              t.mean_ratio / d, t.worst_sj, t.worst, above_column.c_str(), t.irregular / d, median(t.process_ms), median(t.ratios));
+  if (t.failed) std::printf("<!-- %s failed on %d faces -->\n", method.c_str(), t.failed);
+}
+
+// Faces with circular arcs (issue 13's benchmark): AutoBlock's `mesh` against gmsh, judged alike.
+void run_arc_set(int count, std::uint64_t seed, const std::string& autoblock, const std::string& folder) {
+  std::mt19937_64 rng(seed);
+  keep_tag = "arcs-seed" + std::to_string(seed);
+  if (!keep_folder.empty()) std::filesystem::create_directories(keep_folder);
+  std::vector<Face> faces;
+  std::vector<ArcFace> made;
+  for (int k = 0; k < count; ++k) {
+    made.push_back(generate_arc_face(rng, ArcOptions{}));
+    Face f;
+    f.face = input_face_from_occt(made.back().face, made.back().name);
+    f.brep = folder + "/face" + std::to_string(k) + ".brep";
+    write_shape_file(f.brep, f.face.model);
+    f.arcs = true;
+    f.judge_tolerance = 1e-6 * f.face.region.bbox().longer_side();
+    faces.push_back(std::move(f));
+  }
+  const std::string ours = kOurs, gmsh_h = kGmshH, gmsh_matched = kGmshMatched;
+  std::map<std::string, std::vector<Sample>> samples = sample_faces("faces with arcs", faces, autoblock, folder);
+  int with_holes = 0;
+  std::map<std::string, int> kinds;
+  for (const ArcFace& f : made) {
+    with_holes += f.holes > 0;
+    ++kinds[arc_kind_name(f.kind)];
+  }
+  std::printf("\n### Faces with circular arcs, seed %llu (%d faces, %d with holes:", static_cast<unsigned long long>(seed), count,
+              with_holes);
+  for (const auto& [kind, n] : kinds) std::printf(" %s %d", kind.c_str(), n);
+  std::printf(")\n\n");
+  std::printf("| method | meshed | conformal (true face) | conformal (own check, gap != 0) | faces with a boundary node off "
+              "the boundary (farthest / face size; of the nodes nearest a circle) | mean quads | mean min SJ | mean min SJ / bound | worst min SJ | worst min SJ / bound | faces "
+              "where AutoBlock's min SJ >= this | mean irregular interior vertices | median ms, whole process | median "
+              "whole-process time / gmsh's at size h |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (const std::string& method : {ours, gmsh_h, gmsh_matched}) {
+    print_arc_row(method, samples[method], samples[ours], samples[gmsh_h], method == ours);
+  }
+  // Per kind, and the faces to look at.
+  std::printf("\n| kind | faces | AutoBlock mean min SJ / bound | gmsh (matched) mean min SJ / bound | AutoBlock >= gmsh "
+              "(h and matched) | AutoBlock mean irregular | gmsh (matched) mean irregular |\n|---|---:|---:|---:|---:|---:|---:|\n");
+  for (const auto& [kind, n] : kinds) {
+    double ab = 0, gm = 0, abi = 0, gmi = 0;
+    int m = 0, above = 0;
+    for (size_t k = 0; k < made.size(); ++k) {
+      const Sample &a = samples[ours][k], &g = samples[gmsh_matched][k], &gh = samples[gmsh_h][k];
+      if (arc_kind_name(made[k].kind) != kind || a.quads <= 0) continue;
+      ++m;
+      ab += a.min_sj / a.bound;
+      gm += g.min_sj / a.bound;
+      abi += a.irregular;
+      gmi += g.irregular;
+      above += a.min_sj >= g.min_sj && a.min_sj >= gh.min_sj;
+    }
+    const int d = std::max(1, m);
+    std::printf("| %s | %d | %.4f | %.4f | %d/%d | %.2f | %.2f |\n", kind.c_str(), n, ab / d, gm / d, above, m, abi / d, gmi / d);
+  }
+  std::vector<size_t> order(made.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  auto score = [&](size_t k) { return samples[ours][k].quads > 0 ? samples[ours][k].min_sj / samples[ours][k].bound : -1.0; };
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return score(a) < score(b); });
+  std::printf("\nWorst faces (AutoBlock's min SJ / bound), and every face where it is below gmsh's or not conformal:\n\n");
+  std::printf("| face | kind | AutoBlock blocks, quads | min SJ | bound | gmsh min SJ (h, matched) | irregular (AutoBlock, gmsh matched) | "
+              "AutoBlock conformal | problem |\n|---|---|---:|---:|---:|---:|---:|---|---|\n");
+  for (size_t i = 0; i < order.size(); ++i) {
+    const size_t k = order[i];
+    const Sample &a = samples[ours][k], &g = samples[gmsh_matched][k], &gh = samples[gmsh_h][k];
+    const bool below = a.quads > 0 && (a.min_sj < g.min_sj || a.min_sj < gh.min_sj);
+    if (i >= 10 && !below && a.conformal && a.quads > 0) continue;
+    std::printf("| %s-face%zu | %s (%s) | %d, %d | %.4f | %.4f | %.4f, %.4f | %d, %d | %s | %s |\n", keep_tag.c_str(), k,
+                arc_kind_name(made[k].kind).c_str(), made[k].name.c_str(), a.blocks, a.quads, a.min_sj, a.bound, gh.min_sj, g.min_sj,
+                a.irregular, g.irregular, a.quads <= 0 ? "failed" : a.conformal ? "yes" : "no", a.judged.problem.c_str());
   }
 }
 
@@ -398,7 +577,12 @@ int main(int argc, char** argv) {
   app.add_flag("--general", general,
                "general faces instead (edges at any angle): --small polygons of 5-12 vertices, --large of 13-40, a "
                "quarter with holes, and --chamfered chamfered unions of rectangles; AutoBlock runs as `autoblock mesh`");
-  app.add_option("--keep", keep_folder, "with --general: keep every face (.brep) and AutoBlock's report (.json) in this folder");
+  app.add_option("--keep", keep_folder, "with --general or --arcs: keep every face (.brep) and AutoBlock's report (.json) in this folder (--arcs: also both meshes, .msh; a face autoblock fails on: .brep and .error.txt)");
+  int arcs = 0;
+  app.add_option("--arcs", arcs,
+                 "faces with circular arcs instead: this many (filleted unions, plates with holes, slotted plates, rounded "
+                 "polygons, rounded plates with holes; the faces of `autoblock generate --kind arcs --seed S`); AutoBlock "
+                 "runs as `autoblock mesh`");
   app.add_option("--chamfered", chamfered_count, "with --general: chamfered unions of 2-6 rectangles (default: as many as --small)");
   CLI11_PARSE(app, argc, argv);
   try {
@@ -406,6 +590,11 @@ int main(int argc, char** argv) {
         (std::filesystem::temp_directory_path() / ("autoblock-bench-mesh-" + std::to_string(std::random_device{}()))).string();
     std::filesystem::create_directories(folder);
     set_compute_threads(1);
+    if (arcs > 0) {
+      run_arc_set(arcs, seed, (std::filesystem::path(argv[0]).parent_path() / "autoblock").string(), folder);
+      std::filesystem::remove_all(folder);
+      return 0;
+    }
     if (general) {
       const std::string autoblock = (std::filesystem::path(argv[0]).parent_path() / "autoblock").string();
       auto polygons = [](int lo, int hi) {

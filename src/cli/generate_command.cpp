@@ -1,5 +1,6 @@
 // autoblock generate --count N --seed S [--min-rects 2] [--max-rects 10] [--holes]
 //                    [--grid 0] [--min-side 2] [--max-side 12] --out DIR
+//                    [--kind rectangles|polygon|turned|chamfered|arcs] [--min-scale 0.1] [--max-scale 100]
 #include <iostream>
 #include <algorithm>
 #include <random>
@@ -9,6 +10,7 @@
 #include "cli/commands.h"
 #include "core/common/error.h"
 #include "core/common/format.h"
+#include "core/data/arc_generator.h"
 #include "core/data/shape_generator.h"
 #include "core/io/dataset.h"
 
@@ -20,6 +22,7 @@ void add_generate_command(CLI::App& app) {
     std::uint64_t seed = 0;
     GeneratorOptions options;
     GeneralOptions general;
+    ArcOptions arcs;
     std::string kind = "rectangles";
     std::string out;
   };
@@ -48,8 +51,10 @@ void add_generate_command(CLI::App& app) {
   command->add_flag("--holes", args->options.holes, "give every shape one or two holes");
   command->add_option("--kind", args->kind,
                       "rectangles (unions of axis-aligned rectangles) | polygon (random simple polygons, edges at any "
-                      "angle) | turned (unions turned by a random angle) | chamfered (unions with 45-degree chamfers)")
-      ->check(CLI::IsMember({"rectangles", "polygon", "turned", "chamfered"}))
+                      "angle) | turned (unions turned by a random angle) | chamfered (unions with 45-degree chamfers) | arcs "
+                      "(faces with circular arcs: filleted unions, plates with round holes or a slot, rounded polygons, "
+                      "rounded plates with holes)")
+      ->check(CLI::IsMember({"rectangles", "polygon", "turned", "chamfered", "arcs"}))
       ->capture_default_str();
   command->add_option("--min-vertices", args->general.min_vertices, "polygon: fewest vertices")
       ->check(CLI::Range(3, 100000))
@@ -57,9 +62,25 @@ void add_generate_command(CLI::App& app) {
   command->add_option("--max-vertices", args->general.max_vertices, "polygon: most vertices")
       ->check(CLI::Range(3, 100000))
       ->capture_default_str();
+  command->add_option("--min-scale", args->arcs.min_scale, "arcs: smallest scale (plates 6-24 by 4-14 times it, polygons of radius 10 times it)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command->add_option("--max-scale", args->arcs.max_scale, "arcs: largest scale (scales drawn log-uniformly)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   command->add_option("--out", args->out, "output folder (created when missing)")->required();
   command->callback([args] {
     std::mt19937_64 rng(args->seed);
+    if (args->kind == "arcs") {
+      if (args->arcs.min_scale > args->arcs.max_scale) throw InputError("--min-scale is above --max-scale");
+      std::vector<ArcFace> faces;
+      for (int k = 0; k < args->count; ++k) faces.push_back(generate_arc_face(rng, args->arcs));
+      const nlohmann::json generator = {{"seed", args->seed}, {"count", args->count}, {"kind", args->kind},
+                                        {"min_scale", args->arcs.min_scale}, {"max_scale", args->arcs.max_scale}};
+      write_arc_dataset(args->out, faces, generator);
+      std::cout << "wrote " << counted(static_cast<long long>(faces.size()), "shape") << " and index.json to " << args->out << "\n";
+      return;
+    }
     if (args->kind != "rectangles") {
       GeneralOptions o = args->general;
       o.kind = general_kind_by_name(args->kind);

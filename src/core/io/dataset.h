@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/data/arc_generator.h"
 #include "core/data/general_generator.h"
 #include "core/data/shape_generator.h"
 #include "core/geometry/grid_face.h"
@@ -36,5 +37,11 @@ void write_dataset(const std::string& folder, const std::vector<GeneratedShape>&
 // Outputs: as write_dataset, the index's shapes as {"file", "corners", "holes", "area"}.
 void write_general_dataset(const std::string& folder, const std::vector<GeneralShape>& shapes,
                            const nlohmann::json& generator);
+
+// Inputs:  folder; faces with circular arcs (arc_generator.h); generator.
+// Outputs: folder/shape_NNNN.brep (the faces as built, checked with BRepCheck_Analyzer) and
+//          index.json, the shapes as {"file", "kind", "name", "holes", "arcs" (circular edges),
+//          "area" (OpenCASCADE's, of the true face)}.
+void write_arc_dataset(const std::string& folder, const std::vector<ArcFace>& faces, const nlohmann::json& generator);
 
 }  // namespace autoblock

@@ -1,10 +1,13 @@
-// `autoblock generate`'s shape options: the grid and the side range, recorded in index.json.
+// `autoblock generate`'s shape options: the grid and the side range, recorded in index.json; faces with
+// arcs (--kind arcs).
 #include <catch2/catch.hpp>
 
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
 
+#include "core/geometry/occt_properties.h"
+#include "core/io/input_face.h"
 #include "support/run_command.h"
 #include "support/test_shapes.h"
 
@@ -41,4 +44,48 @@ TEST_CASE("autoblock generate refuses impossible side ranges and grids, writing 
     CHECK(test::line_count(r.err) == 1);
     CHECK_FALSE(std::filesystem::exists(folder + "/t/index.json"));
   }
+}
+
+TEST_CASE("autoblock generate --kind arcs writes faces with arcs that the reader takes, the same from a seed",
+          "[cli][arc]") {
+  const std::string folder = test::temporary_folder("cli-generate-arcs");
+  const auto r = test::run_autoblock("generate --kind arcs --count 10 --seed 12 --out '" + folder + "/a'");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json index = test::read_json(folder + "/a/index.json");
+  CHECK(index["format"] == "autoblock-dataset");
+  CHECK(index["generator"]["kind"] == "arcs");
+  CHECK(index["generator"]["seed"] == 12);
+  CHECK(index["generator"]["min_scale"] == Approx(0.1));
+  CHECK(index["generator"]["max_scale"] == Approx(100.0));
+  REQUIRE(index["shapes"].size() == 10);
+  int with_holes = 0;
+  for (const nlohmann::json& shape : index["shapes"]) {
+    const std::string file = folder + "/a/" + shape["file"].get<std::string>();
+    INFO(file << ": " << shape["name"]);
+    CHECK(shape["arcs"].get<int>() > 0);
+    with_holes += shape["holes"].get<int>() > 0;
+    const InputFace face = load_input_face(file);
+    CHECK(face.is_general());
+    CHECK(face.arcs.arcs.size() > 0);
+    CHECK(face.region.holes().size() == shape["holes"].get<size_t>());
+    CHECK(occt_area(face.model) == Approx(shape["area"].get<double>()).epsilon(1e-9));
+  }
+  CHECK(with_holes > 0);
+  CHECK(index["shapes"][0]["file"] == "shape_0000.brep");
+  // The same seed, the same faces.
+  REQUIRE(test::run_autoblock("generate --kind arcs --count 10 --seed 12 --out '" + folder + "/b'").exit_code == 0);
+  const nlohmann::json again = test::read_json(folder + "/b/index.json");
+  CHECK(again["shapes"] == index["shapes"]);
+  // A narrow scale range: faces of about that size.
+  REQUIRE(test::run_autoblock("generate --kind arcs --count 3 --seed 1 --min-scale 1000 --max-scale 1000 --out '" + folder +
+                              "/big'").exit_code == 0);
+  for (const nlohmann::json& shape : test::read_json(folder + "/big/index.json")["shapes"]) {
+    CHECK(shape["area"].get<double>() > 1e6);
+  }
+  const auto bad = test::run_autoblock("generate --kind arcs --count 2 --seed 1 --min-scale 2 --max-scale 1 --out '" + folder + "/c'");
+  CHECK(bad.exit_code == 2);
+  CHECK_THAT(bad.err, StartsWith("error: "));
+  CHECK(test::line_count(bad.err) == 1);
+  CHECK_FALSE(std::filesystem::exists(folder + "/c/index.json"));
 }
