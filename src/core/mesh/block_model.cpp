@@ -69,8 +69,11 @@ BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, do
   if (!(quantum > 0.0)) throw std::logic_error("block_model: the quantum must be positive");
   BlockModel model;
   model.parts = static_cast<int>(d.finished.size());
-  VertexIndex index(&model.vertices, 1.5 * quantum);
+  // Vertices are one within the tolerance that imprints a vertex into a side: a vertex nearer a side's
+  // end than that is not imprinted, so it must be that end (two templates' feet on their shared side
+  // 1.6 quanta apart were neither).
   const double tolerance = kModelToleranceQuanta * quantum;
+  VertexIndex index(&model.vertices, tolerance);
 
   // The pieces, their loops as vertex ids.
   std::vector<LoopPiece> pieces;

@@ -3,9 +3,8 @@
 // Every finished part becomes four-sided pieces (region/block.h: a block is one piece, a template
 // one piece per corner around its centroid). The model joins them: every piece's corners and side
 // vertices, the template midpoints and centroids, are model vertices, shared by position (within
-// 1.5 times the face's quantum, the tolerance of the general engine's lattice); a vertex of one
-// piece within kModelToleranceQuanta quanta of the side of another (a T-junction) is imprinted into
-// that side. Between consecutive
+// kModelToleranceQuanta quanta); a vertex of one piece within that distance of the side of another
+// (a T-junction) is imprinted into that side. Between consecutive
 // vertices of a piece's loop lies a model edge, a straight segment shared by the one or two pieces
 // it bounds. Each piece's four logical sides are the chains of model edges between its corners.
 // Interval assignment gives every model edge a count (edge_intervals.h); the mesh puts that many

@@ -175,15 +175,16 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   auto start = std::chrono::steady_clock::now();
   result.block_model = block_model(d, d.rules, q);
   merge_arc_chains(result.block_model, face.arcs);
-  // An edge along an arc turns at most one chord step per interval (as its chords had one interval
-  // at least each): a quad's edge along the arc stays within the band of the arc's polygon, where the
-  // conformity check finds it on the arc (FaceArcs::arc_of_chord).
+  // An edge along an arc turns at most one of the arc's chord steps per interval (as its chords had one
+  // interval at least each): a quad's edge along the arc stays within the band of the arc's polygon,
+  // where the conformity check finds it on the arc (FaceArcs::arc_of_chord).
   std::vector<int> edge_minimum(result.block_model.edges.size(), 0);
   for (size_t e = 0; e < edge_minimum.size(); ++e) {
     const ModelEdge& edge = result.block_model.edges[e];
-    if (edge.arc >= 0) {
-      edge_minimum[e] = static_cast<int>(std::ceil(std::fabs(edge.arc_sweep) / (kArcStepDegrees * M_PI / 180.0) - 1e-6));
-    }
+    if (edge.arc < 0) continue;
+    const CircularArc& arc = face.arcs.arcs[static_cast<size_t>(edge.arc)];
+    const double step = std::fabs(arc.sweep) / arc_chord_count(arc);
+    edge_minimum[e] = std::max(1, static_cast<int>(std::ceil(std::fabs(edge.arc_sweep) / step - 1e-6)));
   }
   assign_with_fixed(result, options, h, [&](const EdgeIntervals& e) {
     return fixed_edge_intervals(result.block_model, e.a, e.b, e.intervals, tolerance);
