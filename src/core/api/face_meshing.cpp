@@ -38,8 +38,11 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
       decompose.policy_settings.general_search_width = retry_with.width;
       // (The replay takes its block rules from the decomposition: no options to change for it.)
       FaceDecomposition again = decompose_input_face(face, decompose);
-      MeshResult meshed = mesh_region_decomposition(face, again.region, options);
       ++out.attempts;
+      // Another try that leaves a part unfinished (under other block rules the fallback may find no
+      // cut that makes progress on some part) is no mesh: the one kept stands.
+      if (!again.region.complete()) continue;
+      MeshResult meshed = mesh_region_decomposition(face, again.region, options);
       if (ratio(meshed) > ratio(out.result)) {
         out.decomposition = std::move(again);
         out.result = std::move(meshed);
