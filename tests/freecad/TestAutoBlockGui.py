@@ -787,6 +787,10 @@ class TestStepThroughPanel(GuiTestCase):
         screenshot("step-through-solid")
         panel.reject()
         pump()
+        # The closed panel's form is deleted by Qt; a Python wrapper of it or its labels kept past that
+        # can be handed back by PySide for a new widget at the same address (the new panel's title
+        # label came back as a plain QWidget, without setText): let them go before opening again.
+        del form, panel
         self.assertIsNone(step_through.current_panel())
         self.assertEqual(self.scene_nodes(), [])
         self.assertEqual(obj.ViewObject.SwitchNode.whichChild.getValue(), 0)
