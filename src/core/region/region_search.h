@@ -2,8 +2,8 @@
 // on parts and a time budget.
 //
 // The value of a part P is 0 for a block, else the best over its `width` most rewarding candidates
-// (region_candidates.h: cuts that make progress, and the template) and over its templates (which
-// finish the part: their reward is their value) of
+// (region_candidates.h: cuts that make progress, and the template) and its O-grid (which finishes a
+// part with a hole: its reward is its value) of
 //   reward(action) + sum over the pieces it leaves of value(piece).
 // Progress makes the recursion finite; parts are canonical values (region.h), so a part reached by
 // two orders of cuts is solved once. When the time budget runs out, parts not yet solved are finished
