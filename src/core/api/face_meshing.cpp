@@ -1,6 +1,7 @@
 #include "core/api/face_meshing.h"
 
 #include <chrono>
+#include <exception>
 
 #include "core/common/error.h"
 #include "core/mesh/mesh_picture.h"
@@ -24,15 +25,27 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
     options.occt_model = false;
     options.general.max_steps = settings.max_steps;
     options.general.reward = out.decomposition.region.reward;
-    out.result = mesh_region_decomposition(face, out.decomposition.region, options);
+    const bool searched = out.decomposition.region.policy == "search";
+    // The search's first mesh failing for a reason of ours (blocks that admit no interval counts, say)
+    // is not the end: the other tries below may mesh the face; if none does, that error is the answer.
+    std::exception_ptr first_error;
+    bool meshed_once = true;
+    try {
+      out.result = mesh_region_decomposition(face, out.decomposition.region, options);
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::exception&) {
+      if (!searched) throw;
+      first_error = std::current_exception();
+      meshed_once = false;
+    }
     // A poor mesh from the search: other block rules may do better (a face whose good blocks need
     // corners just outside the rules, or whose rules forbid the cut that matters).
     auto ratio = [](const MeshResult& r) {
       return r.conformity.conformal ? r.quality.min_scaled_jacobian / r.bound : -1e300;
     };
-    const bool searched = out.decomposition.region.policy == "search";
     for (const SearchRetry& retry_with : kSearchRetries) {
-      if (!searched || ratio(out.result) >= kRetryBelow) break;
+      if (!searched || (meshed_once && ratio(out.result) >= kRetryBelow)) break;
       const double fraction = retry_with.corner_fraction;
       decompose.corner_fraction = fraction;
       decompose.policy_settings.general_search_width = retry_with.width;
@@ -42,8 +55,16 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
       // Another try that leaves a part unfinished (under other block rules the fallback may find no
       // cut that makes progress on some part) is no mesh: the one kept stands.
       if (!again.region.complete()) continue;
-      MeshResult meshed = mesh_region_decomposition(face, again.region, options);
-      if (ratio(meshed) > ratio(out.result)) {
+      MeshResult meshed;
+      try {
+        meshed = mesh_region_decomposition(face, again.region, options);
+      } catch (const InputError&) {
+        throw;
+      } catch (const std::exception&) {
+        continue;  // this try's blocks failed to mesh: the mesh kept stands
+      }
+      if (!meshed_once || ratio(meshed) > ratio(out.result)) {
+        meshed_once = true;
         out.decomposition = std::move(again);
         out.result = std::move(meshed);
         out.corner_fraction = fraction;
@@ -54,6 +75,7 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
     // block one element across, meshed corner to corner through its side vertices, is what holds the
     // minimum down then; more elements there lift it). Skipped when the user's counts or the quad
     // limit forbid it.
+    if (!meshed_once) std::rethrow_exception(first_error);
     if (searched && ratio(out.result) < kRetryBelow && options.min_edge_intervals < 2) {
       MeshOptions finer = options;
       finer.min_edge_intervals = 2;
@@ -64,8 +86,8 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
           out.result = std::move(meshed);
           out.min_edge_intervals = 2;
         }
-      } catch (const InputError&) {
-        // infeasible with the fixed counts or too many quads: the mesh stays as it is
+      } catch (const std::exception&) {
+        // infeasible with the fixed counts, too many quads, or no counts at all: the mesh stays as it is
       }
     }
     if (occt_model) {

@@ -39,6 +39,9 @@ struct FaceMeshing {
 //          the best minimum scaled Jacobian is kept; if still below, the kept blocks are meshed again
 //          with at least two intervals per model edge, kept if better (attempts, search_width,
 //          corner_fraction and min_edge_intervals say what was kept); each search has the time limit.
+//          A searched face whose blocks fail to mesh (no interval counts for them, say: a rare web of
+//          templates whose sides' counts contradict) goes on to the other tries the same way; a try
+//          that fails is skipped; the first failure is thrown when every try fails.
 //          A general face's OpenCASCADE model (options.occt_model) is made of the kept blocks only.
 // Throws InputError for a bad policy, reward or request (see decompose_input_face, mesh_decomposition).
 constexpr double kRetryBelow = 0.85;

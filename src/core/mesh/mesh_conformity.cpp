@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <vector>
 
 #include "core/common/format.h"
@@ -58,7 +59,11 @@ Conformity check_conformity(const QuadMesh& mesh, const std::vector<Ring>& loops
     for (size_t k = 0; k < 4; ++k) twice += p[k].x * p[(k + 1) % 4].y - p[(k + 1) % 4].x * p[k].y;
     c.quad_area += 0.5 * twice;
     // Inverted: a corner whose edges turn clockwise or run straight (a Jacobian <= 0 there), or no area.
-    c.inverted_quads += twice <= 0 || quad_scaled_jacobian(p) <= 0.0;
+    if (twice <= 0 || quad_scaled_jacobian(p) <= 0.0) {
+      if (c.inverted_quads++ == 0) {
+        c.first_inverted = Point2{0.25 * (p[0].x + p[1].x + p[2].x + p[3].x), 0.25 * (p[0].y + p[1].y + p[2].y + p[3].y)};
+      }
+    }
   }
   for (const MeshEdge& e : mesh_edges(mesh)) {
     if (e.uses == 2) {
@@ -92,7 +97,12 @@ Conformity check_conformity(const QuadMesh& mesh, const std::vector<Ring>& loops
   else if (c.overused_edges) c.problem = counted(c.overused_edges, "edge") + (c.overused_edges == 1 ? " is" : " are") + " used by more than two quads";
   else if (c.stray_boundary_edges) c.problem = counted(c.stray_boundary_edges, "edge") + " inside the face " + (c.stray_boundary_edges == 1 ? "belongs" : "belong") + " to one quad only (hanging nodes or unshared edges)";
   else if (c.misoriented_edges) c.problem = counted(c.misoriented_edges, "interior edge") + (c.misoriented_edges == 1 ? " is" : " are") + " run the same way by both their quads (inconsistent orientation)";
-  else if (c.inverted_quads) c.problem = counted(c.inverted_quads, "quad") + (c.inverted_quads == 1 ? " is" : " are") + " inverted or degenerate";
+  else if (c.inverted_quads) {
+    std::ostringstream at;
+    at.precision(6);
+    at << " (the first near " << c.first_inverted.x << ", " << c.first_inverted.y << ")";
+    c.problem = counted(c.inverted_quads, "quad") + (c.inverted_quads == 1 ? " is" : " are") + " inverted or degenerate" + at.str();
+  }
   else if (std::fabs(c.quad_area + c.curved_gap_area - c.face_area) > area_tolerance) c.problem = "the quads' area differs from the face's";
   else if (std::fabs(c.boundary_length - c.face_perimeter) > length_tolerance) c.problem = "the mesh boundary does not cover the face's boundary";
   c.conformal = c.problem.empty();

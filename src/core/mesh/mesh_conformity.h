@@ -25,6 +25,7 @@ struct Conformity {
   int stray_boundary_edges = 0;  // used by one quad but not on the face's boundary
   int misoriented_edges = 0;     // used by two quads running it the same way
   int inverted_quads = 0;        // a corner with a Jacobian <= 0 (reflex or degenerate), or area <= 0
+  Point2 first_inverted;         // the centre of the first inverted quad (named in the problem)
   double quad_area = 0.0, face_area = 0.0;
   // A face with arcs: the area between the mesh's boundary edges on arcs (chords) and the arcs; the
   // quads' area plus this is the face's. It shrinks as the element size does (about h^2 / r per edge).

@@ -105,12 +105,13 @@ VertexShape vertex_shape(const Ring& ring, size_t i, const BlockRules& rules) {
 
 namespace {
 
-// Inputs: ring; corners, its four corners (counter-clockwise). Output: true when the Coons patch of
-//         its four sides (each a polyline parametrised by length) folds: some cell of an 8 x 8 grid
-//         of it is not counter-clockwise at every corner. A block whose sides bend much (arcs,
-//         circular_arc.h: a convex fillet facing a hole's concave arc) can fold so; its mapped mesh
-//         would have inverted quads.
-bool coons_patch_folds(const Ring& ring, const std::array<int, 4>& corners) {
+// Inputs: ring; corners, its four corners (counter-clockwise). Output: the least scaled Jacobian at
+//         the corners of the cells of an 8 x 8 grid of the Coons patch of its four sides (each a
+//         polyline parametrised by length); <= 0 where the patch folds. A block whose sides bend much
+//         (arcs, circular_arc.h: a convex fillet facing a hole's concave arc, a rounded corner in the
+//         middle of a side facing a straight one) can fold or squeeze its cells so; its mapped mesh
+//         would have inverted or flattened quads.
+double coons_patch_jacobian(const Ring& ring, const std::array<int, 4>& corners) {
   const size_t n = ring.size();
   // Side k's points from corner k to corner k + 1, and their lengths along it.
   std::array<std::vector<Point2>, 4> sides;
@@ -146,16 +147,20 @@ bool coons_patch_folds(const Ring& ring, const std::array<int, 4>& corners) {
                      ((1 - u) * (1 - v) * c0.y + u * (1 - v) * c1.y + u * v * c2.y + (1 - u) * v * c3.y)};
     }
   }
+  double least = 1.0;
   for (size_t i = 0; i < m; ++i) {
     for (size_t j = 0; j < m; ++j) {
       const std::array<Point2, 4> q{grid[i][j], grid[i + 1][j], grid[i + 1][j + 1], grid[i][j + 1]};
       for (size_t k = 0; k < 4; ++k) {
         const Point2 v = q[k], next = q[(k + 1) % 4], prev = q[(k + 3) % 4];
-        if ((next.x - v.x) * (prev.y - v.y) - (next.y - v.y) * (prev.x - v.x) <= 0.0) return true;
+        const double ax = next.x - v.x, ay = next.y - v.y, bx = prev.x - v.x, by = prev.y - v.y;
+        const double cross = ax * by - ay * bx, length = std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by));
+        if (!(cross > 0.0) || !(length > 0.0)) return 0.0;
+        least = std::min(least, cross / length);
       }
     }
   }
-  return false;
+  return least;
 }
 
 // Inputs: ring. Output: the sum over its vertices of the absolute turn, in radians, at those within
@@ -168,8 +173,11 @@ double side_bending(const Ring& ring, const BlockRules& rules) {
   return bending;
 }
 
-// Blocks whose sides bend more than this in total are checked for folds (coons_patch_folds).
+// Blocks whose sides bend more than this in total are checked for folds and squeezed cells
+// (coons_patch_jacobian): the least scaled Jacobian of the patch's cells must be at least this
+// fraction of the sine of the rules' least corner.
 constexpr double kCheckedBendingDegrees = 30.0;
+constexpr double kPatchJacobianFraction = 0.5;
 
 }  // namespace
 
@@ -178,13 +186,25 @@ std::optional<std::array<int, 4>> block_corners(const Region& region, const Bloc
   const Ring& ring = region.outer();
   std::array<int, 4> corners{};
   int count = 0;
+  bool concave_side = false;
   // Four corners first (side vertices by cross and dot products), then their angles.
   for (size_t i = 0; i < ring.size(); ++i) {
-    if (is_side_vertex(ring, i, rules)) continue;
+    const VertexShape shape = vertex_shape(ring, i, rules);
+    if (shape.side) {
+      concave_side = concave_side || shape.reflex;
+      continue;
+    }
     if (count == 4) return std::nullopt;
     corners[static_cast<size_t>(count++)] = static_cast<int>(i);
   }
   if (count != 4) return std::nullopt;
+  // A concave arc with an open end acts as a reflex corner (a step in a side, a fillet in the middle of
+  // one: concave_runs). (A closed one may be a whole side: half a hole, cut through its middle.)
+  if (concave_side) {
+    for (const ConcaveRun& run : concave_runs(ring, rules)) {
+      if (run.open_before || run.open_after) return std::nullopt;
+    }
+  }
   // Each corner's angle t within [min, max] by its cosine (t in (0, pi] once not reflex, where the
   // cosine decreases): no trigonometry per corner.
   const double cos_min = std::cos(rules.min_corner_degrees * kDegree), cos_max = std::cos(rules.max_corner_degrees * kDegree);
@@ -198,8 +218,10 @@ std::optional<std::array<int, 4>> block_corners(const Region& region, const Bloc
     const double length = std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by));
     if (dot > cos_min * length || dot < cos_max * length) return std::nullopt;
   }
-  // Straight sides (a few side vertices from rounding or T-junctions) cannot fold; bent ones can.
-  if (n > 6 && side_bending(ring, rules) > kCheckedBendingDegrees * kDegree && coons_patch_folds(ring, corners)) {
+  // Straight sides (a few side vertices from rounding or T-junctions) cannot fold; bent ones can, or
+  // squeeze the patch's cells: no cell corner may be much below the rules' least corner.
+  if (n > 6 && side_bending(ring, rules) > kCheckedBendingDegrees * kDegree &&
+      coons_patch_jacobian(ring, corners) < kPatchJacobianFraction * std::sin(rules.min_corner_degrees * kDegree)) {
     return std::nullopt;
   }
   return corners;
@@ -215,6 +237,84 @@ CornerAngle piece_corner_angle(const QuadPiece& piece, int k) {
   return {(ax * by - ay * bx) / length, (ax * bx + ay * by) / length};
 }
 
+std::vector<ConcaveRun> concave_runs(const Ring& ring, const BlockRules& rules) {
+  const size_t n = ring.size();
+  std::vector<VertexShape> shape(n);
+  size_t start = n;  // a vertex outside every run
+  for (size_t i = 0; i < n; ++i) {
+    shape[i] = vertex_shape(ring, i, rules);
+    if (!(shape[i].side && shape[i].reflex) && start == n) start = i;
+  }
+  std::vector<ConcaveRun> runs;
+  if (start == n) return runs;
+  auto concave = [&](size_t i) { return shape[i].side && shape[i].reflex; };
+  auto length = [&](size_t i, size_t j) { return std::hypot(ring[j].x - ring[i].x, ring[j].y - ring[i].y); };
+  // Whether the boundary runs on smoothly for more than `reach` from vertex `from`, stepping by
+  // `step` (+1 or n - 1), before a corner.
+  auto open_end = [&](size_t from, size_t step, double reach) {
+    double along = 0.0;
+    for (size_t i = from, k = 0; k < n; ++k) {
+      const size_t j = (i + step) % n;
+      along += length(i, j);
+      if (along > reach) return true;
+      if (!shape[j].side) return false;
+      i = j;
+    }
+    return true;
+  };
+  for (size_t k = 1; k <= n; ++k) {
+    const size_t first = (start + k) % n;
+    if (!concave(first) || concave((first + n - 1) % n)) continue;
+    ConcaveRun run;
+    run.first = first;
+    double chord = 0.0;
+    size_t last = first;
+    run.turn = interior_angle(ring, first) - M_PI;
+    while (concave((last + 1) % n)) {
+      chord = std::max(chord, length(last, (last + 1) % n));
+      last = (last + 1) % n;
+      run.turn += interior_angle(ring, last) - M_PI;
+    }
+    run.last = last;
+    if (!(run.turn > rules.flat_tolerance_degrees * kDegree)) continue;
+    run.open_before = open_end(first, n - 1, 1.5 * chord);
+    run.open_after = open_end(last, 1, 1.5 * chord);
+    runs.push_back(run);
+  }
+  return runs;
+}
+
+namespace {
+
+// Inputs: a, b, c, d. Output: true when the segments a-b and c-d cross or touch.
+bool segments_meet(Point2 a, Point2 b, Point2 c, Point2 d) {
+  auto orient = [](Point2 p, Point2 q, Point2 r) { return (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x); };
+  const double d1 = orient(c, d, a), d2 = orient(c, d, b), d3 = orient(a, b, c), d4 = orient(a, b, d);
+  return ((d1 > 0) != (d2 > 0) || d1 == 0 || d2 == 0) && ((d3 > 0) != (d4 > 0) || d3 == 0 || d4 == 0);
+}
+
+// Inputs: region, without holes; pieces, its usual template's. Output: true when the spokes (a
+//         piece's corners 1-2-3: foot, centre, foot) keep clear of the boundary but at their feet, and
+//         every piece turns counter-clockwise: a concave run can bulge over the centre of the polygon
+//         of corners.
+bool template_spokes_clear(const Region& region, const std::vector<QuadPiece>& pieces) {
+  const Ring& ring = region.outer();
+  const size_t n = ring.size();
+  for (const QuadPiece& piece : pieces) {
+    if (signed_area(piece.ring) <= 0.0) return false;
+    const Point2 centre = piece.ring[static_cast<size_t>(piece.corners[2])];
+    const Point2 foot = piece.ring[static_cast<size_t>(piece.corners[1])];
+    // The spoke from the centre to within a hundredth of its length of the foot.
+    const Point2 near{foot.x + 0.01 * (centre.x - foot.x), foot.y + 0.01 * (centre.y - foot.y)};
+    for (size_t i = 0; i < n; ++i) {
+      if (segments_meet(centre, near, ring[i], ring[(i + 1) % n])) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 bool template_applies(const Region& region) {
   if (region.is_convex()) return true;
   if (region.is_empty()) return false;
@@ -222,7 +322,8 @@ bool template_applies(const Region& region) {
   // Convex but for side vertices turned a little the other way (within the flat tolerance; rounding
   // to the lattice makes them): they lie on the template's sides, as on a block's. Together they may
   // turn inwards by no more than the flat tolerance: a concave arc (circular_arc.h) is a chain of such
-  // vertices, and a part with one is far from convex.
+  // vertices, and a part with one is far from convex, unless the arc is one whole side (a concave run
+  // closed at both ends) of at most kClosedRunLimit, and the template's spokes keep clear of it.
   const Ring& ring = region.outer();
   const size_t n = ring.size();
   const BlockRules rules;
@@ -232,7 +333,11 @@ bool template_applies(const Region& region) {
     if (!is_side_vertex(ring, i, rules)) return false;
     inwards += interior_angle(ring, i) - M_PI;
   }
-  return inwards <= rules.flat_tolerance_degrees * M_PI / 180.0;
+  if (inwards <= rules.flat_tolerance_degrees * kDegree) return true;
+  const std::vector<ConcaveRun> runs = concave_runs(ring, rules);
+  if (runs.size() != 1 || runs[0].open_before || runs[0].open_after || runs[0].turn > kClosedRunLimit) return false;
+  if (inwards > runs[0].turn + rules.flat_tolerance_degrees * kDegree) return false;
+  return template_spokes_clear(region, template_pieces(region, rules));
 }
 
 namespace {

@@ -2,10 +2,11 @@
 //
 // A vertex whose interior angle lies within `flat_tolerance` of 180 degrees is a side vertex (a
 // block's side may bend there, as at a T-junction); every other vertex is a corner. A *block* is a
-// part without holes, with no reflex vertex, and with exactly four corners whose angles lie in
-// [min_corner, max_corner], and, when its sides bend (more than 30 degrees in all: arcs), whose
-// Coons patch does not fold (a convex side facing a deep concave one). A rectangle is a block under
-// any rules. A convex part that is not a
+// part without holes, with no reflex vertex nor concave arc with an open end (concave_runs), and with
+// exactly four corners whose angles lie in [min_corner, max_corner], and, when its sides bend (more
+// than 30 degrees in all: arcs), whose Coons patch neither folds (a convex side facing a deep concave
+// one) nor squeezes its cells below half the sine of min_corner (a rounded corner in a side facing a
+// straight one). A rectangle is a block under any rules. A convex part that is not a
 // block (a triangle, a pentagon, a quadrilateral with a corner out of range) may be finished with
 // the *template*: its n corners, a centre point (the centre of the largest circle inside the
 // polygon of its corners) and, on each side, the foot of the perpendicular from the centre (kept
@@ -17,6 +18,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -43,6 +45,25 @@ struct VertexShape {
 };
 VertexShape vertex_shape(const Ring& ring, size_t i, const BlockRules& rules = {});
 
+// A concave run of a loop: consecutive reflex side vertices that turn inwards by more than the flat
+// tolerance in all (a concave arc, circular_arc.h: a reflex fillet, or a hole's rounded corner once a
+// cut has opened the hole). Each end of it is *open* where the boundary runs on smoothly from it (side
+// vertices only) for more than 1.5 of the run's longest chord before the next corner: a fillet's
+// tangent join with its edge, which acts as a reflex corner; *closed* where a corner follows at once
+// (a cut square to the arc there), which a block's or a template's side may end at.
+struct ConcaveRun {
+  size_t first = 0, last = 0;  // the run's first and last vertex (the ring's order, cyclically)
+  double turn = 0.0;           // radians, > the flat tolerance
+  bool open_before = false, open_after = false;
+};
+// Inputs: ring, a loop of a region; rules. Output: its concave runs, in the ring's order (none on a
+//         loop of side vertices only: a round hole).
+std::vector<ConcaveRun> concave_runs(const Ring& ring, const BlockRules& rules = {});
+
+// A concave run of more than this (radians) counts as a reflex corner even when both its ends are
+// closed (region_candidates.h): no block side, nor a template side, takes it whole.
+constexpr double kClosedRunLimit = 100.0 * M_PI / 180.0;
+
 // Inputs:  region; rules.
 // Outputs: the indices (into region.outer(), counter-clockwise) of the block's four corners, or
 //          nothing when the region is not a block.
@@ -53,8 +74,11 @@ inline bool is_block(const Region& region, const BlockRules& rules = {}) {
 }
 
 // Inputs:  region. Output: true when the template can finish it: no holes, convex but for side
-//          vertices (within the default flat tolerance) that turn slightly inwards; or one round hole
-//          that the O-grid template takes (ogrid_template).
+//          vertices (within the default flat tolerance) that turn slightly inwards, or but for one
+//          concave run closed at both ends that turns by at most kClosedRunLimit (the corner piece of
+//          a reflex fillet, cut square to the arc at its ends: five corners and the arc around a
+//          five-valent centre) where the template's centre and spokes keep clear of the arc; or one
+//          round hole that the O-grid template takes (ogrid_template).
 bool template_applies(const Region& region);
 
 // A smooth part (fewer than three corners: a disk, a rounded rectangle, a D-shape; arcs reach the

@@ -101,6 +101,11 @@ Complexity part_complexity(const Region& part, const BlockRules& rules) {
       if (shape.reflex) ++c.reflex;
       ++c.corners;
     }
+    // A concave arc's open ends act as reflex corners (a fillet: two), and so does a long one.
+    for (const ConcaveRun& run : concave_runs(ring, rules)) {
+      c.reflex += static_cast<int>(run.open_before) + static_cast<int>(run.open_after);
+      if (!run.open_before && !run.open_after && run.turn > kClosedRunLimit) ++c.reflex;
+    }
   }
   return c;
 }
@@ -208,8 +213,32 @@ RegionAction progress_action(const Region& part, const BlockRules& rules) {
   const Ring& ring = part.outer();
   const size_t m = ring.size();
   if (part.holes().empty()) {
+    // At a concave arc's open end, the cut square to the boundary (it closes that end); across a
+    // long closed one, the cut square to it at its middle vertex.
+    for (const ConcaveRun& run : concave_runs(ring, rules)) {
+      if (run.open_before) {
+        const Point2 p = ring[(run.first + m - 1) % m], v = ring[run.first];
+        tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {-(v.y - p.y), v.x - p.x}}});
+      }
+      if (run.open_after) {
+        const Point2 v = ring[run.last], n = ring[(run.last + 1) % m];
+        tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {-(n.y - v.y), n.x - v.x}}});
+      }
+      if (!run.open_before && !run.open_after && run.turn > kClosedRunLimit) {
+        const size_t count = (run.last + m - run.first) % m + 1, i = (run.first + count / 2) % m;
+        const Point2 p = ring[(i + m - 1) % m], n = ring[(i + 1) % m];
+        tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, ring[i], {-(n.y - p.y), n.x - p.x}}});
+      }
+    }
     for (size_t i = 0; i < m; ++i) {
-      if (!is_reflex_vertex(ring, i)) continue;
+      if (!is_reflex_vertex(ring, i) || is_side_vertex(ring, i, rules)) continue;
+      const Point2 p = ring[(i + m - 1) % m], v = ring[i], n = ring[(i + 1) % m];
+      tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - p.x, v.y - p.y}}});
+      tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - n.x, v.y - n.y}}});
+    }
+    // The reflex side vertices last (rounding's, and a concave arc's samples: their cuts run along it).
+    for (size_t i = 0; i < m; ++i) {
+      if (!is_reflex_vertex(ring, i) || !is_side_vertex(ring, i, rules)) continue;
       const Point2 p = ring[(i + m - 1) % m], v = ring[i], n = ring[(i + 1) % m];
       tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - p.x, v.y - p.y}}});
       tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - n.x, v.y - n.y}}});

@@ -15,12 +15,15 @@
 // At the vertices of a smooth hole (every vertex a side vertex: a circle, a slot, circular_arc.h) only
 // the bisector (square to the hole), the others running nearly along it.
 // Duplicate directions (parallel within 1e-9 rad) are listed once. On a convex part that is not a
-// block, or on a part with one round hole that the O-grid takes (block.h), finishing it with the
-// template is a candidate too. Every candidate a policy picks
-// from here is a real number angle; a learned policy may choose any other.
+// block, on a part with one round hole that the O-grid takes, or on a reflex fillet's corner piece
+// (block.h: template_applies), finishing it with the template is a candidate too. Every candidate a
+// policy picks from here is a real number angle; a learned policy may choose any other.
 //
 // Progress: the complexity of a part is (holes, reflex vertices, corners), compared
-// lexicographically (corners as in block.h: vertices that are not side vertices). A cut makes
+// lexicographically (corners as in block.h: vertices that are not side vertices). A concave arc's
+// open ends count as reflex vertices (a reflex fillet: two; block.h, concave_runs), and so does a
+// concave arc closed at both ends that turns by more than kClosedRunLimit: the cuts square to the arc
+// at its ends make progress, those along its chords (a fan of slivers) do not. A cut makes
 // progress when every piece it leaves is less complex than the part, or is a block. The
 // non-learned policies choose only cuts that make progress (and the template): every sequence of
 // such actions ends, so no policy can cut a triangle into a triangle and a quadrilateral forever.
@@ -51,7 +54,8 @@ bool makes_progress(const Complexity& part, const std::vector<Region>& pieces, c
 // Inputs:  part, not finished (not a block under rules).
 // Outputs: an action that makes progress towards blocks, for policies that must finish: while the
 //          part has holes, a full cut through a hole's vertex along the bisector of its angle (it
-//          opens the hole); else a partial cut along an edge's extension from a reflex vertex (it
+//          opens the hole); else a partial cut square to the boundary at a concave arc's open end (or
+//          at a long closed one's middle), or along an edge's extension from a reflex vertex (it
 //          removes the reflex vertex); else, on a convex part with five or more corners, a partial
 //          cut between two opposite corners; else the template. Each is tried in turn (vertex by
 //          vertex) until one makes progress; if none does, the same cuts forced (RegionCut::forced:

@@ -171,6 +171,11 @@ double region_template_reward(RewardPreset preset, const Region& part, double fa
     // The shape term for the corners the template creates (at its feet and its centre) and for the
     // part's corners it keeps whole that a block could not have (above the rules' largest corner;
     // the part's other corners were paid for by the cuts that made them, or are the face's).
+    // On a part with a concave arc (the corner piece of a reflex fillet, block.h) the template's centre
+    // is the five-valent vertex the part needs; the arc takes some of the turn around it (45 degrees
+    // beside a quarter arc), which smoothing gives back, as at an O-grid's box corners: its best is
+    // sin 72 degrees.
+    const bool five_valent = quads.size() == 5 && !part.is_convex();
     double j_new = 1.0;
     for (const auto& q : quads) {
       const Point2 corner = q[0], next = q[1], prev = q[3];
@@ -181,7 +186,8 @@ double region_template_reward(RewardPreset preset, const Region& part, double fa
         const Point2 v = q[k], next = q[(k + 1) % 4], prev = q[(k + 3) % 4];
         const double ax = next.x - v.x, ay = next.y - v.y, bx = prev.x - v.x, by = prev.y - v.y;
         const double length = std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by));
-        j_new = std::min(j_new, length > 0.0 ? (ax * by - ay * bx) / length : -1.0);
+        const double j = length > 0.0 ? (ax * by - ay * bx) / length : -1.0;
+        j_new = std::min(j_new, five_valent && k == 2 && j > 0.0 ? std::sin(0.4 * M_PI) : j);
       }
     }
     return -static_cast<double>(quads.size() - 1) - kTemplatePenalty - kMeshShapeWeight * (1.0 - j_new);

@@ -152,11 +152,11 @@ TEST_CASE("arc faces: the gap between the quads and the arcs shrinks with the el
 namespace {
 
 // The generated faces of the property test below (seed 20261201, scales 37 and 1 in turn) that the
-// greedy decomposition and mesh do not handle yet: filleted union 22 gets inverted quads (slivers at
-// its reflex fillets), rounded plate 56 "an edge of part 42 is used by more than two pieces"
-// (block_model). They run in their own test, expected to fail until core/region and core/mesh handle
-// them; then they move back. (36 and 37 moved back with the O-grid and the arcs' merged edges.)
-const std::vector<int> kArcFacesFailingToday{22, 56};
+// greedy decomposition and mesh do not handle yet: rounded plate 56 "an edge of part 42 is used by
+// more than two pieces" (block_model). It runs in its own test, expected to fail until core/region and
+// core/mesh handle it; then it moves back. (36 and 37 moved back with the O-grid and the arcs' merged
+// edges; filleted union 22, whose reflex fillets left slivers, with the concave runs of block.h.)
+const std::vector<int> kArcFacesFailingToday{56};
 
 // Inputs: check, the faces to mesh (by index). Output: how many of them meshed conformally, and how many
 //         were checked. The faces are random_arc_face's from seed 20261201, scales 37 and 1 in turn.

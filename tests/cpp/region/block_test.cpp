@@ -288,11 +288,64 @@ TEST_CASE("smooth parts: the disk's template, and no template on a part with a c
   CHECK(area == Approx(disk.area()).epsilon(1e-9));
   // The inner quadrilateral's corners lie halfway between the centre and the boundary.
   for (const Point2& p : pieces.back().ring) CHECK(std::hypot(p.x - 5, p.y - 2) == Approx(1.5).epsilon(1e-6));
-  // A square with a concave quarter circle cut from one corner: each vertex of the arc turns 15
-  // degrees inwards (a side vertex), 90 in all: not convex, so no template.
+}
+
+namespace {
+
+// An L (legs 4 wide, arms reaching 10) whose reflex corner at (4, 4) is filleted with radius 2: the
+// arc's samples turn 15 degrees inwards each (side vertices), its ends meet the edges tangentially.
+Ring filleted_l() {
+  Ring ring{{0, 0}, {10, 0}, {10, 4}};
+  for (int k = 0; k <= 6; ++k) ring.push_back({6 - 2 * std::sin(k * M_PI / 12), 6 - 2 * std::cos(k * M_PI / 12)});
+  ring.push_back({4, 10});
+  ring.push_back({0, 10});
+  return ring;
+}
+
+}  // namespace
+
+TEST_CASE("concave arcs: runs, their open ends, and the template on a fillet's corner piece", "[region][block][arc]") {
+  // The fillet is one concave run of 90 degrees, open at both ends (the edges run on 4 beyond it).
+  const Ring l = filleted_l();
+  std::vector<ConcaveRun> runs = concave_runs(l);
+  REQUIRE(runs.size() == 1);
+  CHECK(runs[0].turn == Approx(M_PI / 2).epsilon(1e-9));
+  CHECK(l[runs[0].first].x == Approx(6.0));  // (6, 4): the tangent join with the lower edge
+  CHECK(l[runs[0].last].y == Approx(6.0));   // (4, 6): with the upright one
+  CHECK(runs[0].open_before);
+  CHECK(runs[0].open_after);
+  CHECK_FALSE(template_applies(Region(l, {}, kQ)));
+  // A square with the same quarter circle cut from one corner: the run is closed at both ends (the
+  // square's corners follow it at once), so the template applies: five quads around a centre, the
+  // five-valent vertex such a part needs, its spokes clear of the arc.
   Ring notched{{0, 0}, {4, 0}, {4, 2}};
   for (int k = 1; k < 6; ++k) notched.push_back({4 - 2 * std::sin(k * M_PI / 12), 4 - 2 * std::cos(k * M_PI / 12)});
   notched.push_back({2, 4});
   notched.push_back({0, 4});
-  CHECK_FALSE(template_applies(Region(notched, {}, kQ)));
+  runs = concave_runs(notched);
+  REQUIRE(runs.size() == 1);
+  CHECK_FALSE(runs[0].open_before);
+  CHECK_FALSE(runs[0].open_after);
+  const Region part(notched, {}, kQ);
+  REQUIRE(template_applies(part));
+  const std::vector<QuadPiece> pieces = template_pieces(part);
+  REQUIRE(pieces.size() == 5);
+  double area = 0;
+  for (const QuadPiece& piece : pieces) {
+    area += signed_area(piece.ring);
+    CHECK(signed_area(piece.ring) > 0);
+    // The centre is at least a radius's half from the arc's circle (centre (4, 4), radius 2).
+    const Point2 c = piece.ring[static_cast<size_t>(piece.corners[2])];
+    CHECK(std::hypot(c.x - 4, c.y - 4) > 2.5);
+  }
+  CHECK(area == Approx(part.area()).epsilon(1e-9));
+  // A deeper notch (a half circle between the corners) is no side of a template.
+  Ring half{{0, 0}, {6, 0}, {6, 4}};
+  for (int k = 1; k < 12; ++k) half.push_back({5 + std::cos(k * M_PI / 12), 4 - std::sin(k * M_PI / 12)});
+  half.push_back({4, 4});
+  half.push_back({0, 4});
+  runs = concave_runs(half);
+  REQUIRE(runs.size() == 1);
+  CHECK(runs[0].turn > kClosedRunLimit);  // 165 degrees (its ends are corners)
+  CHECK_FALSE(template_applies(Region(half, {}, kQ)));
 }

@@ -1,5 +1,6 @@
 #include "core/region/region_policy.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cmath>
@@ -94,6 +95,49 @@ TEST_CASE("greedy on general faces: a square is one block, an L two, a triangle 
   const auto slanted = decompose_region(Region(Ring{{0, 0}, {4, 0}, {5, std::sqrt(3.0)}, {1, std::sqrt(3.0)}}, {}, q), greedy);
   CHECK(slanted.blocks == 1);
   CHECK(slanted.cuts.empty());
+}
+
+TEST_CASE("a reflex fillet: its open ends count as reflex corners, cut square to the arc", "[region][policy][arc]") {
+  // An L (legs 4 wide, arms reaching 10) whose reflex corner is filleted with radius 2 (arc samples
+  // every 15 degrees: side vertices). Its complexity counts the arc's two open ends as reflex corners.
+  const double q = 1e-7;
+  Ring ring{{0, 0}, {10, 0}, {10, 4}};
+  for (int k = 0; k <= 6; ++k) ring.push_back({6 - 2 * std::sin(k * M_PI / 12), 6 - 2 * std::cos(k * M_PI / 12)});
+  ring.push_back({4, 10});
+  ring.push_back({0, 10});
+  const Region l(ring, {}, q);
+  const Complexity before = part_complexity(l);
+  CHECK(before.reflex == 2);
+  // Cut square to the boundary at the arc's end (6, 4), down to the bottom: progress (the corner part
+  // keeps one open end, the arm is a rectangle).
+  const RegionCut square{CutKind::Partial, {6, 4}, {0, -1}};
+  const std::vector<Region> pieces = cut_region(l, square).pieces;
+  REQUIRE(pieces.size() == 2);
+  CHECK(makes_progress(l, pieces));
+  // A cut along the arc's chord from one of its samples (the fan of slivers before) makes none.
+  const Point2 a = ring[4], b = ring[5];
+  CHECK_FALSE(makes_progress(l, cut_region(l, RegionCut{CutKind::Partial, b, {b.x - a.x, b.y - a.y}}).pieces));
+  // progress_action cuts at an open end, square to the edge there.
+  const RegionAction action = progress_action(l);
+  REQUIRE(action.kind == RegionAction::Kind::Cut);
+  CHECK(((action.cut.origin.x == Approx(6) && action.cut.origin.y == Approx(4)) ||
+         (action.cut.origin.x == Approx(4) && action.cut.origin.y == Approx(6))));
+  CHECK(std::fabs(action.cut.direction.x * action.cut.direction.y) < 1e-12);
+  // Under the mesh preset's rules (no block corner under about 58 degrees: the diagonal from the
+  // outer corner to the arc's middle leaves 45), the search finishes it in three parts: two arms and
+  // the corner piece (the template: five quads around the five-valent vertex such a part needs), no
+  // slivers along the arc; greedy (no lookahead) finishes it too.
+  RegionEpisodeOptions options;
+  options.reward = RewardPreset::Mesh;
+  RegionSearchPolicy search;
+  const RegionDecomposition d = decompose_region(l, search, options);
+  CHECK(d.complete());
+  CHECK(std::count_if(d.cuts.begin(), d.cuts.end(), [](const RegionCutRecord& c) { return c.action.kind == RegionAction::Kind::Cut; }) == 2);
+  REQUIRE(d.finished.size() == 3);
+  CHECK(d.templates == 1);
+  for (const FinishedRegion& f : d.finished) CHECK(f.region.area() > 0.1 * l.area());
+  RegionGreedyPolicy greedy;
+  CHECK(decompose_region(l, greedy, options).complete());
 }
 
 TEST_CASE("every general face ends in blocks, whatever the policy (property test)", "[region][policy][property]") {
