@@ -27,9 +27,9 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
     options.general.reward = out.decomposition.region.reward;
     const bool searched = out.decomposition.region.policy == "search";
     // The search's first mesh failing for a reason of ours (blocks that admit no interval counts, say)
-    // is not the end: the other tries below may mesh the face; if none does, that error is the answer.
+    // is not the end: the other tries below may mesh the face; if none does, that error is the answer
+    // (set while no try has meshed).
     std::exception_ptr first_error;
-    bool meshed_once = true;
     try {
       out.result = mesh_region_decomposition(face, out.decomposition.region, options);
     } catch (const InputError&) {
@@ -37,7 +37,6 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
     } catch (const std::exception&) {
       if (!searched) throw;
       first_error = std::current_exception();
-      meshed_once = false;
     }
     // A poor mesh from the search: other block rules may do better (a face whose good blocks need
     // corners just outside the rules, or whose rules forbid the cut that matters).
@@ -45,7 +44,7 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
       return r.conformity.conformal ? r.quality.min_scaled_jacobian / r.bound : -1e300;
     };
     for (const SearchRetry& retry_with : kSearchRetries) {
-      if (!searched || (meshed_once && ratio(out.result) >= kRetryBelow)) break;
+      if (!searched || (!first_error && ratio(out.result) >= kRetryBelow)) break;
       const double fraction = retry_with.corner_fraction;
       decompose.corner_fraction = fraction;
       decompose.policy_settings.general_search_width = retry_with.width;
@@ -63,8 +62,8 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
       } catch (const std::exception&) {
         continue;  // this try's blocks failed to mesh: the mesh kept stands
       }
-      if (!meshed_once || ratio(meshed) > ratio(out.result)) {
-        meshed_once = true;
+      if (first_error || ratio(meshed) > ratio(out.result)) {
+        first_error = nullptr;
         out.decomposition = std::move(again);
         out.result = std::move(meshed);
         out.corner_fraction = fraction;
@@ -75,7 +74,7 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
     // block one element across, meshed corner to corner through its side vertices, is what holds the
     // minimum down then; more elements there lift it). Skipped when the user's counts or the quad
     // limit forbid it.
-    if (!meshed_once) std::rethrow_exception(first_error);
+    if (first_error) std::rethrow_exception(first_error);
     if (searched && ratio(out.result) < kRetryBelow && options.min_edge_intervals < 2) {
       MeshOptions finer = options;
       finer.min_edge_intervals = 2;

@@ -286,13 +286,6 @@ std::vector<ConcaveRun> concave_runs(const Ring& ring, const BlockRules& rules) 
 
 namespace {
 
-// Inputs: a, b, c, d. Output: true when the segments a-b and c-d cross or touch.
-bool segments_meet(Point2 a, Point2 b, Point2 c, Point2 d) {
-  auto orient = [](Point2 p, Point2 q, Point2 r) { return (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x); };
-  const double d1 = orient(c, d, a), d2 = orient(c, d, b), d3 = orient(a, b, c), d4 = orient(a, b, d);
-  return ((d1 > 0) != (d2 > 0) || d1 == 0 || d2 == 0) && ((d3 > 0) != (d4 > 0) || d3 == 0 || d4 == 0);
-}
-
 // Inputs: region, without holes; pieces, its usual template's. Output: true when the spokes (a
 //         piece's corners 1-2-3: foot, centre, foot) keep clear of the boundary but at their feet, and
 //         every piece turns counter-clockwise: a concave run can bulge over the centre of the polygon
@@ -304,10 +297,14 @@ bool template_spokes_clear(const Region& region, const std::vector<QuadPiece>& p
     if (signed_area(piece.ring) <= 0.0) return false;
     const Point2 centre = piece.ring[static_cast<size_t>(piece.corners[2])];
     const Point2 foot = piece.ring[static_cast<size_t>(piece.corners[1])];
-    // The spoke from the centre to within a hundredth of its length of the foot.
-    const Point2 near{foot.x + 0.01 * (centre.x - foot.x), foot.y + 0.01 * (centre.y - foot.y)};
+    // The spoke from the centre to within a hundredth of its length of the foot, against every edge
+    // (closed segments, exact predicates).
+    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+    const K::Segment_2 spoke(K::Point_2(centre.x, centre.y),
+                             K::Point_2(foot.x + 0.01 * (centre.x - foot.x), foot.y + 0.01 * (centre.y - foot.y)));
     for (size_t i = 0; i < n; ++i) {
-      if (segments_meet(centre, near, ring[i], ring[(i + 1) % n])) return false;
+      const Point2 a = ring[i], b = ring[(i + 1) % n];
+      if (CGAL::do_intersect(spoke, K::Segment_2(K::Point_2(a.x, a.y), K::Point_2(b.x, b.y)))) return false;
     }
   }
   return true;

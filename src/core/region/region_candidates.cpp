@@ -95,12 +95,17 @@ Complexity part_complexity(const Region& part, const BlockRules& rules) {
   c.holes = static_cast<int>(part.holes().size());
   for (int k = 0; k < part.loop_count(); ++k) {
     const Ring& ring = part.loop(k);
+    bool concave_side = false;
     for (size_t i = 0; i < ring.size(); ++i) {
       const VertexShape shape = vertex_shape(ring, i, rules);
-      if (shape.side) continue;
+      if (shape.side) {
+        concave_side = concave_side || shape.reflex;
+        continue;
+      }
       if (shape.reflex) ++c.reflex;
       ++c.corners;
     }
+    if (!concave_side) continue;  // no concave run (every run is made of such vertices)
     // A concave arc's open ends act as reflex corners (a fillet: two), and so does a long one.
     for (const ConcaveRun& run : concave_runs(ring, rules)) {
       c.reflex += static_cast<int>(run.open_before) + static_cast<int>(run.open_after);
@@ -230,18 +235,15 @@ RegionAction progress_action(const Region& part, const BlockRules& rules) {
         tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, ring[i], {-(n.y - p.y), n.x - p.x}}});
       }
     }
-    for (size_t i = 0; i < m; ++i) {
-      if (!is_reflex_vertex(ring, i) || is_side_vertex(ring, i, rules)) continue;
-      const Point2 p = ring[(i + m - 1) % m], v = ring[i], n = ring[(i + 1) % m];
-      tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - p.x, v.y - p.y}}});
-      tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - n.x, v.y - n.y}}});
-    }
-    // The reflex side vertices last (rounding's, and a concave arc's samples: their cuts run along it).
-    for (size_t i = 0; i < m; ++i) {
-      if (!is_reflex_vertex(ring, i) || !is_side_vertex(ring, i, rules)) continue;
-      const Point2 p = ring[(i + m - 1) % m], v = ring[i], n = ring[(i + 1) % m];
-      tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - p.x, v.y - p.y}}});
-      tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - n.x, v.y - n.y}}});
+    // The reflex corners' edge extensions, then the reflex side vertices' (rounding's, and a concave
+    // arc's samples: their cuts run along it).
+    for (const bool side : {false, true}) {
+      for (size_t i = 0; i < m; ++i) {
+        if (!is_reflex_vertex(ring, i) || is_side_vertex(ring, i, rules) != side) continue;
+        const Point2 p = ring[(i + m - 1) % m], v = ring[i], n = ring[(i + 1) % m];
+        tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - p.x, v.y - p.y}}});
+        tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - n.x, v.y - n.y}}});
+      }
     }
     if (tries.empty()) {
       std::vector<size_t> corners;
