@@ -145,6 +145,16 @@ TEST_CASE("the conformity check catches hanging nodes, gaps and overlaps", "[mes
   const Conformity d = check_conformity(dart, face);
   CHECK_FALSE(d.conformal);
   CHECK(d.inverted_quads == 1);
+  CHECK(d.first_inverted.x == Approx(0.325));  // the left quad's centre
+  CHECK(d.first_inverted.y == Approx(0.3));
+  // One quad over the whole face, clockwise: inverted and nothing else, and the verdict says where.
+  QuadMesh clockwise;
+  clockwise.nodes = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
+  clockwise.quads = {{0, 3, 2, 1}};
+  clockwise.quad_block = {0};
+  clockwise.blocks = 1;
+  const Conformity w = check_conformity(clockwise, face);
+  CHECK(w.problem == "1 quad is inverted or degenerate (the first near 1, 0.5)");
 }
 
 TEST_CASE("autoblock meshes hundreds of generated faces conformally with perfect quads", "[mesh][mapped][occt]") {
