@@ -175,7 +175,7 @@ double region_template_reward(RewardPreset preset, const Region& part, double fa
     // is the five-valent vertex the part needs; the arc takes some of the turn around it (45 degrees
     // beside a quarter arc), which smoothing gives back, as at an O-grid's box corners: its best is
     // sin 72 degrees.
-    const bool five_valent = quads.size() == 5 && !part.is_convex();
+    const bool five_valent = quads.size() == 5 && !part.is_convex() && !concave_runs(part.outer()).empty();
     double j_new = 1.0;
     for (const auto& q : quads) {
       const Point2 corner = q[0], next = q[1], prev = q[3];

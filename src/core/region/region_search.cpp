@@ -56,11 +56,12 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
   bool have = false;
   for (size_t i = 0; i < scored.size(); ++i) {
     // The `width` best by immediate reward, and the O-grid (a template on a part with a hole) or the
-    // template on a reflex fillet's corner piece (on a part that is not convex, block.h): it finishes
+    // template on a reflex fillet's corner piece (a part with a concave run, block.h): it finishes
     // the part, so its reward is its whole value, far below a cut's reward and far above the cuts'
     // sum. (Every template expanded so took the usual template on chamfered parts, keeping their
     // 135-degree corners whole: 0.71 on every chamfered union.)
-    if (i >= width && !(scored[i].action.kind == RegionAction::Kind::Template && (!part.holes().empty() || !part.is_convex()))) {
+    if (i >= width && !(scored[i].action.kind == RegionAction::Kind::Template &&
+                        (!part.holes().empty() || !concave_runs(part.outer()).empty()))) {
       continue;
     }
     // Out of time: the candidates expanded so far decide (one greedy finish per part, not one per

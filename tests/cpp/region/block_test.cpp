@@ -315,6 +315,11 @@ TEST_CASE("concave arcs: runs, their open ends, and the template on a fillet's c
   CHECK(runs[0].open_before);
   CHECK(runs[0].open_after);
   CHECK_FALSE(template_applies(Region(l, {}, kQ)));
+  // A side vertex turned a little inwards (rounding to the lattice) is no concave run: a part that is
+  // not convex only so is no fillet's corner piece (the search and the template's reward tell them
+  // apart by this).
+  const Ring dented{{0, 0}, {2, 0.01}, {4, 0}, {4, 4}, {0, 4}};
+  CHECK(concave_runs(dented).empty());
   // A square with the same quarter circle cut from one corner: the run is closed at both ends (the
   // square's corners follow it at once), so the template applies: five quads around a centre, the
   // five-valent vertex such a part needs, its spokes clear of the arc.
