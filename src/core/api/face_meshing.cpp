@@ -40,8 +40,10 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
     }
     // A poor mesh from the search: other block rules may do better (a face whose good blocks need
     // corners just outside the rules, or whose rules forbid the cut that matters).
+    // Measured against the topology bound (block.h), not the corners' alone: a disk, a fillet or a
+    // round hole caps every mesh of the face below its corner bound, and a try cannot beat that.
     auto ratio = [](const MeshResult& r) {
-      return r.conformity.conformal ? r.quality.min_scaled_jacobian / r.bound : -1e300;
+      return r.conformity.conformal ? r.quality.min_scaled_jacobian / r.topology_bound : -1e300;
     };
     for (const SearchRetry& retry_with : kSearchRetries) {
       if (!searched || (!first_error && ratio(out.result) >= kRetryBelow)) break;

@@ -34,8 +34,9 @@ struct FaceMeshing {
 //          episode options are set from settings).
 // Outputs: the decomposition and its mesh, returned even when the conformity check fails (the caller
 //          reports it: FaceMeshing::result.conformity). A general face searched (auto, search) whose
-//          mesh stays below kRetryBelow of its bound is searched again (kSearchRetries: wider, then
-//          with stricter and with looser block rules) until one reaches it, and the conformal mesh with
+//          mesh stays below kRetryBelow of its topology bound (topology_jacobian_bound: what its
+//          corners, holes and arcs allow) is searched again (kSearchRetries: wider, then with
+//          stricter and with looser block rules) until one reaches it, and the conformal mesh with
 //          the best minimum scaled Jacobian is kept; if still below, the kept blocks are meshed again
 //          with at least two intervals per model edge, kept if better (attempts, search_width,
 //          corner_fraction and min_edge_intervals say what was kept); each search has the time limit.
