@@ -34,9 +34,15 @@ Point2 CircularArc::point_at(double t) const {
 double CircularArc::length() const { return radius * std::fabs(sweep); }
 
 int arc_chord_count(const CircularArc& arc, double max_step_degrees) {
+  if (arc.chords > 0) return arc.chords;
   const bool full = full_circle(arc);
   const int count = static_cast<int>(std::ceil(std::fabs(arc.sweep) / (max_step_degrees * kPi / 180.0) - 1e-9));
   return std::max(count, full ? 3 : 2);
+}
+
+bool short_arc(const CircularArc& arc, double face_size) {
+  return !full_circle(arc) && std::fabs(arc.sweep) <= kShortArcMaxDegrees * kPi / 180.0 &&
+         arc.length() < kShortArcFraction * face_size;
 }
 
 std::vector<Point2> polygonise_arc(const CircularArc& arc, double max_step_degrees) {
@@ -99,10 +105,11 @@ int FaceArcs::arc_of_point(Point2 p) const {
 }
 
 int FaceArcs::arc_of_chord(Point2 a, Point2 b) const {
-  const double max_turn = 2.0 * kArcStepDegrees * kPi / 180.0;
   const Point2 m{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
   for (size_t k = 0; k < arcs.size(); ++k) {
     const CircularArc& arc = arcs[k];
+    // Two chord steps: the default's, or a short arc's one chord (the whole arc).
+    const double max_turn = std::max(2.0 * kArcStepDegrees * kPi / 180.0, 2.0 * std::fabs(arc.sweep) / arc_chord_count(arc));
     if (!point_on_arc_polygon(a, arc, tolerance) || !point_on_arc_polygon(b, arc, tolerance) ||
         !point_on_arc_polygon(m, arc, tolerance)) {
       continue;

@@ -5,9 +5,10 @@
 // of chords: the arc polygonised so that each chord turns by at most kArcStepDegrees, every sample
 // point on the arc (then on the lattice, within half a quantum of it). Each chord's ends turn by that
 // step at most, which is within the block rules' flat tolerance (block.h), so the samples are side
-// vertices: a block's side may run along an arc, and a block keeps a fillet corner whole. The arcs
-// themselves are kept beside the polygon (FaceArcs): the mesh puts its boundary nodes on them, not on
-// the chords; the conformity check and the quality bound see the true boundary.
+// vertices: a block's side may run along an arc, and a block keeps a fillet corner whole. An arc
+// shorter than an element at the default size is one chord instead (short_arc): a corner to the
+// engines. The arcs themselves are kept beside the polygon (FaceArcs): the mesh puts its boundary
+// nodes on them, not on the chords; the conformity check and the quality bound see the true boundary.
 #pragma once
 
 #include <vector>
@@ -34,6 +35,9 @@ struct CircularArc {
   // circumscribed (tangents), so that the polygon's part lies inside the true face wherever the face
   // is; otherwise inscribed (chords).
   bool outside = false;
+  // The number of chords of its polygon; 0: by the chord step (arc_chord_count). A short arc of a face
+  // (kShortArcFraction) is one chord.
+  int chords = 0;
 
   // Inputs: t in [0, 1]. Output: the point at start + t * sweep.
   Point2 point_at(double t) const;
@@ -43,8 +47,23 @@ struct CircularArc {
 };
 
 // Inputs:  arc; max_step_degrees, the largest turn of a chord.
-// Outputs: the number of chords: ceil(|sweep| / step), at least 2 (3 for a full circle).
+// Outputs: the number of chords: arc.chords when set, else ceil(|sweep| / step), at least 2 (3 for a
+//          full circle).
 int arc_chord_count(const CircularArc& arc, double max_step_degrees = kArcStepDegrees);
+
+// An arc of a face shorter than this fraction of the longer side of the face's bounding box (the
+// default element size, interval_assignment.h kDefaultSizeDivisions), turning by at most
+// kShortArcMaxDegrees, is polygonised as one chord between its ends (CircularArc::chords = 1): a fillet
+// smaller than an element is a corner to the engines (a convex one a chamfer of two corners, a concave
+// one its sharp corner, circumscribed), where its samples would be side vertices that force an
+// interval per chord (mesh_pipeline.cpp) and bunch the elements around it. Its mesh nodes still lie on
+// the arc.
+constexpr double kShortArcFraction = 1.0 / 20.0;
+constexpr double kShortArcMaxDegrees = 120.0;
+
+// Inputs:  arc, not a full circle; the longer side of its face's bounding box.
+// Outputs: true when it is a short arc (above): polygonised as one chord.
+bool short_arc(const CircularArc& arc, double face_size);
 
 // Inputs:  arc. Outputs: its polygon, first point to last: inscribed, arc_chord_count + 1 points on
 //          the arc evenly spaced in angle (a full circle's last point is its first again); circumscribed

@@ -137,8 +137,16 @@ FaceRings read_face_rings(const TopoDS_Face& face) {
   const double tol = face_tolerance(face);
   const TopoDS_Wire outer = BRepTools::OuterWire(face);
   int inner_count = 0;
+  // Each wire's edges in order: the start point, its z, and the arc it begins (index into arcs) or -1.
+  struct Entry {
+    Point2 start;
+    double z = 0.0;
+    int arc = -1;
+  };
+  std::vector<std::vector<Entry>> wire_entries;
   for (TopExp_Explorer wires(face, TopAbs_WIRE); wires.More(); wires.Next()) {
     const TopoDS_Wire wire = TopoDS::Wire(wires.Current());
+    std::vector<Entry> entries;
     RawRing ring;
     ring.name = wire.IsSame(outer) ? "outer wire" : "inner wire " + std::to_string(++inner_count);
     int edge_count = 0;
@@ -168,13 +176,8 @@ FaceRings read_face_rings(const TopoDS_Face& face) {
         // The face lies on the left of its edges run in wire order (seen from its normal's side):
         // inside the circle when the arc runs counter-clockwise around it, seen so.
         arc.outside = (arc.sweep > 0) != result.normal_up;
-        const std::vector<Point2> polygon = polygonise_arc(arc);
-        ring.points.push_back(Point2{start.X(), start.Y()});
-        result.vertex_z.push_back(start.Z());
-        for (size_t k = 1; k + 1 < polygon.size(); ++k) {
-          ring.points.push_back(polygon[k]);
-          result.vertex_z.push_back(start.Z());
-        }
+        // (Its samples are added below, once the face's size says whether it is a short arc.)
+        entries.push_back({Point2{start.X(), start.Y()}, start.Z(), static_cast<int>(result.arcs.size())});
         result.arcs.push_back(arc);
         continue;
       }
@@ -186,13 +189,41 @@ FaceRings read_face_rings(const TopoDS_Face& face) {
                          format_point(a.X(), a.Y(), tol) + " to " + format_point(b.X(), b.Y(), tol) + ", is " +
                          with_article(curve_type_name(curve.GetType())) + "; only straight edges and circular arcs are supported");
       }
-      ring.points.push_back(Point2{start.X(), start.Y()});
-      result.vertex_z.push_back(start.Z());
+      entries.push_back({Point2{start.X(), start.Y()}, start.Z(), -1});
     }
     if (walked != edge_count || !BRep_Tool::IsClosed(wire)) {
       throw InputError("the " + ring.name + " is not a closed chain of edges");
     }
     result.rings.push_back(std::move(ring));
+    wire_entries.push_back(std::move(entries));
+  }
+  // The face's size: the longer side of the box of its vertices and its arcs' default samples.
+  double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
+  auto extend = [&](Point2 p) {
+    xmin = std::min(xmin, p.x), xmax = std::max(xmax, p.x), ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
+  };
+  for (const std::vector<Entry>& entries : wire_entries) {
+    for (const Entry& e : entries) extend(e.start);
+  }
+  for (const CircularArc& arc : result.arcs) {
+    for (const Point2& p : polygonise_arc(arc)) extend(p);
+  }
+  const double face_size = std::max(xmax - xmin, ymax - ymin);
+  for (CircularArc& arc : result.arcs) {
+    if (short_arc(arc, face_size)) arc.chords = 1;
+  }
+  // The loops: each straight edge's start; each arc's start and its polygon's inner points.
+  for (size_t w = 0; w < wire_entries.size(); ++w) {
+    for (const Entry& e : wire_entries[w]) {
+      result.rings[w].points.push_back(e.start);
+      result.vertex_z.push_back(e.z);
+      if (e.arc < 0) continue;
+      const std::vector<Point2> polygon = polygonise_arc(result.arcs[static_cast<size_t>(e.arc)]);
+      for (size_t k = 1; k + 1 < polygon.size(); ++k) {
+        result.rings[w].points.push_back(polygon[k]);
+        result.vertex_z.push_back(e.z);
+      }
+    }
   }
   return result;
 }

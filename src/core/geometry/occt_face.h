@@ -27,7 +27,7 @@ struct FaceRings {
 
 // Inputs:  face, any TopoDS_Face.
 // Outputs: its wires as loops of (x, y) points, a circular edge as its samples (kArcStepDegrees
-//          apart) and in arcs. Throws InputError when the face is not planar, does not lie parallel
+//          apart; a short arc, circular_arc.h short_arc, as one chord) and in arcs. Throws InputError when the face is not planar, does not lie parallel
 //          to the XY plane, has an edge that is neither straight nor a circular arc, or an open wire
 //          (naming the wire, the edge and its end points).
 FaceRings read_face_rings(const TopoDS_Face& face);

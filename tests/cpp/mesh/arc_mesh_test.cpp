@@ -13,6 +13,7 @@
 #include <string>
 
 #include "core/data/arc_generator.h"
+#include "core/geometry/circular_arc.h"
 #include "core/geometry/occt_face.h"
 #include "core/geometry/occt_properties.h"
 #include "core/io/input_face.h"
@@ -113,6 +114,38 @@ TEST_CASE("arc faces: a plate with a round hole is read as chords and its arc", 
   for (const CircularArc& arc : convex.arcs.arcs) CHECK_FALSE(arc.outside);
   CHECK(convex.region.area() < occt_area(rounded));
   CHECK(convex.region.outer().size() == 4 * 7);
+}
+
+TEST_CASE("arc faces: an arc shorter than the default element size is one chord, its nodes still on it",
+          "[mesh][arc][occt]") {
+  // A 20 x 12 plate (default element size 1) with an L step: the outer corner (20, 0) filleted with
+  // radius 0.3 (a quarter arc 0.47 long: one chord, a chamfer to the engine), the step's reflex corner
+  // (8, 6) with radius 0.5 (0.79 long: one chord, circumscribed, the sharp corner to the engine), the
+  // corner (0, 12) with radius 3 (4.7 long: samples every 15 degrees).
+  const RectilinearPolygon l{{{0, 0}, {20, 0}, {20, 6}, {8, 6}, {8, 12}, {0, 12}}, {}};
+  std::vector<double> radii(6, 0.0);
+  radii[1] = 0.3;
+  radii[3] = 0.5;
+  radii[5] = 3.0;
+  const TopoDS_Face occt = filleted_polygon(l, radii);
+  const InputFace face = input_face_from_occt(occt, "stepped plate");
+  REQUIRE(face.arcs.arcs.size() == 3);
+  int short_arcs = 0;
+  for (const CircularArc& arc : face.arcs.arcs) {
+    const bool small = arc.radius < 1.0;
+    CHECK(arc.chords == (small ? 1 : 0));
+    CHECK(arc_chord_count(arc) == (small ? 1 : 6));
+    CHECK(polygonise_arc(arc).size() == (small ? (arc.outside ? 3u : 2u) : 7u));
+    short_arcs += small;
+  }
+  CHECK(short_arcs == 2);
+  // Three plain corners, the small convex fillet's two ends, the small concave one's two ends and sharp
+  // corner between them, the large fillet's 7 samples.
+  CHECK(face.region.outer().size() == 3 + 2 + 3 + 7);
+  // Its mesh: conformal, the quads' area and the gap to the arcs the face's, every boundary node near
+  // an arc on it; the short arcs take one interval or more, as their length asks, not one per sample.
+  const ArcMesh m = mesh_arc_face(occt, "stepped plate", 1.0);
+  check_arc_mesh(m, occt);
 }
 
 TEST_CASE("arc faces: plates with holes, fillets and a slot mesh conformally with nodes on the arcs",
