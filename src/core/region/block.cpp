@@ -201,10 +201,13 @@ std::optional<std::array<int, 4>> block_corners(const Region& region, const Bloc
   // A concave arc with an open end acts as a reflex corner (a step in a side, a fillet in the middle of
   // one: concave_runs). (A closed one may be a whole side: half a hole, cut through its middle.)
   if (concave_side) {
-    for (const ConcaveRun& run : concave_runs(ring, rules)) {
+    for (const ArcRun& run : concave_runs(ring, rules)) {
       if (run.open_before || run.open_after) return std::nullopt;
     }
   }
+  // So does a long convex arc with an open end (a fillet running on into straight edges): the quads
+  // beside it are squeezed; cut square at its ends, it is a side of its own.
+  if (ring.size() > 6 && open_convex_run(ring, rules)) return std::nullopt;
   // Each corner's angle t within [min, max] by its cosine (t in (0, pi] once not reflex, where the
   // cosine decreases): no trigonometry per corner.
   const double cos_min = std::cos(rules.min_corner_degrees * kDegree), cos_max = std::cos(rules.max_corner_degrees * kDegree);
@@ -237,18 +240,27 @@ CornerAngle piece_corner_angle(const QuadPiece& piece, int k) {
   return {(ax * by - ay * bx) / length, (ax * bx + ay * by) / length};
 }
 
-std::vector<ConcaveRun> concave_runs(const Ring& ring, const BlockRules& rules) {
+namespace {
+
+// The runs of a loop's side vertices that turn inwards (concave) or outwards (convex); see block.h.
+std::vector<ArcRun> side_runs(const Ring& ring, const BlockRules& rules, bool convex) {
   const size_t n = ring.size();
   std::vector<VertexShape> shape(n);
   size_t start = n;  // a vertex outside every run
-  for (size_t i = 0; i < n; ++i) {
-    shape[i] = vertex_shape(ring, i, rules);
-    if (!(shape[i].side && shape[i].reflex) && start == n) start = i;
+  auto in_run = [&](size_t i) { return shape[i].side && shape[i].reflex != convex; };
+  for (size_t i = 0; i < n; ++i) shape[i] = vertex_shape(ring, i, rules);
+  for (size_t i = 0; i < n && start == n; ++i) {
+    if (!in_run(i)) start = i;
   }
-  std::vector<ConcaveRun> runs;
+  std::vector<ArcRun> runs;
   if (start == n) return runs;
-  auto concave = [&](size_t i) { return shape[i].side && shape[i].reflex; };
   auto length = [&](size_t i, size_t j) { return std::hypot(ring[j].x - ring[i].x, ring[j].y - ring[i].y); };
+  // A convex run breaks at a long edge: from i to i + 1, more than twice the edges beside it.
+  auto long_edge = [&](size_t i) {
+    if (!convex) return false;
+    const size_t j = (i + 1) % n;
+    return length(i, j) > 2.0 * std::max(length((i + n - 1) % n, i), length(j, (j + 1) % n));
+  };
   // Whether the boundary runs on smoothly for more than `reach` from vertex `from`, stepping by
   // `step` (+1 or n - 1), before a corner.
   auto open_end = [&](size_t from, size_t step, double reach) {
@@ -264,16 +276,18 @@ std::vector<ConcaveRun> concave_runs(const Ring& ring, const BlockRules& rules) 
   };
   for (size_t k = 1; k <= n; ++k) {
     const size_t first = (start + k) % n;
-    if (!concave(first) || concave((first + n - 1) % n)) continue;
-    ConcaveRun run;
+    const size_t before = (first + n - 1) % n;
+    if (!in_run(first) || (in_run(before) && !long_edge(before))) continue;
+    ArcRun run;
     run.first = first;
     double chord = 0.0;
     size_t last = first;
-    run.turn = interior_angle(ring, first) - M_PI;
-    while (concave((last + 1) % n)) {
+    const double sign = convex ? -1.0 : 1.0;
+    run.turn = sign * (interior_angle(ring, first) - M_PI);
+    for (size_t steps = 1; steps < n && in_run((last + 1) % n) && !long_edge(last); ++steps) {
       chord = std::max(chord, length(last, (last + 1) % n));
       last = (last + 1) % n;
-      run.turn += interior_angle(ring, last) - M_PI;
+      run.turn += sign * (interior_angle(ring, last) - M_PI);
     }
     run.last = last;
     if (!(run.turn > rules.flat_tolerance_degrees * kDegree)) continue;
@@ -282,6 +296,27 @@ std::vector<ConcaveRun> concave_runs(const Ring& ring, const BlockRules& rules) 
     runs.push_back(run);
   }
   return runs;
+}
+
+}  // namespace
+
+std::vector<ArcRun> concave_runs(const Ring& ring, const BlockRules& rules) { return side_runs(ring, rules, false); }
+
+std::vector<ArcRun> convex_runs(const Ring& ring, const BlockRules& rules) { return side_runs(ring, rules, true); }
+
+bool fillet_needs_cuts(const Region& region, const BlockRules& rules) {
+  if (region.is_empty()) return false;
+  const Ring& ring = region.outer();
+  int corners = 0;
+  for (size_t i = 0; i < ring.size(); ++i) corners += !is_side_vertex(ring, i, rules);
+  return corners >= 3 && open_convex_run(ring, rules);
+}
+
+bool open_convex_run(const Ring& ring, const BlockRules& rules) {
+  for (const ArcRun& run : convex_runs(ring, rules)) {
+    if (open_fillet(run)) return true;
+  }
+  return false;
 }
 
 namespace {
@@ -331,7 +366,7 @@ bool template_applies(const Region& region) {
     inwards += interior_angle(ring, i) - M_PI;
   }
   if (inwards <= rules.flat_tolerance_degrees * kDegree) return true;
-  const std::vector<ConcaveRun> runs = concave_runs(ring, rules);
+  const std::vector<ArcRun> runs = concave_runs(ring, rules);
   if (runs.size() != 1 || runs[0].open_before || runs[0].open_after || runs[0].turn > kClosedRunLimit) return false;
   if (inwards > runs[0].turn + rules.flat_tolerance_degrees * kDegree) return false;
   return template_spokes_clear(region, template_pieces(region, rules));

@@ -51,14 +51,44 @@ VertexShape vertex_shape(const Ring& ring, size_t i, const BlockRules& rules = {
 // vertices only) for more than 1.5 of the run's longest chord before the next corner: a fillet's
 // tangent join with its edge, which acts as a reflex corner; *closed* where a corner follows at once
 // (a cut square to the arc there), which a block's or a template's side may end at.
-struct ConcaveRun {
+struct ArcRun {
   size_t first = 0, last = 0;  // the run's first and last vertex (the ring's order, cyclically)
   double turn = 0.0;           // radians, > the flat tolerance
   bool open_before = false, open_after = false;
 };
 // Inputs: ring, a loop of a region; rules. Output: its concave runs, in the ring's order (none on a
 //         loop of side vertices only: a round hole).
-std::vector<ConcaveRun> concave_runs(const Ring& ring, const BlockRules& rules = {});
+std::vector<ArcRun> concave_runs(const Ring& ring, const BlockRules& rules = {});
+
+// A convex run: the same of side vertices that turn outwards (a convex arc: a fillet), broken where
+// an edge is more than twice as long as the longer of the edges beside it (the straight edge between
+// two fillets). One with an open end inside a block's or a template's side (a fillet whose ends run
+// on into straight edges) squeezes the quads around it: it must be cut square at its open ends first
+// (a quarter-round fillet ends as a sector, three corners around its arc, for the template) when it
+// turns by more than kOpenConvexLimit and at most kOpenConvexMax. (A fillet of more than that rounds
+// an acute corner: cut square at its ends, it would leave a sharp corner at its centre, 180 degrees
+// less its turn; it stays in a side.)
+// Inputs: ring, a loop of a region; rules. Output: its convex runs, in the ring's order (none on a
+//         loop of side vertices only: a disk, a rounded rectangle).
+std::vector<ArcRun> convex_runs(const Ring& ring, const BlockRules& rules = {});
+constexpr double kOpenConvexLimit = 60.0 * M_PI / 180.0;
+constexpr double kOpenConvexMax = 120.0 * M_PI / 180.0;
+
+// Inputs: run, a convex run. Output: true when it turns by more than kOpenConvexLimit and at most
+//         kOpenConvexMax, with an open end: what the policies cut square at its open ends.
+inline bool open_fillet(const ArcRun& run) {
+  return (run.open_before || run.open_after) && run.turn > kOpenConvexLimit && run.turn <= kOpenConvexMax;
+}
+
+// Inputs: ring; rules. Output: true when one of its convex runs is an open fillet (open_fillet).
+bool open_convex_run(const Ring& ring, const BlockRules& rules = {});
+
+// Inputs: region; rules. Output: true when its outer loop has such a run (open_convex_run) and three
+//         corners or more: the policies cut it square at the run's open ends (region_candidates.h)
+//         rather than finish it with the usual template, whose sides would take the run whole. (The
+//         smooth template, for fewer corners, and the template's legality, template_applies, are
+//         unchanged.)
+bool fillet_needs_cuts(const Region& region, const BlockRules& rules = {});
 
 // A concave run of more than this (radians) counts as a reflex corner even when both its ends are
 // closed (region_candidates.h): no block side, nor a template side, takes it whole.

@@ -96,18 +96,26 @@ Complexity part_complexity(const Region& part, const BlockRules& rules) {
   for (int k = 0; k < part.loop_count(); ++k) {
     const Ring& ring = part.loop(k);
     bool concave_side = false;
+    int convex_side = 0;
     for (size_t i = 0; i < ring.size(); ++i) {
       const VertexShape shape = vertex_shape(ring, i, rules);
       if (shape.side) {
         concave_side = concave_side || shape.reflex;
+        convex_side += !shape.reflex;
         continue;
       }
       if (shape.reflex) ++c.reflex;
       ++c.corners;
     }
+    // A long convex arc's open ends act as corners (a fillet in the middle of a side: two).
+    if (convex_side >= 3) {
+      for (const ArcRun& run : convex_runs(ring, rules)) {
+        if (open_fillet(run)) c.corners += static_cast<int>(run.open_before) + static_cast<int>(run.open_after);
+      }
+    }
     if (!concave_side) continue;  // no concave run (every run is made of such vertices)
     // A concave arc's open ends act as reflex corners (a fillet: two), and so does a long one.
-    for (const ConcaveRun& run : concave_runs(ring, rules)) {
+    for (const ArcRun& run : concave_runs(ring, rules)) {
       c.reflex += static_cast<int>(run.open_before) + static_cast<int>(run.open_after);
       if (!run.open_before && !run.open_after && run.turn > kClosedRunLimit) ++c.reflex;
     }
@@ -194,7 +202,9 @@ std::vector<RegionAction> region_candidates(const Region& part) {
     }
   }
   if (part.holes().size() >= 2) hole_separating_cuts(part, smooth_holes, ax, ay, &actions);
-  if (template_applies(part) && !is_block(part)) actions.push_back({RegionAction::Kind::Template, {}});
+  if (template_applies(part) && !is_block(part) && !fillet_needs_cuts(part)) {
+    actions.push_back({RegionAction::Kind::Template, {}});
+  }
   return actions;
 }
 
@@ -217,18 +227,22 @@ RegionAction progress_action(const Region& part, const BlockRules& rules) {
   }
   const Ring& ring = part.outer();
   const size_t m = ring.size();
+  // At an arc's open end, the cut square to the boundary there (it closes that end).
+  auto square_at_open_ends = [&](const ArcRun& run) {
+    if (run.open_before) {
+      const Point2 p = ring[(run.first + m - 1) % m], v = ring[run.first];
+      tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {-(v.y - p.y), v.x - p.x}}});
+    }
+    if (run.open_after) {
+      const Point2 v = ring[run.last], n = ring[(run.last + 1) % m];
+      tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {-(n.y - v.y), n.x - v.x}}});
+    }
+  };
   if (part.holes().empty()) {
-    // At a concave arc's open end, the cut square to the boundary (it closes that end); across a
-    // long closed one, the cut square to it at its middle vertex.
-    for (const ConcaveRun& run : concave_runs(ring, rules)) {
-      if (run.open_before) {
-        const Point2 p = ring[(run.first + m - 1) % m], v = ring[run.first];
-        tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {-(v.y - p.y), v.x - p.x}}});
-      }
-      if (run.open_after) {
-        const Point2 v = ring[run.last], n = ring[(run.last + 1) % m];
-        tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {-(n.y - v.y), n.x - v.x}}});
-      }
+    // At a concave arc's open ends, the square cuts; across a long closed one, the cut square to it at
+    // its middle vertex.
+    for (const ArcRun& run : concave_runs(ring, rules)) {
+      square_at_open_ends(run);
       if (!run.open_before && !run.open_after && run.turn > kClosedRunLimit) {
         const size_t count = (run.last + m - run.first) % m + 1, i = (run.first + count / 2) % m;
         const Point2 p = ring[(i + m - 1) % m], n = ring[(i + 1) % m];
@@ -244,6 +258,10 @@ RegionAction progress_action(const Region& part, const BlockRules& rules) {
         tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - p.x, v.y - p.y}}});
         tries.push_back({RegionAction::Kind::Cut, {CutKind::Partial, v, {v.x - n.x, v.y - n.y}}});
       }
+    }
+    // At a long convex arc's open end, the cut square to the boundary (block.h convex_runs).
+    for (const ArcRun& run : convex_runs(ring, rules)) {
+      if (open_fillet(run)) square_at_open_ends(run);
     }
     if (tries.empty()) {
       std::vector<size_t> corners;

@@ -307,7 +307,7 @@ Ring filleted_l() {
 TEST_CASE("concave arcs: runs, their open ends, and the template on a fillet's corner piece", "[region][block][arc]") {
   // The fillet is one concave run of 90 degrees, open at both ends (the edges run on 4 beyond it).
   const Ring l = filleted_l();
-  std::vector<ConcaveRun> runs = concave_runs(l);
+  std::vector<ArcRun> runs = concave_runs(l);
   REQUIRE(runs.size() == 1);
   CHECK(runs[0].turn == Approx(M_PI / 2).epsilon(1e-9));
   CHECK(l[runs[0].first].x == Approx(6.0));  // (6, 4): the tangent join with the lower edge
@@ -353,4 +353,72 @@ TEST_CASE("concave arcs: runs, their open ends, and the template on a fillet's c
   REQUIRE(runs.size() == 1);
   CHECK(runs[0].turn > kClosedRunLimit);  // 165 degrees (its ends are corners)
   CHECK_FALSE(template_applies(Region(half, {}, kQ)));
+}
+
+namespace {
+
+// A 10 x 6 rectangle whose top-right corner is rounded with radius 2 (centre (8, 4); arc samples every
+// 15 degrees, side vertices): the arc runs from (10, 4) to (8, 6), meeting both edges tangentially.
+Ring rounded_corner_rectangle() {
+  Ring ring{{0, 0}, {10, 0}};
+  for (int k = 0; k <= 6; ++k) ring.push_back({8 + 2 * std::cos(k * M_PI / 12), 4 + 2 * std::sin(k * M_PI / 12)});
+  ring.push_back({0, 6});
+  return ring;
+}
+
+}  // namespace
+
+TEST_CASE("convex arcs: a fillet running on into straight edges is cut square at its ends; its sector is no such run",
+          "[region][block][arc]") {
+  const Ring rounded = rounded_corner_rectangle();
+  std::vector<ArcRun> runs = convex_runs(rounded);
+  REQUIRE(runs.size() == 1);
+  CHECK(runs[0].turn == Approx(M_PI / 2).epsilon(1e-9));
+  CHECK(rounded[runs[0].first].y == Approx(4.0));  // (10, 4)
+  CHECK(rounded[runs[0].last].x == Approx(8.0));   // (8, 6)
+  CHECK(runs[0].open_before);
+  CHECK(runs[0].open_after);
+  CHECK(open_convex_run(rounded));
+  // Three corners and the fillet: the usual template would take it whole into a side; the policies
+  // cut it (the template stays legal: a replayed decomposition that used it still replays).
+  const Region part(rounded, {}, kQ);
+  CHECK(fillet_needs_cuts(part));
+  CHECK(template_applies(part));
+  // The same rectangle with its top-left corner chamfered has four corners (two of 135 degrees, within
+  // the default rules): no block while the fillet lies open in its side.
+  Ring chamfered(rounded.begin(), rounded.end() - 1);
+  chamfered.push_back({2, 6});
+  chamfered.push_back({0, 4});
+  CHECK_FALSE(is_block(Region(chamfered, {}, kQ)));
+  // Its sector, cut square at both ends (corners (8, 4), (10, 4), (8, 6)): the run is closed at both
+  // ends, so it is no open fillet; the template finishes it (three quads around a three-valent centre).
+  Ring sector{{8, 4}};
+  for (int k = 0; k <= 6; ++k) sector.push_back({8 + 2 * std::cos(k * M_PI / 12), 4 + 2 * std::sin(k * M_PI / 12)});
+  runs = convex_runs(sector);
+  REQUIRE(runs.size() == 1);
+  CHECK_FALSE(runs[0].open_before);
+  CHECK_FALSE(runs[0].open_after);
+  const Region sector_part(sector, {}, kQ);
+  CHECK_FALSE(fillet_needs_cuts(sector_part));
+  CHECK(template_pieces(sector_part).size() == 3);
+  // A run of rounding (side vertices turned a little) is none; nor is a disk's (no vertex outside it).
+  CHECK(convex_runs(Ring{{0, 0}, {2, -0.01}, {4, 0}, {4, 4}, {0, 4}}).empty());
+  Ring disk;
+  for (int k = 0; k < 24; ++k) disk.push_back({std::cos(k * M_PI / 12), std::sin(k * M_PI / 12)});
+  CHECK(convex_runs(disk).empty());
+  // A fillet of more than kOpenConvexMax rounds an acute corner (cut square at its ends it would leave
+  // a sharp corner at its centre): it stays in a side. A wedge of 30 degrees whose tip is rounded (150).
+  // The tip's circle (radius 1) sits at (10 + d, 0), d = 1 / sin 15: the sides' lines meet at
+  // (10 + 2 d, 0); they run from its tangent points (at -75 and 75 degrees) back to x = 0.
+  const double half = 15 * M_PI / 180, d = 1 / std::sin(half), y0 = std::tan(half) * (10 + 2 * d);
+  Ring wedge{{0, -y0}};
+  for (int k = 0; k <= 10; ++k) {
+    const double a = -(M_PI / 2 - half) + k * (M_PI - 2 * half) / 10;  // lower tangent point, round the tip
+    wedge.push_back({10 + d + std::cos(a), std::sin(a)});
+  }
+  wedge.push_back({0, y0});
+  runs = convex_runs(wedge);
+  REQUIRE(runs.size() == 1);
+  CHECK(runs[0].turn > kOpenConvexMax);
+  CHECK_FALSE(open_convex_run(wedge));
 }

@@ -244,3 +244,44 @@ TEST_CASE("score_candidates keeping the best k: the same k best as scoring every
   CHECK(compared > 200);
   CHECK(left_out > 0);  // the bound leaves candidates out (mesh preset, parts without holes)
 }
+
+TEST_CASE("a convex fillet: its open ends count as corners, cut square to the edges; its sector takes the template",
+          "[region][policy][arc]") {
+  // A 10 x 6 rectangle whose top-right corner is rounded with radius 2 (centre (8, 4); samples every 15
+  // degrees). Three corners and the fillet's two open ends: complexity 5.
+  const double q = 1e-7;
+  Ring ring{{0, 0}, {10, 0}};
+  for (int k = 0; k <= 6; ++k) ring.push_back({8 + 2 * std::cos(k * M_PI / 12), 4 + 2 * std::sin(k * M_PI / 12)});
+  ring.push_back({0, 6});
+  const Region part(ring, {}, q);
+  CHECK(part_complexity(part).corners == 5);
+  // The usual template would take the fillet into a side: not a candidate.
+  for (const RegionAction& a : region_candidates(part)) CHECK(a.kind == RegionAction::Kind::Cut);
+  // The cut square to the top edge at the fillet's end (8, 6), down to the bottom: progress (the strip
+  // keeps one open end, the rest is a rectangle).
+  CHECK(makes_progress(part, cut_region(part, RegionCut{CutKind::Partial, {8, 6}, {0, -1}}).pieces));
+  // A cut from a sample in the middle of the arc makes none.
+  const Point2 mid = ring[5];
+  CHECK_FALSE(makes_progress(part, cut_region(part, RegionCut{CutKind::Partial, mid, {-1, 0}}).pieces));
+  const RegionAction action = progress_action(part);
+  REQUIRE(action.kind == RegionAction::Kind::Cut);
+  CHECK(((action.cut.origin.x == Approx(10) && action.cut.origin.y == Approx(4)) ||
+         (action.cut.origin.x == Approx(8) && action.cut.origin.y == Approx(6))));
+  CHECK(std::fabs(action.cut.direction.x * action.cut.direction.y) < 1e-12);
+  // The search (mesh preset) finishes it with the fillet's sector as a template (within the square of
+  // the fillet's circle, [6, 10] x [2, 6]: cut at the arc's ends, square to the edge or to the arc's
+  // first chord, 7.5 degrees apart) and the rest in blocks; greedy finishes it too.
+  RegionEpisodeOptions options;
+  options.reward = RewardPreset::Mesh;
+  RegionSearchPolicy search;
+  const RegionDecomposition d = decompose_region(part, search, options);
+  REQUIRE(d.complete());
+  REQUIRE(d.templates == 1);
+  for (const FinishedRegion& f : d.finished) {
+    if (!f.is_template) continue;
+    CHECK(f.region.area() > 0.9 * M_PI);
+    for (const Point2& p : f.region.outer()) CHECK((p.x >= 6 && p.y >= 2));
+  }
+  RegionGreedyPolicy greedy;
+  CHECK(decompose_region(part, greedy, options).complete());
+}
