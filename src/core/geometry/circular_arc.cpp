@@ -41,7 +41,7 @@ int arc_chord_count(const CircularArc& arc, double max_step_degrees) {
 }
 
 bool short_arc(const CircularArc& arc, double face_size) {
-  return !full_circle(arc) && std::fabs(arc.sweep) <= kShortArcMaxDegrees * kPi / 180.0 &&
+  return !full_circle(arc) && (!arc.outside || std::fabs(arc.sweep) <= kShortArcMaxDegrees * kPi / 180.0) &&
          arc.length() < kShortArcFraction * face_size;
 }
 

@@ -52,12 +52,13 @@ struct CircularArc {
 int arc_chord_count(const CircularArc& arc, double max_step_degrees = kArcStepDegrees);
 
 // An arc of a face shorter than this fraction of the longer side of the face's bounding box (the
-// default element size, interval_assignment.h kDefaultSizeDivisions), turning by at most
-// kShortArcMaxDegrees, is polygonised as one chord between its ends (CircularArc::chords = 1): a fillet
-// smaller than an element is a corner to the engines (a convex one a chamfer of two corners, a concave
-// one its sharp corner, circumscribed), where its samples would be side vertices that force an
-// interval per chord (mesh_pipeline.cpp) and bunch the elements around it. Its mesh nodes still lie on
-// the arc.
+// default element size, interval_assignment.h kDefaultSizeDivisions) is polygonised as one chord
+// between its ends (CircularArc::chords = 1): a fillet smaller than an element is a corner to the
+// engines (a convex one a chamfer of two corners, an acute corner's a short flat end; a concave one
+// its sharp corner, circumscribed, when it turns by at most kShortArcMaxDegrees: the tangents of a
+// longer one meet far out, or not at all), where its samples would be side vertices that force an
+// interval per chord (mesh_pipeline.cpp) and bunch the elements around it. Its mesh nodes still lie
+// on the arc.
 constexpr double kShortArcFraction = 1.0 / 20.0;
 constexpr double kShortArcMaxDegrees = 120.0;
 

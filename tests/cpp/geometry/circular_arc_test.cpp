@@ -67,3 +67,32 @@ TEST_CASE("the gap between a segment and its arc against hand values", "[geometr
   CHECK(arc_gap(circle3, {3, -3 * t}, {3, 3 * t}).area == Approx(9.0 * (kPi / 12 - t)));
   CHECK(arc_gap(circle3, {3, -3 * t}, {3, 3 * t}).arc_length == Approx(3.0 * kPi / 6));
 }
+
+TEST_CASE("a short arc is one chord: any convex one, a concave one up to 120 degrees", "[geometry][arc]") {
+  // Face size 20: the default element size is 1; these arcs are under 1 long (radius 0.3).
+  CircularArc fillet{{0, 0}, 0.3, 0.0, 0.5 * kPi};
+  CHECK(short_arc(fillet, 20.0));
+  CHECK_FALSE(short_arc(fillet, 5.0));  // an element of 0.25: longer than one
+  CircularArc tip{{0, 0}, 0.3, 0.0, 150 * kPi / 180};  // an acute corner's: a flat end of two corners
+  CHECK(short_arc(tip, 20.0));
+  tip.outside = true;  // concave: its tangents meet 0.3 / cos 75 out, too far for its sharp corner
+  CHECK_FALSE(short_arc(tip, 20.0));
+  fillet.outside = true;
+  CHECK(short_arc(fillet, 20.0));
+  CHECK_FALSE(short_arc(CircularArc{{0, 0}, 0.1, 0.0, 2 * kPi}, 20.0));  // a small hole stays a circle
+  // One chord: inscribed, its two ends; circumscribed, the tangents' meeting point between them (a
+  // quarter of its overshoot farther out, so that the ends stay vertices).
+  fillet.chords = 1;
+  CHECK(arc_chord_count(fillet) == 1);
+  const std::vector<Point2> corner = polygonise_arc(fillet);
+  REQUIRE(corner.size() == 3);
+  const double reach = 0.3 / std::cos(0.25 * kPi);
+  CHECK(std::hypot(corner[1].x, corner[1].y) == Approx(reach + 0.25 * (reach - 0.3)));
+  fillet.outside = false;
+  CHECK(polygonise_arc(fillet).size() == 2);
+  // The chord between its ends is a chord of it (its whole sweep, more than two default chord steps).
+  FaceArcs arcs;
+  arcs.arcs = {fillet};
+  arcs.tolerance = 1e-9;
+  CHECK(arcs.arc_of_chord(fillet.first(), fillet.last()) == 0);
+}
