@@ -71,9 +71,12 @@ BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, do
   model.parts = static_cast<int>(d.finished.size());
   // Vertices are one within the tolerance that imprints a vertex into a side: a vertex nearer a side's
   // end than that is not imprinted, so it must be that end (two templates' feet on their shared side
-  // 1.6 quanta apart were neither).
+  // 1.6 quanta apart were neither). They are one up to twice that: where two cuts meet at a shallow
+  // angle, the parts on either side round their meeting point to lattice points several quanta apart
+  // along the cuts (5 quanta at 15 degrees on face 56 of the arc property test), and each of the two
+  // points, imprinted into the other parts' sides, made an edge between them that three pieces used.
   const double tolerance = kModelToleranceQuanta * quantum;
-  VertexIndex index(&model.vertices, tolerance);
+  VertexIndex index(&model.vertices, 2.0 * tolerance);
 
   // The pieces, their loops as vertex ids.
   std::vector<LoopPiece> pieces;

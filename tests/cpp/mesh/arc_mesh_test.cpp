@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <utility>
 #include <vector>
 #include <cstdlib>
@@ -184,21 +183,19 @@ TEST_CASE("arc faces: the gap between the quads and the arcs shrinks with the el
 
 namespace {
 
-// The generated faces of the property test below (seed 20261201, scales 37 and 1 in turn) that the
-// greedy decomposition and mesh do not handle yet: rounded plate 56 "an edge of part 42 is used by
-// more than two pieces" (block_model). It runs in its own test, expected to fail until core/region and
-// core/mesh handle it; then it moves back. (36 and 37 moved back with the O-grid and the arcs' merged
-// edges; filleted union 22, whose reflex fillets left slivers, with the concave runs of block.h.)
-const std::vector<int> kArcFacesFailingToday{56};
+// The generated faces of the property test below (seed 20261201, scales 37 and 1 in turn) all mesh:
+// 36 and 37 since the O-grid and the arcs' merged edges; filleted union 22, whose reflex fillets left
+// slivers, since the concave runs of block.h; rounded plate 56 ("an edge is used by more than two
+// pieces": two cuts meeting at 15 degrees, their meeting point rounded 5 quanta apart in the parts on
+// either side) since block_model merges vertices up to twice its tolerance.
 
-// Inputs: check, the faces to mesh (by index). Output: how many of them meshed conformally, and how many
-//         were checked. The faces are random_arc_face's from seed 20261201, scales 37 and 1 in turn.
-std::pair<int, int> mesh_generated_arc_faces(int count, const std::function<bool(int)>& check) {
+// Inputs: count, the faces to mesh. Output: how many of them meshed conformally, and how many were
+//         checked. The faces are random_arc_face's from seed 20261201, scales 37 and 1 in turn.
+std::pair<int, int> mesh_generated_arc_faces(int count) {
   std::mt19937_64 rng(20261201);
   int faces = 0, checked = 0;
   for (int i = 0; i < count; ++i) {
     const ArcFace f = random_arc_face(rng, i % 2 ? 1.0 : 37.0);
-    if (!check(i)) continue;
     ++checked;
     INFO("face " << i << ": " << f.name);
     REQUIRE(occt_shape_valid(f.face));
@@ -209,20 +206,11 @@ std::pair<int, int> mesh_generated_arc_faces(int count, const std::function<bool
   return {faces, checked};
 }
 
-bool failing_today(int i) {
-  return std::find(kArcFacesFailingToday.begin(), kArcFacesFailingToday.end(), i) != kArcFacesFailingToday.end();
-}
-
 }  // namespace
 
 TEST_CASE("arc faces: generated plates, fillets and slots all mesh conformally", "[mesh][arc][property]") {
   const int count = std::getenv("AUTOBLOCK_ARC_FACES") ? std::atoi(std::getenv("AUTOBLOCK_ARC_FACES")) : 60;
-  const auto [faces, checked] = mesh_generated_arc_faces(count, [](int i) { return !failing_today(i); });
+  const auto [faces, checked] = mesh_generated_arc_faces(count);
   CHECK(faces == checked);
 }
 
-TEST_CASE("arc faces: the generated faces that fail today mesh conformally", "[mesh][arc][property][!mayfail]") {
-  const auto [faces, checked] = mesh_generated_arc_faces(kArcFacesFailingToday.back() + 1, failing_today);
-  CHECK(checked == static_cast<int>(kArcFacesFailingToday.size()));
-  CHECK(faces == checked);
-}
