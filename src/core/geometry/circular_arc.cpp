@@ -41,8 +41,8 @@ int arc_chord_count(const CircularArc& arc, double max_step_degrees) {
 }
 
 bool short_arc(const CircularArc& arc, double face_size) {
-  return !full_circle(arc) && (!arc.outside || std::fabs(arc.sweep) <= kShortArcMaxDegrees * kPi / 180.0) &&
-         arc.length() < kShortArcFraction * face_size;
+  const double limit = arc.outside ? kShortArcMaxDegrees : kShortConvexArcMaxDegrees;
+  return std::fabs(arc.sweep) <= limit * kPi / 180.0 && arc.length() < kShortArcFraction * face_size;
 }
 
 std::vector<Point2> polygonise_arc(const CircularArc& arc, double max_step_degrees) {

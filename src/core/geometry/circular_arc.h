@@ -54,13 +54,15 @@ int arc_chord_count(const CircularArc& arc, double max_step_degrees = kArcStepDe
 // An arc of a face shorter than this fraction of the longer side of the face's bounding box (the
 // default element size, interval_assignment.h kDefaultSizeDivisions) is polygonised as one chord
 // between its ends (CircularArc::chords = 1): a fillet smaller than an element is a corner to the
-// engines (a convex one a chamfer of two corners, an acute corner's a short flat end; a concave one
-// its sharp corner, circumscribed, when it turns by at most kShortArcMaxDegrees: the tangents of a
-// longer one meet far out, or not at all), where its samples would be side vertices that force an
-// interval per chord (mesh_pipeline.cpp) and bunch the elements around it. Its mesh nodes still lie
-// on the arc.
+// engines (a convex one a chamfer of two corners, an acute corner's a short flat end, when it turns
+// by at most kShortConvexArcMaxDegrees: one chord of half a circle or more would not be one, arc_gap;
+// a concave one its sharp corner, circumscribed, when it turns by at most kShortArcMaxDegrees: the
+// tangents of a longer one meet far out, or not at all), where its samples would be side vertices that
+// force an interval per chord (mesh_pipeline.cpp) and bunch the elements around it. Its mesh nodes
+// still lie on the arc.
 constexpr double kShortArcFraction = 1.0 / 20.0;
 constexpr double kShortArcMaxDegrees = 120.0;
+constexpr double kShortConvexArcMaxDegrees = 170.0;
 
 // Inputs:  arc, not a full circle; the longer side of its face's bounding box.
 // Outputs: true when it is a short arc (above): polygonised as one chord.

@@ -68,7 +68,7 @@ TEST_CASE("the gap between a segment and its arc against hand values", "[geometr
   CHECK(arc_gap(circle3, {3, -3 * t}, {3, 3 * t}).arc_length == Approx(3.0 * kPi / 6));
 }
 
-TEST_CASE("a short arc is one chord: any convex one, a concave one up to 120 degrees", "[geometry][arc]") {
+TEST_CASE("a short arc is one chord: a convex one up to 170 degrees, a concave one up to 120", "[geometry][arc]") {
   // Face size 20: the default element size is 1; these arcs are under 1 long (radius 0.3).
   CircularArc fillet{{0, 0}, 0.3, 0.0, 0.5 * kPi};
   CHECK(short_arc(fillet, 20.0));
@@ -80,6 +80,8 @@ TEST_CASE("a short arc is one chord: any convex one, a concave one up to 120 deg
   fillet.outside = true;
   CHECK(short_arc(fillet, 20.0));
   CHECK_FALSE(short_arc(CircularArc{{0, 0}, 0.1, 0.0, 2 * kPi}, 20.0));  // a small hole stays a circle
+  // Nor is a small lobe of half a circle or more one chord (the chord would cut its neck).
+  CHECK_FALSE(short_arc(CircularArc{{0, 0}, 0.1, 0.0, 1.5 * kPi}, 20.0));
   // One chord: inscribed, its two ends; circumscribed, the tangents' meeting point between them (a
   // quarter of its overshoot farther out, so that the ends stay vertices).
   fillet.chords = 1;
