@@ -64,8 +64,9 @@ constexpr double kShortArcFraction = 1.0 / 20.0;
 constexpr double kShortArcMaxDegrees = 120.0;
 constexpr double kShortConvexArcMaxDegrees = 170.0;
 
-// Inputs:  arc, not a full circle; the longer side of its face's bounding box.
-// Outputs: true when it is a short arc (above): polygonised as one chord.
+// Inputs:  arc; the longer side of its face's bounding box.
+// Outputs: true when it is a short arc (above): polygonised as one chord (never a full circle: it
+//          turns by more than either limit).
 bool short_arc(const CircularArc& arc, double face_size);
 
 // Inputs:  arc. Outputs: its polygon, first point to last: inscribed, arc_chord_count + 1 points on

@@ -187,11 +187,13 @@ std::optional<std::array<int, 4>> block_corners(const Region& region, const Bloc
   std::array<int, 4> corners{};
   int count = 0;
   bool concave_side = false;
+  int convex_side = 0;
   // Four corners first (side vertices by cross and dot products), then their angles.
   for (size_t i = 0; i < ring.size(); ++i) {
     const VertexShape shape = vertex_shape(ring, i, rules);
     if (shape.side) {
       concave_side = concave_side || shape.reflex;
+      convex_side += !shape.reflex;
       continue;
     }
     if (count == 4) return std::nullopt;
@@ -206,8 +208,10 @@ std::optional<std::array<int, 4>> block_corners(const Region& region, const Bloc
     }
   }
   // So does a long convex arc with an open end (a fillet running on into straight edges): the quads
-  // beside it are squeezed; cut square at its ends, it is a side of its own.
-  if (ring.size() > 6 && open_convex_run(ring, rules)) return std::nullopt;
+  // beside it are squeezed; cut square at its ends, it is a side of its own. (Such a run turns by more
+  // than kOpenConvexLimit, at most the flat tolerance per vertex: three convex side vertices or
+  // more; part_complexity looks for it only so too.)
+  if (convex_side >= 3 && open_convex_run(ring, rules)) return std::nullopt;
   // Each corner's angle t within [min, max] by its cosine (t in (0, pi] once not reflex, where the
   // cosine decreases): no trigonometry per corner.
   const double cos_min = std::cos(rules.min_corner_degrees * kDegree), cos_max = std::cos(rules.max_corner_degrees * kDegree);
