@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <exception>
+#include <stdexcept>
+#include <vector>
 
 #include "core/common/error.h"
 #include "core/mesh/mesh_picture.h"
@@ -15,94 +17,110 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
   DecomposeSettings decompose = settings;
   decompose.occt_blocks = false;
   FaceMeshing out;
-  out.corner_fraction = settings.corner_fraction;
-  out.search_width = settings.policy_settings.general_search_width > 0 ? settings.policy_settings.general_search_width
-                                                                       : RegionSearchOptions{}.width;
-  out.decomposition = decompose_input_face(face, decompose);
-  if (face.is_general()) {
-    // The OpenCASCADE model, if wanted, of the kept decomposition only (not of every attempt).
-    const bool occt_model = options.occt_model;
-    options.occt_model = false;
-    options.general.max_steps = settings.max_steps;
-    options.general.reward = out.decomposition.region.reward;
-    const bool searched = out.decomposition.region.policy == "search";
-    // The search's first mesh failing for a reason of ours (blocks that admit no interval counts, say)
-    // is not the end: the other tries below may mesh the face; if none does, that error is the answer
-    // (set while no try has meshed).
-    std::exception_ptr first_error;
-    try {
-      out.result = mesh_region_decomposition(face, out.decomposition.region, options);
-    } catch (const InputError&) {
-      throw;
-    } catch (const std::exception&) {
-      if (!searched) throw;
-      first_error = std::current_exception();
-    }
-    // A poor mesh from the search: other block rules may do better (a face whose good blocks need
-    // corners just outside the rules, or whose rules forbid the cut that matters).
-    // Measured against the topology bound (block.h), not the corners' alone: a disk, a fillet or a
-    // round hole caps every mesh of the face below its corner bound, and a try cannot beat that.
-    auto ratio = [](const MeshResult& r) {
-      return r.conformity.conformal ? r.quality.min_scaled_jacobian / r.topology_bound : -1e300;
-    };
-    for (const SearchRetry& retry_with : kSearchRetries) {
-      if (!searched || (!first_error && ratio(out.result) >= kRetryBelow)) break;
-      const double fraction = retry_with.corner_fraction;
-      decompose.corner_fraction = fraction;
-      decompose.policy_settings.general_search_width = retry_with.width;
-      // (The replay takes its block rules from the decomposition: no options to change for it.)
-      FaceDecomposition again = decompose_input_face(face, decompose);
-      ++out.attempts;
-      // Another try that leaves a part unfinished (under other block rules the fallback may find no
-      // cut that makes progress on some part) is no mesh: the one kept stands.
-      if (!again.region.complete()) continue;
-      MeshResult meshed;
-      try {
-        meshed = mesh_region_decomposition(face, again.region, options);
-      } catch (const InputError&) {
-        throw;
-      } catch (const std::exception&) {
-        continue;  // this try's blocks failed to mesh: the mesh kept stands
-      }
-      if (first_error || ratio(meshed) > ratio(out.result)) {
-        first_error = nullptr;
-        out.decomposition = std::move(again);
-        out.result = std::move(meshed);
-        out.corner_fraction = fraction;
-        out.search_width = retry_with.width;
-      }
-    }
-    // Still poor: the kept blocks meshed with at least two intervals on every model edge (a small
-    // block one element across, meshed corner to corner through its side vertices, is what holds the
-    // minimum down then; more elements there lift it). Skipped when the user's counts or the quad
-    // limit forbid it.
-    if (first_error) std::rethrow_exception(first_error);
-    if (searched && ratio(out.result) < kRetryBelow && options.min_edge_intervals < 2) {
-      MeshOptions finer = options;
-      finer.min_edge_intervals = 2;
-      try {
-        MeshResult meshed = mesh_region_decomposition(face, out.decomposition.region, finer);
-        ++out.attempts;
-        if (ratio(meshed) > ratio(out.result)) {
-          out.result = std::move(meshed);
-          out.min_edge_intervals = 2;
-        }
-      } catch (const std::exception&) {
-        // infeasible with the fixed counts, too many quads, or no counts at all: the mesh stays as it is
-      }
-    }
+  if (!face.is_general()) {
+    out.decomposition = decompose_input_face(face, decompose);
+    const Decomposition& d = out.decomposition.decomposition;
+    options.episode.max_steps = settings.max_steps;
+    options.episode.reward = d.reward;
+    out.result = mesh_decomposition(face, d, options);
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+  }
+  // The OpenCASCADE model, if wanted, of the kept decomposition only (not of every try).
+  const bool occt_model = options.occt_model;
+  options.occt_model = false;
+  options.general.max_steps = settings.max_steps;
+  // The tries: kSearchTries, the first with the settings' block rules and width if set (the others
+  // as listed, that one left out). A policy other than the search makes one decomposition, meshed once.
+  const int set_width = settings.policy_settings.general_search_width;
+  std::vector<SearchTry> tries{{set_width > 0 ? set_width : kSearchTries[0].width, settings.corner_fraction}};
+  for (const SearchTry& t : kSearchTries) {
+    if (t.width != tries[0].width || t.corner_fraction != tries[0].corner_fraction) tries.push_back(t);
+  }
+  auto finish = [&] {
     if (occt_model) {
       const auto replay_start = std::chrono::steady_clock::now();
       out.result.model = region_occt_model(face, out.decomposition.region, options);
       out.result.merge_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - replay_start).count();
     }
-  } else {
-    const Decomposition& d = out.decomposition.decomposition;
-    options.episode.max_steps = settings.max_steps;
-    options.episode.reward = d.reward;
-    out.result = mesh_decomposition(face, d, options);
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  // Measured against the topology bound (block.h), not the corners' alone: a disk, a fillet or a
+  // round hole caps every mesh of the face below its corner bound, and a try cannot beat that.
+  auto ratio = [](const MeshResult& r) {
+    return r.conformity.conformal ? r.quality.min_scaled_jacobian / r.topology_bound : -1e300;
+  };
+  bool have = false;        // a try has meshed (out.result is its mesh)
+  bool searched = true;     // the policy is the search (known after the first decomposition)
+  std::exception_ptr first_error;
+  out.attempts = 0;
+  for (size_t k = 0; k < tries.size() && searched; ++k) {
+    if (have && ratio(out.result) >= kRetryBelow) break;
+    decompose.corner_fraction = tries[k].corner_fraction;
+    decompose.policy_settings.general_search_width = tries[k].width;
+    // (The replay takes its block rules from the decomposition: no options to change for it.)
+    FaceDecomposition again = decompose_input_face(face, decompose);
+    ++out.attempts;
+    searched = again.region.policy == "search";
+    if (!searched) {
+      // Another policy: its one decomposition, meshed (its failure is the answer).
+      options.general.reward = again.region.reward;
+      out.decomposition = std::move(again);
+      out.result = mesh_region_decomposition(face, out.decomposition.region, options);
+      out.corner_fraction = settings.corner_fraction;
+      finish();
+      return out;
+    }
+    options.general.reward = again.region.reward;
+    if (!again.region.complete() && (have || k + 1 < tries.size() || first_error)) {
+      // A try that leaves a part unfinished (under other block rules the fallback may find no cut
+      // that makes progress on some part) is no mesh: another try may do better. The last one, with
+      // nothing meshed, is meshed below as it is (mesh_region_decomposition says what is wrong).
+      continue;
+    }
+    MeshResult meshed;
+    try {
+      meshed = mesh_region_decomposition(face, again.region, options);
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::exception&) {
+      // This try's blocks failed to mesh (a reason of ours: blocks that admit no interval counts,
+      // say): the other tries may mesh the face; if none does, the first failure is the answer.
+      if (!first_error) first_error = std::current_exception();
+      continue;
+    }
+    int min_edge_intervals = options.min_edge_intervals;
+    // A poor mesh: the same blocks with at least two intervals on every model edge (a small block one
+    // element across, meshed corner to corner through its side vertices, is what holds the minimum
+    // down then; more elements there lift it). Skipped when the user's counts or the quad limit
+    // forbid it.
+    if (ratio(meshed) < kRetryBelow && options.min_edge_intervals < 2) {
+      MeshOptions finer = options;
+      finer.min_edge_intervals = 2;
+      try {
+        MeshResult fine = mesh_region_decomposition(face, again.region, finer);
+        if (ratio(fine) > ratio(meshed)) {
+          meshed = std::move(fine);
+          min_edge_intervals = 2;
+        }
+      } catch (const std::exception&) {
+        // infeasible with the fixed counts, too many quads, or no counts at all: the mesh stays
+      }
+    }
+    if (!have || ratio(meshed) > ratio(out.result)) {
+      out.decomposition = std::move(again);
+      out.result = std::move(meshed);
+      out.corner_fraction = tries[k].corner_fraction;
+      out.search_width = tries[k].width;
+      out.min_edge_intervals = min_edge_intervals;
+      have = true;
+    }
   }
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!have) {
+    if (first_error) std::rethrow_exception(first_error);
+    throw std::logic_error("mesh_input_face: no try meshed and none failed");
+  }
+  finish();
   return out;
 }
 

@@ -33,24 +33,31 @@ struct FaceMeshing {
 //          mesh pipeline replays the cuts itself); options (size, fixed intervals, quad limit; the
 //          episode options are set from settings).
 // Outputs: the decomposition and its mesh, returned even when the conformity check fails (the caller
-//          reports it: FaceMeshing::result.conformity). A general face searched (auto, search) whose
-//          mesh stays below kRetryBelow of its topology bound (topology_jacobian_bound: what its
-//          corners, holes and arcs allow) is searched again (kSearchRetries: wider, then with
-//          stricter and with looser block rules) until one reaches it, and the conformal mesh with
-//          the best minimum scaled Jacobian is kept; if still below, the kept blocks are meshed again
-//          with at least two intervals per model edge, kept if better (attempts, search_width,
-//          corner_fraction and min_edge_intervals say what was kept); each search has the time limit.
-//          A searched face whose blocks fail to mesh (no interval counts for them, say: a rare web of
-//          templates whose sides' counts contradict) goes on to the other tries the same way; a try
-//          that fails is skipped; the first failure is thrown when every try fails.
+//          reports it: FaceMeshing::result.conformity). A general face searched (auto, search) is
+//          searched by the tries of kSearchTries in order, cheapest first, until one's mesh reaches
+//          kRetryBelow of the face's topology bound (topology_jacobian_bound: what its corners, holes
+//          and arcs allow); a try's mesh below it is meshed again with at least two intervals per
+//          model edge; the conformal mesh with the best minimum scaled Jacobian is kept (attempts,
+//          search_width, corner_fraction and min_edge_intervals say what was kept). Each search has
+//          the time limit. A search whose blocks fail to mesh (no interval counts for them, say: a
+//          rare web of templates whose sides' counts contradict), or that leaves a part unfinished,
+//          is skipped; the first failure is thrown when every try fails. A width set in settings
+//          makes the first try (the others follow, those of that width and rules left out).
 //          A general face's OpenCASCADE model (options.occt_model) is made of the kept blocks only.
 // Throws InputError for a bad policy, reward or request (see decompose_input_face, mesh_decomposition).
+//
+// Why narrow searches first: the search's reward does not see every mesh defect, so searches of other
+// widths and block rules give different decompositions whose meshes differ more than their rewards;
+// several cheap searches find a good mesh sooner than one wide one. On the 200-face arc benchmark
+// (BENCHMARKS.md, "Tries of a searched face") the first try, of width 2, is the one kept on most
+// faces, at a fraction of the default width's time.
 constexpr double kRetryBelow = 0.85;
-struct SearchRetry {
-  int width;               // candidates expanded per part (the default search: 4)
+struct SearchTry {
+  int width;               // candidates expanded per part (region_search.h; its default: 4)
   double corner_fraction;  // the block rules (face_actions.h)
 };
-constexpr SearchRetry kSearchRetries[] = {{8, kMeshCornerFraction}, {4, 0.95}, {4, 0.75}};
+constexpr SearchTry kSearchTries[] = {{2, kMeshCornerFraction}, {3, kMeshCornerFraction}, {4, kMeshCornerFraction},
+                                      {4, 0.95},                {4, 0.75},                {8, kMeshCornerFraction}};
 FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& settings, MeshOptions options);
 
 // Inputs:  face, a general face; actions, a whole cut sequence of it (as the workbench stores it, see

@@ -189,35 +189,47 @@ TEST_CASE("every face of a decomposition's conformal compound meshes on its own 
   CHECK(rectangles > 0);  // the grid engine's path is exercised
 }
 
-TEST_CASE("a poor searched mesh is searched again (wider, other block rules), and the best kept", "[api][general][mesh]") {
-  // A 12-gon with two holes (from the 5-12 vertex benchmark set) whose mesh under the default rules
-  // stays below kRetryBelow of its bound.
+TEST_CASE("a poor searched mesh is searched again (other widths, other block rules), and the best kept", "[api][general][mesh]") {
+  // A 12-gon with two holes (from the 5-12 vertex benchmark set) whose mesh from the search of width 4
+  // under the default rules stays below kRetryBelow of its bound; a width set in the settings makes
+  // the first try.
   const RectilinearPolygon polygon{{{-18.646142, -75.109508}, {37.180722, -44.086510}, {63.925294, -71.267773}, {66.163249, -47.635652}, {80.606792, -5.171962}, {21.939120, 88.004096}, {-18.657764, 55.630667}, {-51.198882, 45.317978}, {-93.111036, 29.260249}, {-75.146076, 7.209689}, {-63.371430, -9.786776}, {-47.259535, -28.066443}},
                                    {{{8.087885, -7.065174}, {3.895501, -2.080271}, {4.520537, 4.447645}, {11.373567, 6.131284}, {17.283882, 1.331738}, {15.104209, -6.893002}}, {{-9.985978, -5.882433}, {-16.974334, -2.384746}, {-15.366714, 3.654658}, {-6.897206, 7.469710}, {-2.428610, -1.367177}}}};
   const InputFace face = check_face(occt_face_from_polygon(polygon, 0.0, true), "twelve-gon");
   REQUIRE(face.is_general());
   DecomposeSettings settings;
   settings.policy_settings.general_time_limit = 0.0;  // the same searches on a loaded machine
+  settings.policy_settings.general_search_width = 4;
   settings.occt_blocks = false;
   MeshOptions options;
   options.general.reward = RewardPreset::Mesh;
   const FaceDecomposition first = decompose_input_face(face, settings);
   const MeshResult first_mesh = mesh_region_decomposition(face, first.region, options);
   const double first_ratio = first_mesh.quality.min_scaled_jacobian / first_mesh.bound;
+  INFO("first try: " << first_mesh.quality.min_scaled_jacobian << ", bound " << first_mesh.bound << ", topology bound " << first_mesh.topology_bound);
   REQUIRE(first_ratio < kRetryBelow);
   const FaceMeshing m = mesh_input_face(face, settings, MeshOptions{});
-  CHECK(m.attempts >= 2);
+  // Another search, or the same blocks with finer edges (attempts counts the searches).
+  CHECK((m.attempts >= 2 || m.min_edge_intervals > 1));
   CHECK(m.result.conformity.conformal);
-  // What was kept differs from the first attempt: a wider search, other block rules or finer edges.
-  const int default_width = RegionSearchOptions{}.width;
-  CHECK((m.search_width != default_width || m.corner_fraction != kMeshCornerFraction ||
-         m.min_edge_intervals > 1));
+  // What was kept differs from the first attempt: another width, other block rules or finer edges.
+  CHECK((m.search_width != 4 || m.corner_fraction != kMeshCornerFraction || m.min_edge_intervals > 1));
   CHECK(m.result.quality.min_scaled_jacobian / m.result.bound > first_ratio);
   CHECK(face_meshing_json("twelve-gon", m)["attempts"] == m.attempts);
-  // A good mesh is kept at the first attempt.
+  // Without a width, the tries begin with kSearchTries' first; a good mesh is kept at the first try.
+  settings.policy_settings.general_search_width = 0;
   const InputFace parallelogram = check_face(
       occt_face_from_polygon(RectilinearPolygon{{{0, 0}, {4, 0}, {5, 2}, {1, 2}}, {}}, 1.0, true), "parallelogram");
-  CHECK(mesh_input_face(parallelogram, settings, MeshOptions{}).attempts == 1);
+  const FaceMeshing once = mesh_input_face(parallelogram, settings, MeshOptions{});
+  CHECK(once.attempts == 1);
+  CHECK(once.search_width == kSearchTries[0].width);
+  CHECK(once.corner_fraction == kSearchTries[0].corner_fraction);
+  // Every try after the first is another search (no two alike), ending with the widest.
+  for (size_t i = 0; i < std::size(kSearchTries); ++i) {
+    for (size_t j = i + 1; j < std::size(kSearchTries); ++j) {
+      CHECK((kSearchTries[i].width != kSearchTries[j].width || kSearchTries[i].corner_fraction != kSearchTries[j].corner_fraction));
+    }
+  }
 }
 
 TEST_CASE("general faces: grid-only actions and learned policies say so", "[api][general][errors]") {
