@@ -13,7 +13,8 @@
 // rectangle leave a gap, the full cut across that axis through the gap's middle (it separates them,
 // so that each may get the O-grid, block.h).
 // At the vertices of a smooth hole (every vertex a side vertex: a circle, a slot, circular_arc.h) only
-// the bisector (square to the hole), the others running nearly along it.
+// the bisector (square to the hole), the others running nearly along it; at another side vertex (an
+// arc's sample, a cut's end on an edge) all but its edges' extensions, which run along the boundary.
 // Duplicate directions (parallel within 1e-9 rad) are listed once. On a convex part that is not a
 // block, on a part with one round hole that the O-grid takes, or on a reflex fillet's corner piece
 // (block.h: template_applies), finishing it with the template is a candidate too. Every candidate a
