@@ -7,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "core/common/error.h"
 #include "core/common/format.h"
@@ -169,14 +170,37 @@ IntervalAssignment assign_edge_intervals(const BlockModel& model, const Interval
   }
   glp_load_matrix(lp, static_cast<int>(ia.size()) - 1, ia.data(), ja.data(), ar.data());
 
+  // Feasibility first, on the equalities alone (opposite sides, fixed counts) within the counts'
+  // bounds: the deviation rows can always be met, so the program is feasible exactly when these are,
+  // and GLPK's presolve decides them at once, where the whole program's simplex can take tens of
+  // seconds to find it infeasible (blocks whose counts contradict, a web of templates). Feasible
+  // equalities with integer bounds admit integer counts (scale a rational solution).
+  bool feasible = true;
+  {
+    std::unique_ptr<glp_prob, GlpkProblem> equalities(glp_create_prob());
+    glp_copy_prob(equalities.get(), lp, GLP_OFF);
+    std::vector<int> drop{0};
+    for (int row = 1; row <= rows; ++row) {
+      if (glp_get_row_type(equalities.get(), row) != GLP_FX) drop.push_back(row);
+    }
+    if (drop.size() > 1) glp_del_rows(equalities.get(), static_cast<int>(drop.size()) - 1, drop.data());
+    for (int col = 1; col <= columns; ++col) glp_set_obj_coef(equalities.get(), col, 0.0);
+    glp_smcp simplex;
+    glp_init_smcp(&simplex);
+    simplex.msg_lev = GLP_MSG_OFF;
+    simplex.presolve = GLP_ON;
+    const int code = glp_simplex(equalities.get(), &simplex);
+    feasible = !(code == GLP_ENOPFS || (code == 0 && glp_get_status(equalities.get()) == GLP_NOFEAS));
+  }
+
   glp_iocp parameters;
   glp_init_iocp(&parameters);
   parameters.presolve = GLP_ON;
   parameters.msg_lev = GLP_MSG_OFF;
   parameters.mip_gap = 1e-6;
   parameters.tm_lim = static_cast<int>(std::min(1e9, std::max(1.0, options.time_limit * 1000.0)));
-  const int code = glp_intopt(lp, &parameters);
-  const int status = glp_mip_status(lp);
+  const int code = feasible ? glp_intopt(lp, &parameters) : GLP_ENOPFS;
+  const int status = feasible ? glp_mip_status(lp) : GLP_NOFEAS;
   if ((code == GLP_ENOPFS || status == GLP_NOFEAS) && options.fixed.empty()) {
     // Not the user's doing: the blocks themselves admit no counts (a block whose opposite sides
     // share edges so that they cannot be equal).
