@@ -50,19 +50,17 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
   auto ratio = [](const MeshResult& r) {
     return r.conformity.conformal ? r.quality.min_scaled_jacobian / r.topology_bound : -1e300;
   };
-  bool have = false;        // a try has meshed (out.result is its mesh)
-  bool searched = true;     // the policy is the search (known after the first decomposition)
+  bool have = false;  // a try has meshed (out.result is its mesh)
   std::exception_ptr first_error;
   out.attempts = 0;
-  for (size_t k = 0; k < tries.size() && searched; ++k) {
+  for (size_t k = 0; k < tries.size(); ++k) {
     if (have && ratio(out.result) >= kRetryBelow) break;
     decompose.corner_fraction = tries[k].corner_fraction;
     decompose.policy_settings.general_search_width = tries[k].width;
     // (The replay takes its block rules from the decomposition: no options to change for it.)
     FaceDecomposition again = decompose_input_face(face, decompose);
     ++out.attempts;
-    searched = again.region.policy == "search";
-    if (!searched) {
+    if (again.region.policy != "search") {
       // Another policy: its one decomposition, meshed (its failure is the answer).
       options.general.reward = again.region.reward;
       out.decomposition = std::move(again);

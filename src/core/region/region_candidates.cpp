@@ -160,14 +160,11 @@ std::vector<RegionAction> region_candidates(const Region& part) {
       if (!points_inside(to_p, e_out, unit(bisector))) bisector = {-bisector.x, -bisector.y};
       if (smooth_hole) {
         directions.assign({bisector});
-      } else if (is_side_vertex(ring, i)) {
-        // A side vertex (an arc's sample, a cut's end on an edge): its edges' extensions run along the
-        // boundary (outside, or nearly along a concave arc: slivers); the cuts square to its edges, its
-        // bisector and the axes.
-        directions.assign({bisector, {-e_in.y, e_in.x}, {-e_out.y, e_out.x}, ax, {-ax.x, -ax.y}, ay, {-ay.x, -ay.y}});
       } else {
-        directions.assign({e_in, {-e_out.x, -e_out.y}, bisector, {-e_in.y, e_in.x}, {-e_out.y, e_out.x},
-                           ax,   {-ax.x, -ax.y},       ay,       {-ay.x, -ay.y}});
+        directions.assign({bisector, {-e_in.y, e_in.x}, {-e_out.y, e_out.x}, ax, {-ax.x, -ax.y}, ay, {-ay.x, -ay.y}});
+        // Its edges' extensions too, but at a side vertex (an arc's sample, a cut's end on an edge),
+        // where they run along the boundary (outside, or nearly along a concave arc: slivers).
+        if (!is_side_vertex(ring, i)) directions.insert(directions.begin(), {e_in, {-e_out.x, -e_out.y}});
       }
       // On a convex part, the diagonals to every vertex but the neighbours (a hexagon into two
       // quadrilaterals, a pentagon into a quadrilateral and a triangle).

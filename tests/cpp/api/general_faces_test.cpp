@@ -230,6 +230,7 @@ TEST_CASE("a poor searched mesh is searched again (other widths, other block rul
       CHECK((kSearchTries[i].width != kSearchTries[j].width || kSearchTries[i].corner_fraction != kSearchTries[j].corner_fraction));
     }
   }
+  for (const SearchTry& t : kSearchTries) CHECK(t.width <= std::end(kSearchTries)[-1].width);
 }
 
 TEST_CASE("general faces: grid-only actions and learned policies say so", "[api][general][errors]") {
