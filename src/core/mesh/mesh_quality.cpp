@@ -8,14 +8,19 @@
 namespace autoblock {
 
 double quad_scaled_jacobian(const std::array<Point2, 4>& p) {
+  // Each edge's length once (every edge is two corners' side): four square roots, not eight.
+  std::array<double, 4> ex, ey, length;
+  for (size_t k = 0; k < 4; ++k) {
+    ex[k] = p[(k + 1) % 4].x - p[k].x;
+    ey[k] = p[(k + 1) % 4].y - p[k].y;
+    length[k] = std::sqrt(ex[k] * ex[k] + ey[k] * ey[k]);
+  }
   double worst = 1e300;
   for (size_t k = 0; k < 4; ++k) {
-    const Point2& c = p[k];
-    const Point2& next = p[(k + 1) % 4];
-    const Point2& prev = p[(k + 3) % 4];
-    const double e1x = next.x - c.x, e1y = next.y - c.y, e2x = prev.x - c.x, e2y = prev.y - c.y;
-    const double l1 = std::sqrt(e1x * e1x + e1y * e1y), l2 = std::sqrt(e2x * e2x + e2y * e2y);
-    worst = std::min(worst, l1 > 0 && l2 > 0 ? (e1x * e2y - e1y * e2x) / (l1 * l2) : 0.0);
+    // Corner k: its sides are edge k (to the next corner) and edge k - 1 reversed (to the previous).
+    const size_t j = (k + 3) % 4;
+    const double l1 = length[k], l2 = length[j];
+    worst = std::min(worst, l1 > 0 && l2 > 0 ? (ex[j] * ey[k] - ey[j] * ex[k]) / (l1 * l2) : 0.0);
   }
   return worst;
 }

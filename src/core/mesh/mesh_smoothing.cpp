@@ -32,9 +32,14 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
   for (const MeshEdge& e : mesh_edges(mesh)) {
     if (e.uses == 1) fixed[static_cast<size_t>(e.a)] = fixed[static_cast<size_t>(e.b)] = 1;
   }
-  auto local_worst = [&](size_t node) {
+  // The worst quad around node; with a bar, it stops at the first quad at or below it (a candidate
+  // position is taken only when its worst beats the bar, so the rest would not change that).
+  auto local_worst = [&](size_t node, double bar = -1e300) {
     double worst = 1e300;
-    for (const auto& [q, k] : around[node]) worst = std::min(worst, quad_scaled_jacobian(mesh.corners(static_cast<size_t>(q))));
+    for (const auto& [q, k] : around[node]) {
+      worst = std::min(worst, quad_scaled_jacobian(mesh.corners(static_cast<size_t>(q))));
+      if (worst <= bar) break;
+    }
     return worst;
   };
   for (int sweep = 0; sweep < max_sweeps; ++sweep) {
@@ -71,7 +76,7 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
       Point2 best_at = here;
       for (const Point2& c : candidates) {
         mesh.nodes[v] = c;
-        const double w = local_worst(v);
+        const double w = local_worst(v, best);
         if (w > best) {
           best = w;
           best_at = c;
@@ -92,6 +97,11 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
   // pattern search: eight directions, a step of a quarter of the node's mean edge length, halved
   // when no direction improves the node's worst quad, a move taken only when it does.
   constexpr int kWorstNodes = 400, kHalvings = 6;
+  std::array<Point2, 8> directions;
+  for (size_t d = 0; d < 8; ++d) {
+    const double a = static_cast<double>(d) * M_PI / 4.0;
+    directions[d] = {std::cos(a), std::sin(a)};
+  }
   std::vector<double> sj(mesh.quads.size());
   for (int round = 0; round < worst_rounds; ++round) {
     double minimum = 1e300;
@@ -130,9 +140,8 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
         Point2 best_at = here;
         double best = current;
         for (int d = 0; d < 8; ++d) {
-          const double a = d * M_PI / 4.0;
-          mesh.nodes[node] = {here.x + step * std::cos(a), here.y + step * std::sin(a)};
-          const double w = local_worst(node);
+          mesh.nodes[node] = {here.x + step * directions[static_cast<size_t>(d)].x, here.y + step * directions[static_cast<size_t>(d)].y};
+          const double w = local_worst(node, best);
           if (w > best) {
             best = w;
             best_at = mesh.nodes[node];

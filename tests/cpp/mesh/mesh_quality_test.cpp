@@ -1,0 +1,54 @@
+// The scaled Jacobian of a quad against hand values, and against the corner-by-corner definition.
+#include "core/mesh/mesh_quality.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <random>
+
+#include <catch2/catch.hpp>
+
+using namespace autoblock;
+
+namespace {
+
+// The definition, corner by corner: the sine of the angle between the corner's two edges (negative
+// where the corner turns the wrong way), the smallest of the four.
+double by_definition(const std::array<Point2, 4>& p) {
+  double worst = 1e300;
+  for (size_t k = 0; k < 4; ++k) {
+    const Point2 c = p[k], next = p[(k + 1) % 4], prev = p[(k + 3) % 4];
+    const double ax = next.x - c.x, ay = next.y - c.y, bx = prev.x - c.x, by = prev.y - c.y;
+    const double la = std::hypot(ax, ay), lb = std::hypot(bx, by);
+    worst = std::min(worst, la > 0 && lb > 0 ? (ax * by - ay * bx) / (la * lb) : 0.0);
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("scaled Jacobian of quads by hand", "[mesh][quality]") {
+  // A rectangle: every corner a right angle.
+  CHECK(quad_scaled_jacobian({Point2{0, 0}, {3, 0}, {3, 1}, {0, 1}}) == Approx(1.0));
+  // A rhombus of 60 and 120 degrees: sin 60 at every corner.
+  const double h = std::sqrt(3.0) / 2.0;
+  CHECK(quad_scaled_jacobian({Point2{0, 0}, {1, 0}, {1.5, h}, {0.5, h}}) == Approx(h));
+  // A trapezoid with a 45-degree corner: sin 45.
+  CHECK(quad_scaled_jacobian({Point2{0, 0}, {3, 0}, {2, 1}, {0, 1}}) == Approx(std::sqrt(0.5)));
+  // Clockwise: every corner turns the wrong way, -1 for a square.
+  CHECK(quad_scaled_jacobian({Point2{0, 0}, {0, 1}, {1, 1}, {1, 0}}) == Approx(-1.0));
+  // A dart (one reflex corner of 270 degrees): sin 270 = -1 there.
+  CHECK(quad_scaled_jacobian({Point2{0, 0}, {2, 0}, {2, 2}, {1.5, 0.5}}) < 0.0);
+  // A repeated node (a collapsed edge): 0 at its corners.
+  CHECK(quad_scaled_jacobian({Point2{0, 0}, {1, 0}, {1, 0}, {0, 1}}) == 0.0);
+}
+
+TEST_CASE("scaled Jacobian: each edge's length once gives the corner-by-corner values", "[mesh][quality]") {
+  std::mt19937 random(20261203);
+  std::uniform_real_distribution<double> coordinate(-10.0, 10.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::array<Point2, 4> p;
+    for (Point2& q : p) q = Point2{coordinate(random), coordinate(random)};
+    CHECK(quad_scaled_jacobian(p) == Approx(by_definition(p)).margin(1e-12));
+  }
+}
