@@ -128,6 +128,10 @@ class DecompositionResult:
         self.time_capped = data["time_capped"]
         self.seconds = data["seconds"]
         self.max_steps = data["max_steps"]
+        # A general face's block rules and its mesh's minimum intervals per edge (what a replay and a mesh
+        # of its cuts need: the search tries several, see the README's "Tries").
+        self.rules = sequence_rules(data)
+        self.min_edge_intervals = sequence_min_edge_intervals(data)
         self._local_brep = local_face.exportBrepToString()
         self._z = data["face"]["z"]
         self._fingerprint = face_fingerprint(data["face"])
@@ -189,7 +193,8 @@ class DecompositionResult:
     def cut_sequence(self):
         """The cut sequence as stored in an AutoBlock object (JSON text, the face's frame). A general face's
         (version 3, "engine": "general"): [part, kind, origin x, origin y, direction x, direction y, forced,
-        reward, n_parts] per action."""
+        reward, n_parts] per action, with "rules" and "min_edge_intervals" (sequence_rules; a sequence stored
+        without them replays with the face's own rules, as sequences were made before)."""
         if self.general:
             return json.dumps({
                 "version": 3,
@@ -198,6 +203,8 @@ class DecompositionResult:
                 "face": self._fingerprint,
                 "max_steps": self.max_steps,
                 "reward": self.reward,
+                "rules": self.rules,
+                "min_edge_intervals": self.min_edge_intervals,
                 "cuts": [list(c.spec()) + [c.reward, c.n_parts] for c in self.cuts],
             })
         return json.dumps({
@@ -213,7 +220,7 @@ class DecompositionResult:
         from .stepping import Stepper
 
         return Stepper(self._local_brep, self.frame, sequence_specs(json.loads(self.cut_sequence())),
-                       self.max_steps, self.label, self.policy, self.reward)
+                       self.max_steps, self.label, self.policy, self.reward, self.rules, self.min_edge_intervals)
 
 
 def sequence_specs(data):
@@ -223,6 +230,21 @@ def sequence_specs(data):
         return [(int(c[0]), str(c[1]), float(c[2]), float(c[3]), float(c[4]), float(c[5]), bool(c[6]))
                 for c in data["cuts"]]
     return [(int(c[0]), float(c[1]), float(c[2]), str(c[3])) for c in data["cuts"]]
+
+
+def sequence_rules(data):
+    """A general sequence's block rules (parsed JSON or a decomposition's data): [min corner, max corner, flat
+    tolerance] in degrees, or [] (the face's own, as a search makes them) when it has none."""
+    rules = data.get("rules")
+    if isinstance(rules, dict):
+        return [float(rules["min_corner_degrees"]), float(rules["max_corner_degrees"]),
+                float(rules["flat_tolerance_degrees"])]
+    return [float(r) for r in rules] if rules else []
+
+
+def sequence_min_edge_intervals(data):
+    """The intervals a general sequence's mesh takes at least on every model edge (1 when not stored)."""
+    return max(1, int(data.get("min_edge_intervals") or 1))
 
 
 def sequence_reward(data):
@@ -333,7 +355,8 @@ def replay(target, cut_sequence, sub=None):
         raise ValueError("{}: not the face this cut sequence was made on (its figures differ)".format(label))
     try:
         out = native.load().replay(local.exportBrepToString(), sequence_specs(data), int(data.get("max_steps", 0)),
-                                   sequence_reward(data), str(data.get("policy") or "replay"), label)
+                                   sequence_reward(data), str(data.get("policy") or "replay"), label,
+                                   sequence_rules(data), sequence_min_edge_intervals(data))
     except ValueError as error:
         raise _in_frame_note(frame, error, face.BoundBox.DiagonalLength) from None
     return DecompositionResult(out, face, local, frame, label)
@@ -425,7 +448,8 @@ def _mesh_data(stepper, size, out=""):
     """The native mesh of a stepper's decomposition (and the file `out`, when given)."""
     try:
         return native.load().mesh(stepper.local_brep, stepper.cuts, float(size), stepper.max_steps, stepper.reward,
-                                  str(out or ""), _placement_numbers(stepper.frame), stepper.label)
+                                  str(out or ""), _placement_numbers(stepper.frame), stepper.label,
+                                  stepper.rules, stepper.min_edge_intervals)
     except ValueError as error:
         raise _in_frame_note(stepper.frame, error) from None
 

@@ -66,9 +66,12 @@ class StepView:
 class Stepper:
     """Steps through one decomposition. local_brep: the face in its frame (BREP text); frame; cuts:
     [(part, x, y, direction)] in that frame; max_steps as decomposed; label; policy (its spec); reward: the
-    preset the cuts were scored with (the decomposition's)."""
+    preset the cuts were scored with (the decomposition's); a general face's rules (its block rules, [min corner,
+    max corner, flat tolerance] in degrees; None: the face's own) and min_edge_intervals (what its mesh takes at
+    least on every model edge), as its decomposition gives them (console.sequence_rules)."""
 
-    def __init__(self, local_brep, frame, cuts, max_steps, label, policy, reward="paper"):
+    def __init__(self, local_brep, frame, cuts, max_steps, label, policy, reward="paper", rules=None,
+                 min_edge_intervals=1):
         self.local_brep = local_brep
         self.frame = frame
         self.cuts = list(cuts)
@@ -76,6 +79,8 @@ class Stepper:
         self.label = label
         self.policy = policy
         self.reward = reward or "paper"
+        self.rules = list(rules) if rules else []
+        self.min_edge_intervals = max(1, int(min_edge_intervals or 1))
         self._cache = {}
 
     @property
@@ -102,7 +107,7 @@ class Stepper:
         if k in self._cache:
             return self._cache[k]
         module = native.load()
-        data = module.step(self.local_brep, self.cuts, int(k), self.max_steps, self.reward, self.label)
+        data = module.step(self.local_brep, self.cuts, int(k), self.max_steps, self.reward, self.label, self.rules)
         z = data["z"]
         pieces = []
         block_index = 0

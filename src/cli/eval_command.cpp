@@ -70,7 +70,10 @@ void add_eval_command(CLI::App& app) {
       for (size_t k = next++; k < faces.size(); k = next++) {
         try {
           if (faces[k].is_general()) {
-            general[k] = decompose_input_face(faces[k], args->policy.decompose_settings(k)).region;
+            // The policy itself, one search (not mesh's tries, which mesh every decomposition).
+            DecomposeSettings settings = args->policy.decompose_settings(k);
+            settings.mesh_tries = false;
+            general[k] = decompose_input_face(faces[k], settings).region;
           } else {
             std::unique_ptr<Policy> policy = args->policy.make(faces[k], k);
             results[k] = decompose_face(faces[k].grid, *policy, options);

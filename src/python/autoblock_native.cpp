@@ -13,8 +13,10 @@
 
 #include <Standard_Failure.hxx>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -353,8 +355,25 @@ py::dict general_step_dict(const RegionSnapshot& s, const InputFace& face) {
   return out;
 }
 
+// A general sequence's block rules as a report gives them ("rules": min corner, max corner and flat
+// tolerance, degrees); none ([]): the face's own for the mesh preset, as a search makes them.
+std::optional<BlockRules> rules_of(const std::vector<double>& values) {
+  if (values.empty()) return std::nullopt;
+  if (values.size() != 3) {
+    throw InputError("block rules are 3 numbers (min corner, max corner, flat tolerance; degrees), got " +
+                     std::to_string(values.size()));
+  }
+  BlockRules rules{values[0], values[1], values[2]};
+  if (!(rules.min_corner_degrees > 0.0 && rules.min_corner_degrees < rules.max_corner_degrees &&
+        rules.max_corner_degrees < 180.0 && rules.flat_tolerance_degrees >= 0.0 && rules.flat_tolerance_degrees < 90.0)) {
+    throw InputError("block rules: expected 0 < min corner < max corner < 180 and a flat tolerance in [0, 90) degrees");
+  }
+  return rules;
+}
+
 py::dict step_py(const std::string& brep, const py::object& cuts, int step, int max_steps, const std::string& reward,
-                 const std::string& source) {
+                 const std::string& source, const std::vector<double>& rules) {
+  const std::optional<BlockRules> block_rules = rules_of(rules);
   const RewardPreset preset = reward_preset_by_name(reward);
   const Sequence sequence = sequence_of(cuts);
   InputFace face;
@@ -365,7 +384,7 @@ py::dict step_py(const std::string& brep, const py::object& cuts, int step, int 
     face = face_of(brep, source);
     sequence.check_for(face);
     if (face.is_general()) {
-      general = face_step_general(face, sequence.region, step, max_steps, preset);
+      general = face_step_general(face, sequence.region, step, max_steps, preset, block_rules);
     } else {
       s = face_step(face, sequence.grid, step, max_steps, preset);
     }
@@ -394,8 +413,10 @@ py::dict step_py(const std::string& brep, const py::object& cuts, int step, int 
 
 // A general face's cut sequence replayed (no search): as decompose_py's general dict.
 py::dict replay_py(const std::string& brep, const py::object& cuts, int max_steps, const std::string& reward,
-                   const std::string& policy, const std::string& source) {
+                   const std::string& policy, const std::string& source, const std::vector<double>& rules,
+                   int min_edge_intervals) {
   const RewardPreset preset = reward_preset_by_name(reward);
+  const std::optional<BlockRules> block_rules = rules_of(rules);
   const Sequence sequence = sequence_of(cuts);
   FaceDecomposition result;
   Written written;
@@ -407,7 +428,8 @@ py::dict replay_py(const std::string& brep, const py::object& cuts, int max_step
                        "face's edges run along two perpendicular directions (decompose it)");
     }
     sequence.check_for(face);
-    result = face_replay_general(face, sequence.region, max_steps, preset, policy);
+    result = face_replay_general(face, sequence.region, max_steps, preset, policy, true, block_rules);
+    result.region.min_edge_intervals = std::max(1, min_edge_intervals);
     written = Written(result, source);
   }
   return general_decomposition_dict(written, max_steps, result.face);
@@ -467,8 +489,11 @@ py::dict quality_dict(const Quality& q) {
 }
 
 py::dict mesh_py(const std::string& brep, const py::object& cuts, double size, int max_steps, const std::string& reward,
-                 const std::string& out, const std::vector<double>& placement, const std::string& source) {
+                 const std::string& out, const std::vector<double>& placement, const std::string& source,
+                 const std::vector<double>& rules, int min_edge_intervals) {
   const RewardPreset preset = reward_preset_by_name(reward);
+  const std::optional<BlockRules> block_rules = rules_of(rules);
+  if (min_edge_intervals < 1 || min_edge_intervals > 1000) throw InputError("min_edge_intervals: expected 1 to 1000");
   const Sequence sequence = sequence_of(cuts);
   const MeshPlacement where = placement_of(placement);
   if (!out.empty() && !is_mesh_file_name(out)) throw InputError(out + ": expected a .msh, .vtu or .inp file");
@@ -480,7 +505,8 @@ py::dict mesh_py(const std::string& brep, const py::object& cuts, double size, i
     options.occt_model = false;  // the mesh and its report need no OpenCASCADE model of the blocks
     const InputFace face = face_of(brep, source);
     sequence.check_for(face);
-    result = face.is_general() ? face_mesh_general(face, sequence.region, max_steps, preset, options).result
+    if (face.is_general()) options.min_edge_intervals = min_edge_intervals;
+    result = face.is_general() ? face_mesh_general(face, sequence.region, max_steps, preset, options, block_rules).result
                                : face_mesh(face, sequence.grid, max_steps, preset, options).result;
     if (!out.empty()) write_mesh_file(out, result.mesh, where);
   }
@@ -775,17 +801,21 @@ PYBIND11_MODULE(autoblock_native, m) {
         "face's cuts are {part, vertex, direction, ...} with boxes; a general face's dict is the CLI's JSON report "
         "(cuts {part, kind, origin, direction, forced, chords, ...}, outlines, n_templates, min_blocks None).");
   m.def("step", &step_py, py::arg("brep"), py::arg("cuts"), py::arg("step"), py::arg("max_steps") = 0,
-        py::arg("reward") = "paper", py::arg("source") = "face",
+        py::arg("reward") = "paper", py::arg("source") = "face", py::arg("rules") = std::vector<double>{},
         "The episode of a cut sequence on the face after `step` cuts, rewards under the preset `reward` (the "
         "decomposition's 'reward'): pieces (polygons), blocks, return, and the next cut (part, vertices, chosen vertex, "
         "line, reward) or None. Cuts: [(part, x, y, 'horizontal'|'vertical'), ...] on a grid face, [(part, kind, ox, "
         "oy, dx, dy, forced), ...] on a general face (kind 'full', 'partial' or 'template'; then the next cut also "
-        "has kind, origin, direction (a vector) and its chords as line, chosen -1 when the origin is on an edge).");
+        "has kind, origin, direction (a vector) and its chords as line, chosen -1 when the origin is on an edge). "
+        "rules: a general sequence's block rules, [min corner, max corner, flat tolerance] in degrees as its "
+        "decomposition's 'rules' give them ([]: the face's own, as a search makes them).");
   m.def("replay", &replay_py, py::arg("brep"), py::arg("cuts"), py::arg("max_steps") = 0, py::arg("reward") = "paper",
-        py::arg("policy") = "replay", py::arg("source") = "face",
+        py::arg("policy") = "replay", py::arg("source") = "face", py::arg("rules") = std::vector<double>{},
+        py::arg("min_edge_intervals") = 1,
         "Replay a general face's cut sequence [(part, kind, ox, oy, dx, dy, forced), ...] (as step() takes it) "
         "without searching again: the same dict as decompose() gives for a general face (policy: the name it "
-        "reports). ValueError when an action does not belong to the face, the sequence leaves parts unfinished, "
+        "reports; rules and min_edge_intervals: the decomposition's, as step() and mesh() take them, reported "
+        "back). ValueError when an action does not belong to the face, the sequence leaves parts unfinished, "
         "or the face is rectilinear.");
   m.def("policy_info", &policy_info_py, py::arg("policy") = "",
         "What a policy is: {'name', 'learned' (a trained policy with a value network), 'reward' (the preset it "
@@ -797,11 +827,13 @@ PYBIND11_MODULE(autoblock_native, m) {
         "policy (no value network) or a step with no cut.");
   m.def("mesh", &mesh_py, py::arg("brep"), py::arg("cuts"), py::arg("size") = 0.0, py::arg("max_steps") = 0,
         py::arg("reward") = "paper", py::arg("out") = "", py::arg("placement") = std::vector<double>{},
-        py::arg("source") = "face",
+        py::arg("source") = "face", py::arg("rules") = std::vector<double>{}, py::arg("min_edge_intervals") = 1,
         "Mesh the decomposition given by its cut sequence with quads (size: target element size, 0 for automatic). "
         "Returns nodes [(x, y, z)] in the face's frame, quads [(a, b, c, d)] (0-based, counter-clockwise), "
         "quad_block, blocks, target_size, quality, conformal. out: also write a .msh, .vtu or .inp file, its nodes "
-        "moved by placement (12 numbers: row-major rotation, translation; [] for none).");
+        "moved by placement (12 numbers: row-major rotation, translation; [] for none). A general face's rules and "
+        "min_edge_intervals: its decomposition's (as step() takes them; at least that many intervals on every "
+        "model edge).");
   m.def("check_solid", &check_solid_py, py::arg("brep"), py::arg("source") = "solid",
         "Check that BREP text holds a straight sweep of a planar face (one solid, or a closed shell). Returns "
         "{source, caps (bottom, top face numbers, 1-based), sweep (x, y, z), volume, area, faces}; raises "

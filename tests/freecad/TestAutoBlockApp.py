@@ -1059,6 +1059,49 @@ class TestArcFaces(unittest.TestCase):
         self.assertGreater(area, top.Area)
         self.assertLess(area, top.Area * 1.01)
 
+    def test_the_workbench_meshes_an_arc_face_as_the_cli_does(self):
+        """The search's tries (other widths and block rules, finer edges) reach the workbench: what decompose keeps
+        is what `autoblock mesh` keeps, stored with its rules, and meshed the same from the console, from an
+        AutoBlock object and after its cuts are replayed."""
+        cli = os.environ.get("AUTOBLOCK_CLI")
+        if not cli:
+            self.skipTest("AUTOBLOCK_CLI not set")
+        V = FreeCAD.Vector
+        plate = Part.makeBox(25, 25, 2)
+        for centre in (V(8, 8, -1), V(17, 17, -1)):  # two holes on the diagonal: the first try is poor
+            plate = plate.cut(Part.makeCylinder(4, 4, centre))
+        top = max(plate.Faces, key=lambda f: f.CenterOfMass.z)
+        folder = support.temporary_folder()
+        self.addCleanup(support.remove_folder, folder)
+        path, report = os.path.join(folder, "plate.brep"), os.path.join(folder, "mesh.json")
+        top.exportBrep(path)
+        subprocess.run([cli, "mesh", path, "--json", report], check=True, capture_output=True, timeout=300)
+        with open(report) as f:
+            expected = json.load(f)
+        result = AutoBlock.decompose(top)
+        self.assertEqual(result.min_edge_intervals, expected["min_edge_intervals"])
+        self.assertEqual(len(result.rules), 3)
+        mesh = AutoBlock.mesh(result)
+        self.assertEqual(len(mesh.quads), expected["quads"])
+        self.assertAlmostEqual(mesh.quality["min_scaled_jacobian"], expected["quality"]["min_scaled_jacobian"], places=9)
+        # An object stores the rules with its cuts; its FEM mesh, and a replay of the stored cuts, are the same.
+        source = support.add_face(self.doc, top, "Plate")
+        obj = AutoBlock.make_autoblock(source)
+        stored = json.loads(obj.CutSequence)
+        self.assertEqual(stored["rules"], result.rules)
+        self.assertEqual(stored["min_edge_intervals"], expected["min_edge_intervals"])
+        self.assertEqual(AutoBlock.mesh(obj).NumberOfQuads, expected["quads"])
+        again = AutoBlock.replay(source, obj.CutSequence)
+        self.assertEqual(again.n_blocks, result.n_blocks)
+        self.assertEqual(len(AutoBlock.mesh(again).quads), expected["quads"])
+        # A sequence stored before the rules were (none in it) replays under the face's own rules, one interval.
+        from AutoBlock import console
+
+        old = dict(stored)
+        del old["rules"], old["min_edge_intervals"]
+        self.assertEqual(console.sequence_rules(old), [])
+        self.assertEqual(console.sequence_min_edge_intervals(old), 1)
+
 
 class TestFemMesh(unittest.TestCase):
     def test_quads_become_a_fem_mesh_object(self):

@@ -288,4 +288,5 @@ def stepper_of(obj):
     from ..stepping import Stepper
 
     return Stepper(local.exportBrepToString(), frame, console.sequence_specs(data), int(data.get("max_steps", 0)),
-                   label, obj.PolicyFile or obj.Policy, console.sequence_reward(data))
+                   label, obj.PolicyFile or obj.Policy, console.sequence_reward(data), console.sequence_rules(data),
+                   console.sequence_min_edge_intervals(data))

@@ -1,5 +1,7 @@
 #include "core/api/face_actions.h"
 
+#include "core/api/face_meshing.h"
+
 #include <stdexcept>
 
 #include <TopoDS.hxx>
@@ -41,7 +43,8 @@ std::unique_ptr<RegionPolicy> general_policy(const std::string& name, const Poli
                    "this face has edges at other angles: use one of " + list);
 }
 
-RegionEpisodeOptions general_options(const InputFace& face, const std::string& what, int max_steps, RewardPreset reward) {
+RegionEpisodeOptions general_options(const InputFace& face, const std::string& what, int max_steps, RewardPreset reward,
+                                     const std::optional<BlockRules>& rules) {
   if (!face.is_general()) {
     throw InputError(face.source + ": " + what + ": this face's edges run along two perpendicular directions, so its "
                      "cuts are given by vertex and axis, not by origin and direction");
@@ -49,6 +52,10 @@ RegionEpisodeOptions general_options(const InputFace& face, const std::string& w
   RegionEpisodeOptions options;
   options.max_steps = max_steps;
   options.reward = reward;
+  if (rules) {
+    options.rules = *rules;
+    options.face_rules = false;
+  }
   return options;
 }
 
@@ -75,6 +82,33 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
   std::vector<TopoDS_Face> blocks;
   if (face.is_general()) {
     std::unique_ptr<RegionPolicy> policy = general_policy(settings.policy, settings.policy_settings);
+    std::optional<FaceMeshing> meshed;
+    if (settings.mesh_tries && policy->name() == "search") {
+      // The decomposition `autoblock mesh` keeps (face_meshing.h): its tries, each meshed. When none
+      // meshes (a reason of ours: blocks that admit no interval counts, a part left unfinished), the
+      // one search below, as it is: a decomposition can be shown even when it cannot be meshed.
+      DecomposeSettings once = settings;
+      once.mesh_tries = false;
+      once.occt_blocks = false;
+      MeshOptions mesh;
+      mesh.occt_model = false;
+      try {
+        meshed = mesh_input_face(face, once, mesh);
+      } catch (const InputError&) {
+        throw;
+      } catch (const std::exception&) {
+      }
+    }
+    if (meshed) {
+      result.region = std::move(meshed->decomposition.region);
+      result.region.seconds = meshed->seconds;  // every try's search and mesh
+      if (settings.occt_blocks) {
+        const auto lock = lock_general_engine();
+        blocks = replay_region_cuts_occt(face.occt, face.region, result.region, {}, &face.arcs);
+      }
+      if (settings.occt_blocks) set_block_faces(result, std::move(blocks));
+      return result;
+    }
     RegionEpisodeOptions options;
     options.max_steps = settings.max_steps;
     options.corner_fraction = settings.corner_fraction;
@@ -112,15 +146,16 @@ EpisodeSnapshot face_step(const InputFace& face, const std::vector<CutSpec>& cut
 }
 
 RegionSnapshot face_step_general(const InputFace& face, const std::vector<RegionActionSpec>& actions, int step,
-                                 int max_steps, RewardPreset reward) {
-  const RegionEpisodeOptions options = general_options(face, "stepping through a general sequence", max_steps, reward);
+                                 int max_steps, RewardPreset reward, const std::optional<BlockRules>& rules) {
+  const RegionEpisodeOptions options = general_options(face, "stepping through a general sequence", max_steps, reward, rules);
   const auto lock = lock_general_engine();
   return region_snapshot(face.region, actions, step, options);
 }
 
 FaceDecomposition face_replay_general(const InputFace& face, const std::vector<RegionActionSpec>& actions,
-                                      int max_steps, RewardPreset reward, const std::string& policy, bool occt_blocks) {
-  const RegionEpisodeOptions options = general_options(face, "replaying a general sequence", max_steps, reward);
+                                      int max_steps, RewardPreset reward, const std::string& policy, bool occt_blocks,
+                                      const std::optional<BlockRules>& rules) {
+  const RegionEpisodeOptions options = general_options(face, "replaying a general sequence", max_steps, reward, rules);
   FaceDecomposition result;
   result.face = face;
   std::vector<TopoDS_Face> blocks;

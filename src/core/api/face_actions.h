@@ -3,6 +3,7 @@
 // only convert their inputs and outputs.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,11 @@ struct DecomposeSettings {
   bool occt_blocks = true;                     // cut the blocks from the face with OpenCASCADE and merge them
   double corner_fraction = kMeshCornerFraction;  // general faces, mesh preset: a block's corners within
                                                  // [asin(f B), 180 - asin(f B)] degrees (block.h)
+  // A general face searched (auto, search): the decomposition `autoblock mesh` keeps, by the tries of
+  // mesh_input_face (api/face_meshing.h), each meshed at the default size: the one whose mesh is best
+  // (its block rules, RegionDecomposition::rules, and min_edge_intervals say how to replay and mesh it).
+  // false: one search with the settings as they are (what eval measures).
+  bool mesh_tries = true;
 };
 
 struct FaceDecomposition {
@@ -75,22 +81,24 @@ EpisodeSnapshot face_step(const InputFace& face, const std::vector<CutSpec>& cut
 
 // face_step for a general face (face.is_general()): actions, its decomposition's sequence by position
 // (region_action_specs of FaceDecomposition::region.cuts, in the face's frame); reward, the preset it
-// was scored with (RegionDecomposition::reward).
+// was scored with (RegionDecomposition::reward); rules, the block rules it was made with
+// (RegionDecomposition::rules; none: the face's own for the mesh preset, as a search makes them).
 // Outputs: the episode at that step (see region_snapshot.h). Throws InputError when the face is
 //          rectilinear (its cuts are CutSpecs), the step is out of range or an action does not belong
 //          to the face.
 RegionSnapshot face_step_general(const InputFace& face, const std::vector<RegionActionSpec>& actions, int step,
-                                 int max_steps = 0, RewardPreset reward = RewardPreset::Paper);
+                                 int max_steps = 0, RewardPreset reward = RewardPreset::Paper,
+                                 const std::optional<BlockRules>& rules = std::nullopt);
 
 // Inputs:  face, a general face; actions, a whole sequence of it (as a report or a saved document
-//          holds it); max_steps and reward as it was made; policy, the name the result reports;
-//          occt_blocks, as DecomposeSettings::occt_blocks.
+//          holds it); max_steps, reward and rules as it was made (face_step_general); policy, the name
+//          the result reports; occt_blocks, as DecomposeSettings::occt_blocks.
 // Outputs: the decomposition the sequence makes (region; block_faces and shape as decompose_input_face
 //          gives them), without searching again. Throws InputError as face_step_general does, or when
 //          the sequence leaves parts unfinished.
 FaceDecomposition face_replay_general(const InputFace& face, const std::vector<RegionActionSpec>& actions,
                                       int max_steps, RewardPreset reward, const std::string& policy = "replay",
-                                      bool occt_blocks = true);
+                                      bool occt_blocks = true, const std::optional<BlockRules>& rules = std::nullopt);
 
 // Inputs:  face, cuts, step, max_steps and reward as for face_step; policy, a name of policy_names()
 //          or a policy file (empty: the default).

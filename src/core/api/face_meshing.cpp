@@ -1,5 +1,6 @@
 #include "core/api/face_meshing.h"
 
+#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <stdexcept>
@@ -16,6 +17,7 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
   const auto start = std::chrono::steady_clock::now();
   DecomposeSettings decompose = settings;
   decompose.occt_blocks = false;
+  decompose.mesh_tries = false;  // the tries are made here
   FaceMeshing out;
   if (!face.is_general()) {
     out.decomposition = decompose_input_face(face, decompose);
@@ -118,15 +120,17 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
     if (first_error) std::rethrow_exception(first_error);
     throw std::logic_error("mesh_input_face: no try meshed and none failed");
   }
+  out.decomposition.region.min_edge_intervals = out.min_edge_intervals;
   finish();
   return out;
 }
 
 FaceMeshing face_mesh_general(const InputFace& face, const std::vector<RegionActionSpec>& actions, int max_steps,
-                              RewardPreset reward, MeshOptions options) {
+                              RewardPreset reward, MeshOptions options, const std::optional<BlockRules>& rules) {
   const auto start = std::chrono::steady_clock::now();
   FaceMeshing out;
-  out.decomposition = face_replay_general(face, actions, max_steps, reward, "replay", false);
+  out.decomposition = face_replay_general(face, actions, max_steps, reward, "replay", false, rules);
+  out.decomposition.region.min_edge_intervals = out.min_edge_intervals = std::max(1, options.min_edge_intervals);
   options.general.max_steps = max_steps;
   options.general.reward = reward;
   out.result = mesh_region_decomposition(face, out.decomposition.region, options);

@@ -61,13 +61,14 @@ constexpr SearchTry kSearchTries[] = {{2, kMeshCornerFraction}, {3, kMeshCornerF
 FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& settings, MeshOptions options);
 
 // Inputs:  face, a general face; actions, a whole cut sequence of it (as the workbench stores it, see
-//          face_replay_general); max_steps and reward as it was made; options (size, fixed intervals,
-//          smoothing).
+//          face_replay_general); max_steps, reward and rules as it was made; options (size, fixed
+//          intervals, smoothing; min_edge_intervals, as the decomposition says, RegionDecomposition).
 // Outputs: its decomposition (replayed, not searched again) and mesh. Throws InputError as
 //          face_replay_general does or when the request is infeasible; std::runtime_error when the
 //          mesh fails the conformity check.
 FaceMeshing face_mesh_general(const InputFace& face, const std::vector<RegionActionSpec>& actions, int max_steps,
-                              RewardPreset reward, MeshOptions options);
+                              RewardPreset reward, MeshOptions options,
+                              const std::optional<BlockRules>& rules = std::nullopt);
 
 // Inputs: input, the file name; meshing. Output: the JSON report (mesh_report.h).
 nlohmann::json face_meshing_json(const std::string& input, const FaceMeshing& meshing);

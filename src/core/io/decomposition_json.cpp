@@ -122,6 +122,11 @@ nlohmann::json region_decomposition_json(const std::string& input, const InputFa
   report["steps"] = d.cuts.size();
   report["policy_steps"] = d.policy_steps;
   report["seconds"] = d.seconds;
+  // What a replay needs besides the cuts: the block rules they were made under, and the mesh's edges.
+  report["rules"] = {{"min_corner_degrees", d.rules.min_corner_degrees},
+                     {"max_corner_degrees", d.rules.max_corner_degrees},
+                     {"flat_tolerance_degrees", d.rules.flat_tolerance_degrees}};
+  report["min_edge_intervals"] = d.min_edge_intervals;
   report["unfinished"] = nlohmann::json::array();
   for (const Region& part : d.unfinished) report["unfinished"].push_back(region_loops(part));
   const Region& r = face.region;

@@ -77,6 +77,9 @@ struct RegionDecomposition {
   int blocks = 0, templates = 0;
   double seconds = 0.0;
   bool time_capped = false;
+  // Kept by mesh_input_face's tries (api/face_meshing.h) for its mesh: at least this many intervals per
+  // model edge (MeshOptions::min_edge_intervals) meshes it as well as it was judged. 1 otherwise.
+  int min_edge_intervals = 1;
   bool complete() const { return status == EpisodeStatus::Complete; }
 };
 

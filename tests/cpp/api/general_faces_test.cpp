@@ -21,7 +21,9 @@
 #include "core/data/shape_generator.h"
 #include "core/geometry/occt_face.h"
 #include "core/geometry/occt_properties.h"
+#include "core/io/decomposition_json.h"
 #include "core/region/region_search.h"
+#include "core/region/region_snapshot.h"
 #include "support/test_shapes.h"
 
 using namespace autoblock;
@@ -201,6 +203,7 @@ TEST_CASE("a poor searched mesh is searched again (other widths, other block rul
   settings.policy_settings.general_time_limit = 0.0;  // the same searches on a loaded machine
   settings.policy_settings.general_search_width = 4;
   settings.occt_blocks = false;
+  settings.mesh_tries = false;  // the first try alone
   MeshOptions options;
   options.general.reward = RewardPreset::Mesh;
   const FaceDecomposition first = decompose_input_face(face, settings);
@@ -231,6 +234,51 @@ TEST_CASE("a poor searched mesh is searched again (other widths, other block rul
     }
   }
   for (const SearchTry& t : kSearchTries) CHECK(t.width <= std::end(kSearchTries)[-1].width);
+}
+
+TEST_CASE("decompose keeps the decomposition mesh keeps; its cuts, replayed under its rules, mesh the same",
+          "[api][general][mesh]") {
+  // The twelve-gon above, whose first try is poor: the tries keep another width, other rules or finer
+  // edges, and what decompose returns (what the workbench stores) must carry them.
+  const RectilinearPolygon polygon{{{-18.646142, -75.109508}, {37.180722, -44.086510}, {63.925294, -71.267773}, {66.163249, -47.635652}, {80.606792, -5.171962}, {21.939120, 88.004096}, {-18.657764, 55.630667}, {-51.198882, 45.317978}, {-93.111036, 29.260249}, {-75.146076, 7.209689}, {-63.371430, -9.786776}, {-47.259535, -28.066443}},
+                                   {{{8.087885, -7.065174}, {3.895501, -2.080271}, {4.520537, 4.447645}, {11.373567, 6.131284}, {17.283882, 1.331738}, {15.104209, -6.893002}}, {{-9.985978, -5.882433}, {-16.974334, -2.384746}, {-15.366714, 3.654658}, {-6.897206, 7.469710}, {-2.428610, -1.367177}}}};
+  const InputFace face = check_face(occt_face_from_polygon(polygon, 0.0, true), "twelve-gon");
+  DecomposeSettings settings;
+  settings.policy_settings.general_time_limit = 0.0;
+  settings.policy_settings.general_search_width = 4;
+  const FaceMeshing meshed = mesh_input_face(face, settings, MeshOptions{});
+  const FaceDecomposition kept = decompose_input_face(face, settings);
+  REQUIRE(kept.region.complete());
+  CHECK(kept.region.cuts.size() == meshed.decomposition.region.cuts.size());
+  CHECK(kept.region.rules.min_corner_degrees == meshed.decomposition.region.rules.min_corner_degrees);
+  CHECK(kept.region.min_edge_intervals == meshed.min_edge_intervals);
+  CHECK((kept.region.min_edge_intervals > 1 || meshed.corner_fraction != kMeshCornerFraction));  // not the default's
+  CHECK(kept.block_faces.size() == kept.region.finished.size());  // cut by OpenCASCADE, as before
+  const nlohmann::json report = region_decomposition_json("twelve-gon", face, kept.region);
+  CHECK(report["rules"]["max_corner_degrees"] == kept.region.rules.max_corner_degrees);
+  CHECK(report["min_edge_intervals"] == kept.region.min_edge_intervals);
+  // The stored cuts, replayed with the rules and meshed with the intervals, give mesh's own mesh.
+  const std::vector<RegionActionSpec> actions = region_action_specs(kept.region.cuts);
+  MeshOptions options;
+  options.min_edge_intervals = kept.region.min_edge_intervals;
+  const FaceMeshing again = face_mesh_general(face, actions, 0, kept.region.reward, options, kept.region.rules);
+  CHECK(again.result.quality.min_scaled_jacobian == Approx(meshed.result.quality.min_scaled_jacobian).epsilon(1e-9));
+  CHECK(again.result.mesh.quads.size() == meshed.result.mesh.quads.size());
+  CHECK(again.decomposition.region.min_edge_intervals == kept.region.min_edge_intervals);
+  // One search when asked (eval): the settings' width and the face's own rules.
+  settings.mesh_tries = false;
+  settings.occt_blocks = false;
+  const FaceDecomposition once = decompose_input_face(face, settings);
+  CHECK(once.region.min_edge_intervals == 1);
+  const RegionDecomposition default_rules = replay_region_decomposition(
+      face.region, region_action_specs(once.region.cuts),
+      [&] {
+        RegionEpisodeOptions o;
+        o.reward = once.region.reward;
+        return o;
+      }(),
+      "replay");
+  CHECK(default_rules.rules.max_corner_degrees == once.region.rules.max_corner_degrees);
 }
 
 TEST_CASE("general faces: grid-only actions and learned policies say so", "[api][general][errors]") {
