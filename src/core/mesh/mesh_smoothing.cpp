@@ -29,8 +29,37 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
     for (int k = 0; k < 4; ++k) around[static_cast<size_t>(mesh.quads[q][static_cast<size_t>(k)])].emplace_back(static_cast<int>(q), k);
   }
   std::vector<char> fixed(n, 0);
+  std::vector<std::array<int, 2>> along(n, {-1, -1});  // a boundary node's two boundary neighbours
   for (const MeshEdge& e : mesh_edges(mesh)) {
-    if (e.uses == 1) fixed[static_cast<size_t>(e.a)] = fixed[static_cast<size_t>(e.b)] = 1;
+    if (e.uses != 1) continue;
+    fixed[static_cast<size_t>(e.a)] = fixed[static_cast<size_t>(e.b)] = 1;
+    for (const auto& [from, to] : {std::pair{e.a, e.b}, std::pair{e.b, e.a}}) {
+      auto& ends = along[static_cast<size_t>(from)];
+      if (ends[0] < 0) {
+        ends[0] = to;
+      } else if (ends[1] < 0) {
+        ends[1] = to;
+      } else {
+        ends = {-2, -2};  // more than two: the boundary touches itself here; never slides
+      }
+    }
+  }
+  // The boundary nodes that may slide along the boundary (worst-first rounds only): in line with their
+  // two boundary neighbours (a straight stretch of the face's boundary, not a corner nor an arc), all
+  // their quads one block's (not where a block's side meets the boundary: the blocks keep their
+  // corners). Such a node stays on that line, strictly between its neighbours.
+  std::vector<char> slides(n, 0);
+  for (size_t v = 0; v < n; ++v) {
+    const auto [a, b] = along[v];
+    if (!fixed[v] || a < 0 || b < 0) continue;
+    bool one_block = !mesh.quad_block.empty();
+    for (const auto& [q, k] : around[v]) {
+      one_block = one_block && mesh.quad_block[static_cast<size_t>(q)] == mesh.quad_block[static_cast<size_t>(around[v][0].first)];
+    }
+    const Point2 pa = mesh.nodes[static_cast<size_t>(a)], pb = mesh.nodes[static_cast<size_t>(b)], pv = mesh.nodes[v];
+    const double abx = pb.x - pa.x, aby = pb.y - pa.y, avx = pv.x - pa.x, avy = pv.y - pa.y;
+    const double ab2 = abx * abx + aby * aby, t = (avx * abx + avy * aby) / ab2;
+    slides[v] = one_block && ab2 > 0.0 && std::fabs(abx * avy - aby * avx) <= 1e-9 * ab2 && t > 0.0 && t < 1.0;
   }
   // The worst quad around node; with a bar, it stops at the first quad at or below it (a candidate
   // position is taken only when its worst beats the bar, so the rest would not change that).
@@ -113,7 +142,7 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
     for (size_t q = 0; q < mesh.quads.size(); ++q) {
       if (sj[q] > minimum + 0.05) continue;
       for (int v : mesh.quads[q]) {
-        if (!fixed[static_cast<size_t>(v)]) worst_nodes.emplace_back(sj[q], v);
+        if (!fixed[static_cast<size_t>(v)] || slides[static_cast<size_t>(v)]) worst_nodes.emplace_back(sj[q], v);
       }
     }
     std::sort(worst_nodes.begin(), worst_nodes.end());
@@ -135,12 +164,25 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
       }
       double step = 0.25 * length / std::max(1, edges);
       double current = local_worst(node);
+      // A boundary node slides: two directions, along the line through its boundary neighbours, within
+      // [0.05, 0.95] of the way from one to the other.
+      const bool sliding = fixed[node] != 0;
+      const Point2 line_a = sliding ? mesh.nodes[static_cast<size_t>(along[node][0])] : Point2{};
+      const Point2 line_b = sliding ? mesh.nodes[static_cast<size_t>(along[node][1])] : Point2{};
+      const double line_x = line_b.x - line_a.x, line_y = line_b.y - line_a.y;
+      const double line_length = std::hypot(line_x, line_y);
       for (int halving = 0; halving < kHalvings && step > 0.0;) {
         const Point2 here = mesh.nodes[node];
         Point2 best_at = here;
         double best = current;
-        for (int d = 0; d < 8; ++d) {
-          mesh.nodes[node] = {here.x + step * directions[static_cast<size_t>(d)].x, here.y + step * directions[static_cast<size_t>(d)].y};
+        for (int d = 0; d < (sliding ? 2 : 8); ++d) {
+          if (sliding) {
+            const double at = ((here.x - line_a.x) * line_x + (here.y - line_a.y) * line_y) / (line_length * line_length);
+            const double t = std::clamp(at + (d == 0 ? step : -step) / line_length, 0.05, 0.95);
+            mesh.nodes[node] = {line_a.x + t * line_x, line_a.y + t * line_y};
+          } else {
+            mesh.nodes[node] = {here.x + step * directions[static_cast<size_t>(d)].x, here.y + step * directions[static_cast<size_t>(d)].y};
+          }
           const double w = local_worst(node, best);
           if (w > best) {
             best = w;

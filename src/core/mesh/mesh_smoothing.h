@@ -1,5 +1,4 @@
-// Smoothing of a quad mesh that never moves a boundary node and never lowers the minimum scaled
-// Jacobian.
+// Smoothing of a quad mesh that keeps its boundary and never lowers the minimum scaled Jacobian.
 //
 // A sweep visits every node that is not on the mesh's boundary (boundary nodes are the ends of edges
 // used by one quad: the face's outer loop and holes). For each it tries two positions: the
@@ -13,7 +12,12 @@
 // rounds (stopping at the first that moves nothing): the
 // free corners of the quads within 0.05 of the minimum (at most 400, worst first) each move by a
 // pattern search (eight directions, a quarter of the node's mean edge length, halved up to six
-// times), under the same rule: a move only when the node's worst quad gets better.
+// times), under the same rule: a move only when the node's worst quad gets better. In those rounds a
+// boundary node *slides* along the boundary (two directions) where it lies in line with its two
+// boundary neighbours (a straight stretch: not a corner, not on an arc's curve) and all its quads
+// are one block's (not where a block's side meets the boundary), staying on that line within
+// [0.05, 0.95] of the way between them: a block whose opposite sides differ in length gets its
+// boundary spacing evened where its quads are worst. No other boundary node moves.
 #pragma once
 
 #include "core/mesh/quad_mesh.h"
