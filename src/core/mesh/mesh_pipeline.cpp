@@ -197,7 +197,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
 
   start = std::chrono::steady_clock::now();
   result.mesh = block_model_mesh(result.block_model, result.intervals.intervals, face.planar.z, &face.arcs);
-  result.smoothing = smooth_quad_mesh(result.mesh, options.smoothing_sweeps);
+  result.smoothing = smooth_quad_mesh(result.mesh, options.smoothing_sweeps, kWorstRounds, &face.arcs);
   // A thin part whose two long sides have their vertices at different places along it gets a twisted
   // (inverted) quad when those sides carry few intervals, each vertex being a node: up to three times,
   // the edges of the parts with an inverted quad get twice their count as a minimum, and intervals
@@ -222,7 +222,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
       break;  // too many quads, or the fixed counts forbid more: the mesh stays as it is
     }
     result.mesh = block_model_mesh(result.block_model, result.intervals.intervals, face.planar.z, &face.arcs);
-    result.smoothing = smooth_quad_mesh(result.mesh, options.smoothing_sweeps);
+    result.smoothing = smooth_quad_mesh(result.mesh, options.smoothing_sweeps, kWorstRounds, &face.arcs);
   }
   // A fold that finer intervals do not undo (opposite sides spacing their nodes differently: a long
   // side with a fillet facing a short arc): those parts' blocks are filled along their sides' lengths
@@ -232,7 +232,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     std::vector<char> by_length(result.block_model.blocks.size(), 0);
     for (size_t b = 0; b < by_length.size(); ++b) by_length[b] = folded[static_cast<size_t>(result.block_model.blocks[b].part)];
     QuadMesh again = block_model_mesh(result.block_model, result.intervals.intervals, face.planar.z, &face.arcs, &by_length);
-    const SmoothingReport smoothing = smooth_quad_mesh(again, options.smoothing_sweeps);
+    const SmoothingReport smoothing = smooth_quad_mesh(again, options.smoothing_sweeps, kWorstRounds, &face.arcs);
     if (inverted_quads(again, nullptr) < before) {
       result.mesh = std::move(again);
       result.smoothing = smoothing;

@@ -18,7 +18,7 @@ double worst_jacobian(const QuadMesh& mesh) {
 
 }  // namespace
 
-SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_rounds) {
+SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_rounds, const FaceArcs* arcs) {
   SmoothingReport report;
   report.min_before = report.min_after = mesh.quads.empty() ? 0.0 : worst_jacobian(mesh);
   if (max_sweeps <= 0 || mesh.quads.empty()) return report;
@@ -44,22 +44,37 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
       }
     }
   }
-  // The boundary nodes that may slide along the boundary (worst-first rounds only): in line with their
-  // two boundary neighbours (a straight stretch of the face's boundary, not a corner nor an arc), all
-  // their quads one block's (not where a block's side meets the boundary: the blocks keep their
-  // corners). Such a node stays on that line, strictly between its neighbours.
+  // The boundary nodes that may slide along the boundary (worst-first rounds only): all their quads
+  // one block's (not where a block's side meets the boundary: the blocks keep their corners), and in
+  // line with their two boundary neighbours (a straight stretch of the face's boundary: slides[v] = 1),
+  // or on one of arcs' circles with both of them (slides[v] = 2, circle[v] its arc). Such a node stays
+  // on that line or circle, strictly between its neighbours.
   std::vector<char> slides(n, 0);
+  std::vector<int> circle(n, -1);
+  auto on_circle = [&](Point2 p, const CircularArc& arc) {
+    return std::fabs(std::hypot(p.x - arc.center.x, p.y - arc.center.y) - arc.radius) <= 1e-9 * arc.radius;
+  };
   for (size_t v = 0; v < n; ++v) {
     const auto [a, b] = along[v];
-    if (!fixed[v] || a < 0 || b < 0) continue;
-    bool one_block = !mesh.quad_block.empty();
+    if (!fixed[v] || a < 0 || b < 0 || mesh.quad_block.empty()) continue;
+    bool one_block = true;
     for (const auto& [q, k] : around[v]) {
       one_block = one_block && mesh.quad_block[static_cast<size_t>(q)] == mesh.quad_block[static_cast<size_t>(around[v][0].first)];
     }
+    if (!one_block) continue;
     const Point2 pa = mesh.nodes[static_cast<size_t>(a)], pb = mesh.nodes[static_cast<size_t>(b)], pv = mesh.nodes[v];
     const double abx = pb.x - pa.x, aby = pb.y - pa.y, avx = pv.x - pa.x, avy = pv.y - pa.y;
     const double ab2 = abx * abx + aby * aby, t = (avx * abx + avy * aby) / ab2;
-    slides[v] = one_block && ab2 > 0.0 && std::fabs(abx * avy - aby * avx) <= 1e-9 * ab2 && t > 0.0 && t < 1.0;
+    if (ab2 > 0.0 && std::fabs(abx * avy - aby * avx) <= 1e-9 * ab2 && t > 0.0 && t < 1.0) {
+      slides[v] = 1;
+      continue;
+    }
+    for (size_t k = 0; arcs && k < arcs->arcs.size() && !slides[v]; ++k) {
+      const CircularArc& arc = arcs->arcs[k];
+      if (!(arc.radius > 0.0) || !on_circle(pv, arc) || !on_circle(pa, arc) || !on_circle(pb, arc)) continue;
+      slides[v] = 2;
+      circle[v] = static_cast<int>(k);
+    }
   }
   // The worst quad around node; with a bar, it stops at the first quad at or below it (a candidate
   // position is taken only when its worst beats the bar, so the rest would not change that).
@@ -164,19 +179,45 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
       }
       double step = 0.25 * length / std::max(1, edges);
       double current = local_worst(node);
-      // A boundary node slides: two directions, along the line through its boundary neighbours, within
-      // [0.05, 0.95] of the way from one to the other.
+      // A boundary node slides: two directions, along the line or the circle through its boundary
+      // neighbours, within [0.05, 0.95] of the way from one to the other.
       const bool sliding = fixed[node] != 0;
       const Point2 line_a = sliding ? mesh.nodes[static_cast<size_t>(along[node][0])] : Point2{};
       const Point2 line_b = sliding ? mesh.nodes[static_cast<size_t>(along[node][1])] : Point2{};
       const double line_x = line_b.x - line_a.x, line_y = line_b.y - line_a.y;
       const double line_length = std::hypot(line_x, line_y);
+      const CircularArc* arc = slides[node] == 2 ? &arcs->arcs[static_cast<size_t>(circle[node])] : nullptr;
+      // On a circle: the neighbours' angles as seen from the node's (wrapped to (-pi, pi]), of opposite signs.
+      auto wrapped = [](double angle) { return std::remainder(angle, 2.0 * M_PI); };
+      double angle_a = 0.0, angle_b = 0.0, low = 0.05, high = 0.95;
+      if (arc) {
+        const Point2 c = arc->center, v = mesh.nodes[node];
+        const double at = std::atan2(v.y - c.y, v.x - c.x);
+        angle_a = wrapped(std::atan2(line_a.y - c.y, line_a.x - c.x) - at);
+        angle_b = wrapped(std::atan2(line_b.y - c.y, line_b.x - c.x) - at);
+        if (!(angle_a * angle_b < 0.0)) continue;  // not between them on the circle: stays
+        // Neither edge turns by more than one of the arc's chord steps (what the conformity check
+        // takes for a chord of the arc, FaceArcs::arc_of_chord).
+        const double span = std::fabs(angle_b - angle_a), limit = 0.999 * std::fabs(arc->sweep) / arc_chord_count(*arc);
+        low = std::max(low, 1.0 - limit / span);
+        high = std::min(high, limit / span);
+        if (!(low < high)) continue;
+        angle_a += at;
+        angle_b += at;
+      }
       for (int halving = 0; halving < kHalvings && step > 0.0;) {
         const Point2 here = mesh.nodes[node];
         Point2 best_at = here;
         double best = current;
         for (int d = 0; d < (sliding ? 2 : 8); ++d) {
-          if (sliding) {
+          if (arc) {
+            const Point2 c = arc->center;
+            const double sweep = angle_b - angle_a;
+            const double at = wrapped(std::atan2(here.y - c.y, here.x - c.x) - angle_a) / sweep;
+            const double t = std::clamp(at + (d == 0 ? step : -step) / (arc->radius * std::fabs(sweep)), low, high);
+            const double angle = angle_a + t * sweep;
+            mesh.nodes[node] = {c.x + arc->radius * std::cos(angle), c.y + arc->radius * std::sin(angle)};
+          } else if (sliding) {
             const double at = ((here.x - line_a.x) * line_x + (here.y - line_a.y) * line_y) / (line_length * line_length);
             const double t = std::clamp(at + (d == 0 ? step : -step) / line_length, 0.05, 0.95);
             mesh.nodes[node] = {line_a.x + t * line_x, line_a.y + t * line_y};

@@ -13,13 +13,15 @@
 // free corners of the quads within 0.05 of the minimum (at most 400, worst first) each move by a
 // pattern search (eight directions, a quarter of the node's mean edge length, halved up to six
 // times), under the same rule: a move only when the node's worst quad gets better. In those rounds a
-// boundary node *slides* along the boundary (two directions) where it lies in line with its two
-// boundary neighbours (a straight stretch: not a corner, not on an arc's curve) and all its quads
-// are one block's (not where a block's side meets the boundary), staying on that line within
-// [0.05, 0.95] of the way between them: a block whose opposite sides differ in length gets its
-// boundary spacing evened where its quads are worst. No other boundary node moves.
+// boundary node *slides* along the boundary (two directions) where all its quads are one block's
+// (not where a block's side meets the boundary) and it lies in line with its two boundary neighbours
+// (a straight stretch: not a corner) or on a circle of the face's arcs with both, staying on that line
+// or circle within [0.05, 0.95] of the way between them: a block whose opposite sides differ in
+// length gets its boundary spacing evened where its quads are worst. No other boundary node moves
+// (an arc's ends, its joins with straight edges, stay).
 #pragma once
 
+#include "core/geometry/circular_arc.h"
 #include "core/mesh/quad_mesh.h"
 
 namespace autoblock {
@@ -31,8 +33,11 @@ struct SmoothingReport {
 };
 
 // Inputs:  mesh, counter-clockwise quads; max_sweeps >= 0 (0: nothing moves); worst_rounds >= 0,
-//          the worst-first rounds after the sweeps.
-// Outputs: mesh with its interior nodes moved as above; the report.
-SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_rounds = 40);
+//          the worst-first rounds after the sweeps; arcs, the face's circular edges in the mesh's
+//          frame (nullptr: none; their nodes stay).
+// Outputs: mesh with its interior nodes, and the boundary nodes that slide, moved as above; the report.
+constexpr int kWorstRounds = 40;
+SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_rounds = kWorstRounds,
+                                 const FaceArcs* arcs = nullptr);
 
 }  // namespace autoblock

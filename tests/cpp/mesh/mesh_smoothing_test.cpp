@@ -155,3 +155,56 @@ TEST_CASE("boundary nodes slide along a straight side, not where blocks meet, no
   CHECK(slid);
   for (int i = n / 2; i <= n; ++i) CHECK(mesh.nodes[static_cast<size_t>(i)] == before.nodes[static_cast<size_t>(i)]);
 }
+
+TEST_CASE("boundary nodes on an arc slide along its circle, each edge within a chord step", "[mesh][smoothing][arc]") {
+  // A quarter annulus (radii 1 and 2), its outer arc's nodes bunched towards angle 0 and its interior
+  // jittered. Given the outer arc (FaceArcs), its nodes slide along the circle; the inner circle's nodes
+  // (no arc given) and the arc's ends stay; no edge of the outer arc turns by more than its chord step.
+  const int n = 8;
+  const double quarter = M_PI / 2.0;
+  QuadMesh mesh;
+  mesh.blocks = 1;
+  auto angle_of = [&](int i, int j) { return quarter * std::pow(static_cast<double>(i) / n, j == n ? 1.3 : 1.0); };
+  for (int j = 0; j <= n; ++j) {
+    const double r = 1.0 + static_cast<double>(j) / n;
+    for (int i = 0; i <= n; ++i) {
+      const double a = angle_of(i, j) + (i > 0 && i < n && j > 0 && j < n ? 0.04 * ((i + j) % 3 - 1) : 0.0);
+      mesh.nodes.push_back(Point2{r * std::cos(a), r * std::sin(a)});
+    }
+  }
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const int k = j * (n + 1) + i;
+      mesh.quads.push_back({k, k + n + 1, k + n + 2, k + 1});  // outwards, then round: counter-clockwise
+      mesh.quad_block.push_back(0);
+    }
+  }
+  REQUIRE(quad_scaled_jacobian(mesh.corners(0)) > 0.0);
+  FaceArcs arcs;
+  arcs.arcs.push_back(CircularArc{Point2{0.0, 0.0}, 2.0, 0.0, quarter, false, 0});
+  const QuadMesh before = mesh;
+  QuadMesh without = mesh;
+  const SmoothingReport with_arc = smooth_quad_mesh(mesh, 30, kWorstRounds, &arcs);
+  const SmoothingReport no_arc = smooth_quad_mesh(without, 30, kWorstRounds);
+  CHECK(with_arc.min_after >= with_arc.min_before);
+  CHECK(with_arc.min_after >= no_arc.min_after);
+  const double step = quarter / arc_chord_count(arcs.arcs[0]);
+  bool slid = false;
+  double previous = 0.0;
+  for (int i = 0; i <= n; ++i) {
+    const size_t outer = static_cast<size_t>(n * (n + 1) + i), inner = static_cast<size_t>(i);
+    const Point2 p = mesh.nodes[outer];
+    INFO("node " << i);
+    CHECK(std::hypot(p.x, p.y) == Approx(2.0).epsilon(1e-12));
+    const double a = std::atan2(p.y, p.x);
+    if (i > 0) CHECK(a - previous <= step);
+    if (i > 0) CHECK(a > previous);
+    previous = a;
+    slid = slid || !(p == before.nodes[outer]);
+    CHECK(mesh.nodes[inner] == before.nodes[inner]);      // the inner circle: no arc given
+    CHECK(without.nodes[outer] == before.nodes[outer]);  // no arcs: the outer one stays too
+  }
+  CHECK(mesh.nodes[static_cast<size_t>(n * (n + 1))] == before.nodes[static_cast<size_t>(n * (n + 1))]);
+  CHECK(mesh.nodes[static_cast<size_t>(n * (n + 1) + n)] == before.nodes[static_cast<size_t>(n * (n + 1) + n)]);
+  CHECK(slid);
+}
