@@ -1,8 +1,10 @@
 """Small GUI helpers: reporting errors (report view and a dialog), echoing console calls."""
 
+import contextlib
+
 import FreeCAD
 import FreeCADGui
-from PySide2 import QtWidgets
+from PySide2 import QtCore, QtWidgets
 
 from . import native
 
@@ -31,6 +33,17 @@ def report_exception(title, error):
 
         FreeCAD.Console.PrintLog("".join(traceback.format_exception(type(error), error, error.__traceback__)))
     report_error(title, message_of(error))
+
+
+@contextlib.contextmanager
+def busy():
+    """The wait cursor while the body runs (searching and meshing a face can take seconds), restored
+    however it ends."""
+    QtWidgets.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
+    try:
+        yield
+    finally:
+        QtWidgets.QApplication.restoreOverrideCursor()
 
 
 def echo(code):

@@ -188,6 +188,7 @@ class GuiTestCase(unittest.TestCase):
                 FreeCADGui.Selection.addSelection(item)
         FreeCADGui.runCommand("AutoBlock_AutoBlock")
         pump()
+        self.assertIsNone(QtWidgets.QApplication.overrideCursor())  # the wait cursor, gone once done
         return [o for o in self.doc.Objects if AutoBlock.is_autoblock(o)]
 
 

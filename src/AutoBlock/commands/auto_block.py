@@ -41,7 +41,7 @@ class AutoBlockCommand(BaseCommand):
 
     def run(self):
         from .. import console, preferences
-        from ..gui_utils import echo, object_ref, report_error
+        from ..gui_utils import busy, echo, object_ref, report_error
         from ..objects.autoblock_feature import is_autoblock
         from ..objects.fem_mesh import is_autoblock_hex_mesh, is_autoblock_mesh
         from ..objects.solid_blocks import is_autoblock_solid
@@ -77,7 +77,7 @@ class AutoBlockCommand(BaseCommand):
             return
         doc = targets[0][0].Document
         before = set(o.Name for o in doc.Objects)
-        with transaction("Auto-Block"):
+        with busy(), transaction("Auto-Block"):
             echo("import AutoBlock")
             made = set()
             for obj, sub, _ in targets:
