@@ -461,14 +461,25 @@ bool pieces_well_shaped(const std::vector<QuadPiece>& pieces) {
 }
 
 // The smooth template's pieces (see block.h) from its four boundary vertices v (smooth_template_corners).
-std::vector<QuadPiece> smooth_template_pieces(const Region& region, const std::vector<size_t>& v) {
+// inset = 0: the inner quadrilateral's corners halfway from v to the centroid. inset > 0 (a long part,
+// whose halfway corners would fold its side pieces): each of v moved into the minimum-area rectangle
+// shrunk by inset on every side (box: that rectangle), so the inner corners keep their distance from
+// the ends as from the sides.
+std::vector<QuadPiece> smooth_template_pieces(const Region& region, const std::vector<size_t>& v, double inset = 0.0,
+                                              const OrientedRectangle* box = nullptr) {
   const Ring& ring = region.outer();
   const size_t n = ring.size();
   const Point2 c = region.centroid();
   std::array<Point2, 4> inner;
   for (size_t k = 0; k < 4; ++k) {
-    inner[k] = Point2{snap_to_lattice(0.5 * (c.x + ring[v[k]].x), region.quantum()),
-                      snap_to_lattice(0.5 * (c.y + ring[v[k]].y), region.quantum())};
+    Point2 p{0.5 * (c.x + ring[v[k]].x), 0.5 * (c.y + ring[v[k]].y)};
+    if (inset > 0.0 && box) {
+      const Point2 u = box->axis, w{-u.y, u.x}, d{ring[v[k]].x - box->center.x, ring[v[k]].y - box->center.y};
+      const double a = std::clamp(d.x * u.x + d.y * u.y, -(0.5 * box->width - inset), 0.5 * box->width - inset);
+      const double b = std::clamp(d.x * w.x + d.y * w.y, -(0.5 * box->height - inset), 0.5 * box->height - inset);
+      p = Point2{box->center.x + a * u.x + b * w.x, box->center.y + a * u.y + b * w.y};
+    }
+    inner[k] = Point2{snap_to_lattice(p.x, region.quantum()), snap_to_lattice(p.y, region.quantum())};
   }
   std::vector<QuadPiece> pieces;
   for (size_t k = 0; k < 4; ++k) {
@@ -639,8 +650,15 @@ std::optional<std::vector<QuadPiece>> applicable_smooth_template(const Region& r
   const std::vector<size_t> v = smooth_template_corners(region);
   if (v.size() != 4) return std::nullopt;
   std::vector<QuadPiece> pieces = smooth_template_pieces(region, v);
-  if (!pieces_well_shaped(pieces)) return std::nullopt;
-  return pieces;
+  if (pieces_well_shaped(pieces)) return pieces;
+  // A long part (a finger's rounded end, a slot's half): its inner corners inset from the rectangle's
+  // sides by a fraction of its shorter side instead, as far from the ends as from the sides.
+  const OrientedRectangle box = min_area_rectangle(region);
+  for (const double fraction : {0.25, 0.15, 0.35}) {
+    pieces = smooth_template_pieces(region, v, fraction * box.shorter_side(), &box);
+    if (pieces_well_shaped(pieces)) return pieces;
+  }
+  return std::nullopt;
 }
 
 }  // namespace

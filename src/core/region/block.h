@@ -117,8 +117,12 @@ bool template_applies(const Region& region);
 // an inner quadrilateral halfway to its centroid: five pieces, the inner one last. Each of the four
 // boundary vertices splits a straight (or nearly straight) boundary into two corners of about 90
 // degrees; the inner quadrilateral's corners are three-valent interior vertices. It applies only
-// when each piece's quadrilateral of corners is convex with angles within [20, 160] degrees (a long
-// thin part's would fold); otherwise the template is the usual one.
+// when each piece's quadrilateral of corners is convex with angles within [20, 160] degrees. A long
+// part's (a finger's rounded end) would fold halfway to the centroid: its inner corners are then
+// the four vertices moved into the minimum-area rectangle shrunk by a quarter of its shorter side
+// (or 0.15, 0.35 of it), as far from the ends as from the sides; when none of those is well shaped
+// either, the template is the usual one (whose third corner, on a smooth end, meets the boundary at
+// nearly 180 degrees).
 // Inputs: region; rules. Output: true when the smooth template applies (template_pieces makes it).
 bool smooth_template(const Region& region, const BlockRules& rules = {});
 

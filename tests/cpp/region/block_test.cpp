@@ -290,6 +290,46 @@ TEST_CASE("smooth parts: the disk's template, and no template on a part with a c
   for (const Point2& p : pieces.back().ring) CHECK(std::hypot(p.x - 5, p.y - 2) == Approx(1.5).epsilon(1e-6));
 }
 
+TEST_CASE("a long part with a rounded end gets the smooth template, its inner corners inset from the sides",
+          "[region][block][arc]") {
+  // A finger 2 wide and 7 long whose end is two quarter-round fillets (radius 0.8) and a short flat:
+  // two corners (the cut across its top), the rest smooth. Halfway to the centroid, the inner corners
+  // would fold the side pieces (a spoke from a fillet's middle nearly along the side); inset from the
+  // rectangle's sides instead, every piece is a convex quadrilateral with angles in [20, 160] degrees,
+  // and no piece has a corner at a fillet's tangent join (where a quad would meet the boundary at 170).
+  Ring finger{{2, 7}, {0, 7}, {0, 0.8}};
+  for (int k = 1; k < 6; ++k) finger.push_back({0.8 - 0.8 * std::cos(k * M_PI / 12), 0.8 - 0.8 * std::sin(k * M_PI / 12)});
+  finger.push_back({0.8, 0});
+  finger.push_back({1.2, 0});
+  for (int k = 1; k < 6; ++k) finger.push_back({1.2 + 0.8 * std::sin(k * M_PI / 12), 0.8 - 0.8 * std::cos(k * M_PI / 12)});
+  finger.push_back({2, 0.8});
+  const Region part(finger, {}, kQ);
+  REQUIRE(template_applies(part));
+  REQUIRE(smooth_template(part));
+  const std::vector<QuadPiece> pieces = template_pieces(part);
+  REQUIRE(pieces.size() == 5);
+  double area = 0;
+  for (const QuadPiece& piece : pieces) {
+    area += signed_area(piece.ring);
+    for (int k = 0; k < 4; ++k) {
+      const CornerAngle a = piece_corner_angle(piece, k);
+      const double degrees = std::atan2(a.sine, a.cosine) * 180.0 / M_PI;
+      CHECK(degrees >= 20.0);
+      CHECK(degrees <= 160.0);
+      const Point2 v = piece.ring[static_cast<size_t>(piece.corners[static_cast<size_t>(k)])];
+      for (const Point2 join : {Point2{0, 0.8}, Point2{0.8, 0}, Point2{1.2, 0}, Point2{2, 0.8}}) {
+        CHECK(std::hypot(v.x - join.x, v.y - join.y) > 0.1);
+      }
+    }
+  }
+  CHECK(area == Approx(part.area()).epsilon(1e-9));
+  // The inner quadrilateral spans most of the finger's length: its corners as far from the ends as
+  // from the sides (a quarter of the width), not halfway to the centroid.
+  double low = 1e9, high = -1e9;
+  for (const Point2& p : pieces.back().ring) low = std::min(low, p.y), high = std::max(high, p.y);
+  CHECK(high - low > 5.0);
+}
+
 namespace {
 
 // An L (legs 4 wide, arms reaching 10) whose reflex corner at (4, 4) is filleted with radius 2: the
