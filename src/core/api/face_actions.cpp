@@ -1,11 +1,10 @@
 #include "core/api/face_actions.h"
 
-#include "core/api/face_meshing.h"
-
 #include <stdexcept>
 
 #include <TopoDS.hxx>
 
+#include "core/api/face_meshing.h"
 #include "core/common/error.h"
 #include "core/env/occt_replay.h"
 #include "core/env/region_replay.h"
@@ -97,16 +96,19 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
       } catch (const InputError&) {
         throw;
       } catch (const std::exception&) {
+        // no try meshed: the one search below
       }
     }
     if (meshed) {
       result.region = std::move(meshed->decomposition.region);
       result.region.seconds = meshed->seconds;  // every try's search and mesh
       if (settings.occt_blocks) {
-        const auto lock = lock_general_engine();
-        blocks = replay_region_cuts_occt(face.occt, face.region, result.region, {}, &face.arcs);
+        {
+          const auto lock = lock_general_engine();
+          blocks = replay_region_cuts_occt(face.occt, face.region, result.region, {}, &face.arcs);
+        }
+        set_block_faces(result, std::move(blocks));
       }
-      if (settings.occt_blocks) set_block_faces(result, std::move(blocks));
       return result;
     }
     RegionEpisodeOptions options;
