@@ -13,7 +13,6 @@
 
 #include <Standard_Failure.hxx>
 
-#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <optional>
@@ -371,6 +370,12 @@ std::optional<BlockRules> rules_of(const std::vector<double>& values) {
   return rules;
 }
 
+// A general decomposition's minimum intervals per model edge, as its report gives them.
+int min_edge_intervals_of(int value) {
+  if (value < 1 || value > 1000) throw InputError("min_edge_intervals: expected 1 to 1000");
+  return value;
+}
+
 py::dict step_py(const std::string& brep, const py::object& cuts, int step, int max_steps, const std::string& reward,
                  const std::string& source, const std::vector<double>& rules) {
   const std::optional<BlockRules> block_rules = rules_of(rules);
@@ -417,6 +422,7 @@ py::dict replay_py(const std::string& brep, const py::object& cuts, int max_step
                    int min_edge_intervals) {
   const RewardPreset preset = reward_preset_by_name(reward);
   const std::optional<BlockRules> block_rules = rules_of(rules);
+  const int intervals = min_edge_intervals_of(min_edge_intervals);
   const Sequence sequence = sequence_of(cuts);
   FaceDecomposition result;
   Written written;
@@ -429,7 +435,7 @@ py::dict replay_py(const std::string& brep, const py::object& cuts, int max_step
     }
     sequence.check_for(face);
     result = face_replay_general(face, sequence.region, max_steps, preset, policy, true, block_rules);
-    result.region.min_edge_intervals = std::max(1, min_edge_intervals);
+    result.region.min_edge_intervals = intervals;
     written = Written(result, source);
   }
   return general_decomposition_dict(written, max_steps, result.face);
@@ -493,7 +499,7 @@ py::dict mesh_py(const std::string& brep, const py::object& cuts, double size, i
                  const std::vector<double>& rules, int min_edge_intervals) {
   const RewardPreset preset = reward_preset_by_name(reward);
   const std::optional<BlockRules> block_rules = rules_of(rules);
-  if (min_edge_intervals < 1 || min_edge_intervals > 1000) throw InputError("min_edge_intervals: expected 1 to 1000");
+  const int intervals = min_edge_intervals_of(min_edge_intervals);
   const Sequence sequence = sequence_of(cuts);
   const MeshPlacement where = placement_of(placement);
   if (!out.empty() && !is_mesh_file_name(out)) throw InputError(out + ": expected a .msh, .vtu or .inp file");
@@ -505,7 +511,7 @@ py::dict mesh_py(const std::string& brep, const py::object& cuts, double size, i
     options.occt_model = false;  // the mesh and its report need no OpenCASCADE model of the blocks
     const InputFace face = face_of(brep, source);
     sequence.check_for(face);
-    if (face.is_general()) options.min_edge_intervals = min_edge_intervals;
+    if (face.is_general()) options.min_edge_intervals = intervals;
     result = face.is_general() ? face_mesh_general(face, sequence.region, max_steps, preset, options, block_rules).result
                                : face_mesh(face, sequence.grid, max_steps, preset, options).result;
     if (!out.empty()) write_mesh_file(out, result.mesh, where);

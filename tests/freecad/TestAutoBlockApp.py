@@ -85,6 +85,15 @@ class TestNativeModule(unittest.TestCase):
             module.mesh(brep, cuts, 0.5, out="/tmp/mesh.msh", placement=[1.0, 2.0])
         with self.assertRaisesRegex(ValueError, "ends after"):
             module.mesh(brep, cuts[:-1], 0.5)
+        # A general sequence's stored rules and minimum intervals are checked where they are read.
+        with self.assertRaisesRegex(ValueError, "block rules are 3 numbers"):
+            module.mesh(brep, cuts, 0.5, rules=[50.0, 130.0])
+        with self.assertRaisesRegex(ValueError, "0 < min corner < max corner"):
+            module.step(brep, cuts, 0, rules=[130.0, 50.0, 20.0])
+        with self.assertRaisesRegex(ValueError, "min_edge_intervals: expected 1 to 1000"):
+            module.mesh(brep, cuts, 0.5, min_edge_intervals=0)
+        with self.assertRaisesRegex(ValueError, "min_edge_intervals: expected 1 to 1000"):
+            module.replay(brep, cuts, min_edge_intervals=0)
         with self.assertRaisesRegex(ValueError, "does not exist"):
             module.train({"output": "/no/such/folder/p.pt", "train_folder": support.SAMPLES,
                           "test_folder": support.SAMPLES})

@@ -86,13 +86,11 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
       // The decomposition `autoblock mesh` keeps (face_meshing.h): its tries, each meshed. When none
       // meshes (a reason of ours: blocks that admit no interval counts, a part left unfinished), the
       // one search below, as it is: a decomposition can be shown even when it cannot be meshed.
-      DecomposeSettings once = settings;
-      once.mesh_tries = false;
-      once.occt_blocks = false;
+      // (mesh_input_face searches with mesh_tries and occt_blocks off itself.)
       MeshOptions mesh;
       mesh.occt_model = false;
       try {
-        meshed = mesh_input_face(face, once, mesh);
+        meshed = mesh_input_face(face, settings, mesh);
       } catch (const InputError&) {
         throw;
       } catch (const std::exception&) {

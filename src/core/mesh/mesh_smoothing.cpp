@@ -205,22 +205,27 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
         angle_a += at;
         angle_b += at;
       }
+      // The path it slides on, from one boundary neighbour (t = 0) to the other (t = 1): a point's
+      // parameter, the point at a parameter, and the path's length.
+      const double sweep = angle_b - angle_a;
+      auto parameter_of = [&](Point2 p) {
+        if (arc) return wrapped(std::atan2(p.y - arc->center.y, p.x - arc->center.x) - angle_a) / sweep;
+        return ((p.x - line_a.x) * line_x + (p.y - line_a.y) * line_y) / (line_length * line_length);
+      };
+      auto point_at = [&](double t) {
+        if (!arc) return Point2{line_a.x + t * line_x, line_a.y + t * line_y};
+        const double angle = angle_a + t * sweep;
+        return Point2{arc->center.x + arc->radius * std::cos(angle), arc->center.y + arc->radius * std::sin(angle)};
+      };
+      const double path_length = arc ? arc->radius * std::fabs(sweep) : line_length;
       for (int halving = 0; halving < kHalvings && step > 0.0;) {
         const Point2 here = mesh.nodes[node];
+        const double at = sliding ? parameter_of(here) : 0.0;
         Point2 best_at = here;
         double best = current;
         for (int d = 0; d < (sliding ? 2 : 8); ++d) {
-          if (arc) {
-            const Point2 c = arc->center;
-            const double sweep = angle_b - angle_a;
-            const double at = wrapped(std::atan2(here.y - c.y, here.x - c.x) - angle_a) / sweep;
-            const double t = std::clamp(at + (d == 0 ? step : -step) / (arc->radius * std::fabs(sweep)), low, high);
-            const double angle = angle_a + t * sweep;
-            mesh.nodes[node] = {c.x + arc->radius * std::cos(angle), c.y + arc->radius * std::sin(angle)};
-          } else if (sliding) {
-            const double at = ((here.x - line_a.x) * line_x + (here.y - line_a.y) * line_y) / (line_length * line_length);
-            const double t = std::clamp(at + (d == 0 ? step : -step) / line_length, 0.05, 0.95);
-            mesh.nodes[node] = {line_a.x + t * line_x, line_a.y + t * line_y};
+          if (sliding) {
+            mesh.nodes[node] = point_at(std::clamp(at + (d == 0 ? step : -step) / path_length, low, high));
           } else {
             mesh.nodes[node] = {here.x + step * directions[static_cast<size_t>(d)].x, here.y + step * directions[static_cast<size_t>(d)].y};
           }
