@@ -33,7 +33,7 @@ struct ChordsHash {
 }  // namespace
 
 std::vector<ScoredAction> score_candidates(const Region& part, double face_size, const RegionEpisodeOptions& options,
-                                          const std::chrono::steady_clock::time_point* deadline, size_t keep) {
+                                          const std::chrono::steady_clock::time_point* deadline, size_t keep, bool taper) {
   const Complexity complexity = part_complexity(part, options.rules);
   auto past_deadline = [&] { return deadline && std::chrono::steady_clock::now() > *deadline; };
   // Candidates with the same outcome form a group, scored once. A full cut is a line: the
@@ -59,6 +59,7 @@ std::vector<ScoredAction> score_candidates(const Region& part, double face_size,
     g.scored = true;
     if (!makes_progress(complexity, outcome->pieces, options.rules)) return;
     g.reward = region_cut_reward(options.reward, *outcome, face_size, options.rules);
+    if (taper) g.reward -= pieces_taper_cost(outcome->pieces, options.rules);
     g.outcome = std::make_shared<const CutOutcome>(std::move(*outcome));
   };
   size_t scored_count = 0;  // scored candidates that make progress (with their groups' members)

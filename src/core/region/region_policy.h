@@ -60,9 +60,11 @@ struct ScoredAction {
 //          rewards, in order: every one when keep is 0; else at least every one that could be among
 //          the keep best by reward (the first of equals first), the others left out when a bound of
 //          their reward (region_cut_reward_bound) shows they cannot be. Past the deadline, only those
-//          scored so far (at least one, if any).
+//          scored so far (at least one, if any). taper: each cut's reward less the taper charge of
+//          the blocks it leaves (pieces_taper_cost, region_reward.h; the search's ranking).
 std::vector<ScoredAction> score_candidates(const Region& part, double face_size, const RegionEpisodeOptions& options,
-                                          const std::chrono::steady_clock::time_point* deadline = nullptr, size_t keep = 0);
+                                          const std::chrono::steady_clock::time_point* deadline = nullptr, size_t keep = 0,
+                                          bool taper = false);
 
 struct RegionDecomposition {
   std::string policy;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace autoblock {
@@ -15,6 +16,33 @@ double quad_area(const std::array<Point2, 4>& q) {
 }
 
 }  // namespace
+
+double block_taper(const Region& block, const std::array<int, 4>& corners) {
+  const Ring& ring = block.outer();
+  const size_t n = ring.size();
+  std::array<double, 4> side{};
+  for (size_t k = 0; k < 4; ++k) {
+    for (size_t i = static_cast<size_t>(corners[k]); i != static_cast<size_t>(corners[(k + 1) % 4]); i = (i + 1) % n) {
+      side[k] += std::hypot(ring[(i + 1) % n].x - ring[i].x, ring[(i + 1) % n].y - ring[i].y);
+    }
+  }
+  auto ratio = [](double a, double b) { return std::max(a, b) / std::max(std::min(a, b), 1e-300); };
+  return std::max(ratio(side[0], side[2]), ratio(side[1], side[3]));
+}
+
+double block_taper_cost(const Region& block, const std::array<int, 4>& corners) {
+  const double taper = block_taper(block, corners);
+  return taper > kMeshTaperFrom ? kMeshTaperWeight * std::log(taper / kMeshTaperFrom) : 0.0;
+}
+
+double pieces_taper_cost(const std::vector<Region>& pieces, const BlockRules& rules) {
+  double cost = 0.0;
+  if (pieces.size() < 2) return cost;
+  for (const Region& piece : pieces) {
+    if (const std::optional<std::array<int, 4>> corners = block_corners(piece, rules)) cost += block_taper_cost(piece, *corners);
+  }
+  return cost;
+}
 
 double region_cut_reward(RewardPreset preset, const CutOutcome& outcome, double face_size, const BlockRules& rules) {
   const std::vector<Region>& pieces = outcome.pieces;

@@ -17,6 +17,7 @@
 // larger than a block may have (kept whole in one quad).
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "core/env/reward.h"
@@ -27,6 +28,26 @@ namespace autoblock {
 
 constexpr double kMeshShapeWeight = 6.0;
 constexpr double kTemplatePenalty = 2.0;
+constexpr double kMeshTaperWeight = 1.0;
+constexpr double kMeshTaperFrom = 3.0;
+
+// Inputs: block, a region; corners, its four corners (block_corners). Output: the larger of the two
+//         ratios of opposite sides' lengths along the boundary (>= 1; 1 for a parallelogram).
+double block_taper(const Region& block, const std::array<int, 4>& corners);
+
+// Inputs: block, a region; corners, its four corners. Output: what the search (region_search.h)
+//         charges a cut for a block it leaves with taper T (block_taper), under the mesh preset:
+//         kMeshTaperWeight ln(T / kMeshTaperFrom) when T exceeds kMeshTaperFrom, else 0. A mapped mesh
+//         puts as many intervals on the short side as on the long one: a wedge to a rounded tip (a
+//         short arc, one chord to the engine) crowds its quads against the tip, where they meet the
+//         straight edges at nearly 180 degrees. Not part of the reward: a policy without lookahead
+//         charged for the blocks it finishes but not for the parts it leaves shies away from finishing
+//         (the greedy policy made 50-part decompositions of 20-vertex polygons, 28 quads inverted).
+double block_taper_cost(const Region& block, const std::array<int, 4>& corners);
+
+// Inputs: pieces, what a cut left; rules. Output: the sum of block_taper_cost over the pieces that
+//         are blocks (0 for fewer than two pieces: no cut).
+double pieces_taper_cost(const std::vector<Region>& pieces, const BlockRules& rules = {});
 
 // Inputs:  preset; outcome, what the cut left (the part itself when N = 1) and its chords;
 //          face_size, the longer side of the face's bounding box; rules, what a block is.

@@ -34,8 +34,9 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
   // taken (no lookahead), which costs about what the greedy policy does on the parts left.
   // Only candidates that can be among the `width` best are scored (with pruning on: the same ones).
   const size_t width = late ? 1 : static_cast<size_t>(std::max(1, options_.width));
+  const bool taper = options_.taper && !late && options.reward == RewardPreset::Mesh;
   std::vector<ScoredAction> scored = score_candidates(
-      part, face_size, options, !late && options_.time_limit > 0.0 ? &deadline_ : nullptr, options_.prune ? width : 0);
+      part, face_size, options, !late && options_.time_limit > 0.0 ? &deadline_ : nullptr, options_.prune ? width : 0, taper);
   Entry best;
   if (scored.empty()) {
     best.action = progress_action(part, options.rules);
@@ -45,6 +46,7 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
     } else {
       const CutOutcome outcome = cut_region(part, best.action.cut);
       best.value = region_cut_reward(options.reward, outcome, face_size, options.rules);
+      if (taper) best.value -= pieces_taper_cost(outcome.pieces, options.rules);
       if (outcome.pieces.size() >= 2) {
         for (const Region& piece : outcome.pieces) best.value += solve(piece, options, face_size);
       }

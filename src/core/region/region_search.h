@@ -5,11 +5,16 @@
 // (region_candidates.h: cuts that make progress, and the template) and its O-grid (which finishes a
 // part with a hole: its reward is its value) of
 //   reward(action) + sum over the pieces it leaves of value(piece).
+// Under the mesh preset (RegionSearchOptions::taper) a cut's reward is also charged for the taper of
+// the blocks it leaves (pieces_taper_cost, region_reward.h), in the ranking and in the values: the
+// search trades a little return for blocks whose opposite sides are nearer in length. The episode's
+// reward does not hold the charge (a policy without lookahead, charged for the blocks it finishes but
+// not for the parts it leaves, shies away from finishing them).
 // Progress makes the recursion finite; parts are canonical values (region.h), so a part reached by
 // two orders of cuts is solved once. When the time budget runs out, parts not yet solved are finished
-// greedily (every candidate scored, the best immediate reward taken, no lookahead: the budget bounds
-// the lookahead, and the greedy finish costs about what the greedy policy does on the parts left),
-// and the policy reports time_capped(). Branch and bound: a candidate whose value cannot beat the best
+// greedily (every candidate scored, the best immediate reward taken, no lookahead and no taper
+// charge: the budget bounds the lookahead, and the greedy finish costs about what the greedy policy
+// does on the parts left), and the policy reports time_capped(). Branch and bound: a candidate whose value cannot beat the best
 // found so far (its reward plus its pieces' values where already solved, else an upper bound of them:
 // under the mesh preset every action costs at least 1 and a part without holes at least half its
 // reflex vertices; under Eq. (1) none) is not expanded, and a candidate whose reward's bound from its
@@ -29,6 +34,7 @@ struct RegionSearchOptions {
   int width = 4;              // candidates expanded per part (by immediate reward)
   double time_limit = 2.0;    // seconds per face; 0: no limit
   bool prune = true;          // branch and bound and bounded scoring, mesh preset (same decisions; false for tests)
+  bool taper = true;          // mesh preset: a finished block's value is minus its taper cost (false: 0, the reward alone)
 };
 
 class RegionSearchPolicy : public RegionPolicy {

@@ -14,6 +14,7 @@
 #include "core/geometry/occt_properties.h"
 #include "core/geometry/tolerance.h"
 #include "core/region/region_candidates.h"
+#include "core/region/region_reward.h"
 #include "core/region/region_search.h"
 #include "support/test_shapes.h"
 
@@ -192,10 +193,11 @@ TEST_CASE("score_candidates keeping the best k: the same k best as scoring every
   // Generated faces and the pieces of their first cuts, with and without holes: sorted by reward
   // (stable, as the search and greedy take them), the first k of score_candidates(..., k) are the
   // first k of score_candidates(..., 0), which scores every candidate; what it returns is in the
-  // candidates' order, a subsequence of the whole list.
+  // candidates' order, a subsequence of the whole list. The same with the search's taper charge
+  // (mesh preset), whose rewards are the plain ones less the taper costs of the blocks left.
   std::mt19937_64 rng(909);
   const GeneralKind kinds[] = {GeneralKind::Polygon, GeneralKind::Chamfered};
-  long compared = 0, left_out = 0;
+  long compared = 0, left_out = 0, tapered = 0;
   for (int i = 0; i < 24; ++i) {
     GeneralOptions options;
     options.kind = kinds[i % 2];
@@ -208,41 +210,54 @@ TEST_CASE("score_candidates keeping the best k: the same k best as scoring every
       episode.reward = preset;
       for (const Region& part : parts) {
         if (is_block(part, episode.rules)) continue;
-        auto by_reward = [](std::vector<ScoredAction> s) {
-          std::stable_sort(s.begin(), s.end(), [](const ScoredAction& a, const ScoredAction& b) { return a.reward > b.reward; });
-          return s;
-        };
-        const std::vector<ScoredAction> all = score_candidates(part, face.bbox().longer_side(), episode);
-        const std::vector<ScoredAction> sorted_all = by_reward(all);
-        for (const size_t k : {size_t{1}, size_t{4}, size_t{8}}) {
-          const std::vector<ScoredAction> kept = score_candidates(part, face.bbox().longer_side(), episode, nullptr, k);
-          REQUIRE(kept.size() >= std::min(k, all.size()));
-          size_t at = 0;  // a subsequence of all, in order
-          for (const ScoredAction& s : kept) {
-            while (at < all.size() && !(all[at].action.cut.origin == s.action.cut.origin &&
-                                        all[at].action.cut.direction == s.action.cut.direction &&
-                                        all[at].action.kind == s.action.kind && all[at].action.cut.kind == s.action.cut.kind)) {
+        for (const bool taper : {false, true}) {
+          if (taper && preset != RewardPreset::Mesh) continue;
+          auto by_reward = [](std::vector<ScoredAction> s) {
+            std::stable_sort(s.begin(), s.end(), [](const ScoredAction& a, const ScoredAction& b) { return a.reward > b.reward; });
+            return s;
+          };
+          const std::vector<ScoredAction> all = score_candidates(part, face.bbox().longer_side(), episode, nullptr, 0, taper);
+          const std::vector<ScoredAction> sorted_all = by_reward(all);
+          if (taper) {
+            const std::vector<ScoredAction> plain = score_candidates(part, face.bbox().longer_side(), episode);
+            REQUIRE(plain.size() == all.size());
+            for (size_t j = 0; j < all.size(); ++j) {
+              CHECK(all[j].reward == Approx(plain[j].reward - pieces_taper_cost(plain[j].outcome->pieces, episode.rules)));
+              tapered += all[j].reward < plain[j].reward;
+            }
+          }
+          for (const size_t k : {size_t{1}, size_t{4}, size_t{8}}) {
+            const std::vector<ScoredAction> kept =
+                score_candidates(part, face.bbox().longer_side(), episode, nullptr, k, taper);
+            REQUIRE(kept.size() >= std::min(k, all.size()));
+            size_t at = 0;  // a subsequence of all, in order
+            for (const ScoredAction& s : kept) {
+              while (at < all.size() && !(all[at].action.cut.origin == s.action.cut.origin &&
+                                          all[at].action.cut.direction == s.action.cut.direction &&
+                                          all[at].action.kind == s.action.kind && all[at].action.cut.kind == s.action.cut.kind)) {
+                ++at;
+              }
+              REQUIRE(at < all.size());
+              CHECK(all[at].reward == s.reward);
               ++at;
             }
-            REQUIRE(at < all.size());
-            CHECK(all[at].reward == s.reward);
-            ++at;
+            const std::vector<ScoredAction> sorted_kept = by_reward(kept);
+            for (size_t j = 0; j < std::min(k, all.size()); ++j) {
+              CHECK(sorted_kept[j].reward == sorted_all[j].reward);
+              CHECK(sorted_kept[j].action.cut.origin == sorted_all[j].action.cut.origin);
+              CHECK(sorted_kept[j].action.cut.direction == sorted_all[j].action.cut.direction);
+              CHECK(sorted_kept[j].action.kind == sorted_all[j].action.kind);
+            }
+            ++compared;
+            left_out += static_cast<long>(all.size() - kept.size());
           }
-          const std::vector<ScoredAction> sorted_kept = by_reward(kept);
-          for (size_t j = 0; j < std::min(k, all.size()); ++j) {
-            CHECK(sorted_kept[j].reward == sorted_all[j].reward);
-            CHECK(sorted_kept[j].action.cut.origin == sorted_all[j].action.cut.origin);
-            CHECK(sorted_kept[j].action.cut.direction == sorted_all[j].action.cut.direction);
-            CHECK(sorted_kept[j].action.kind == sorted_all[j].action.kind);
-          }
-          ++compared;
-          left_out += static_cast<long>(all.size() - kept.size());
         }
       }
     }
   }
   CHECK(compared > 200);
   CHECK(left_out > 0);  // the bound leaves candidates out (mesh preset, parts without holes)
+  CHECK(tapered > 0);   // some cuts leave blocks that taper more than kMeshTaperFrom
 }
 
 TEST_CASE("a convex fillet: its open ends count as corners, cut square to the edges; its sector takes the template",

@@ -49,6 +49,32 @@ TEST_CASE("the mesh preset charges the sharp corners a cut creates", "[region][r
   CHECK(region_template_reward(RewardPreset::Mesh, triangle, 4.0) < -1.0);
 }
 
+TEST_CASE("a block's taper, and what the search charges for it", "[region][reward]") {
+  // Taper: the larger ratio of opposite sides' lengths, each side summed along the boundary.
+  const Region rectangle(Ring{{0, 0}, {4, 0}, {4, 1}, {0, 1}}, {}, 1e-7);
+  CHECK(block_taper(rectangle, {0, 1, 2, 3}) == Approx(1.0));
+  CHECK(block_taper_cost(rectangle, {0, 1, 2, 3}) == 0.0);
+  const Region trapezoid(Ring{{0, 0}, {6, 0}, {3.5, 1}, {2.5, 1}}, {}, 1e-7);
+  CHECK(block_taper(trapezoid, {0, 1, 2, 3}) == Approx(6.0));
+  CHECK(block_taper_cost(trapezoid, {0, 1, 2, 3}) == Approx(kMeshTaperWeight * std::log(6.0 / kMeshTaperFrom)));
+  const Region bent(Ring{{0, 0}, {3, 0.01}, {6, 0}, {6, 1}, {0, 1}}, {}, 1e-7);
+  CHECK(block_taper(bent, {0, 2, 3, 4}) == Approx(2.0 * std::hypot(3.0, 0.01) / 6.0));
+  // Up to kMeshTaperFrom a taper is free: a trapezoid with parallel sides 6 and 2.
+  const Region mild(Ring{{0, 0}, {6, 0}, {4, 1}, {2, 1}}, {}, 1e-7);
+  CHECK(block_taper_cost(mild, {0, 1, 2, 3}) == 0.0);
+  // Not part of the reward: a cut leaving a taper-7 block earns what it did without the term.
+  const Region long_rectangle(Ring{{0, 0}, {8, 0}, {8, 2}, {0, 2}}, {}, 1e-7);
+  const CutOutcome outcome = cut_region(long_rectangle, {CutKind::Full, {0.5, 0}, {3, 2}});
+  REQUIRE(outcome.pieces.size() == 2);
+  double thin = 0.0;
+  for (const Region& piece : outcome.pieces) {
+    REQUIRE(is_block(piece));
+    thin += std::log(min_area_rectangle(piece).aspect_ratio());
+  }
+  const double expected = -1.0 - kMeshThinWeight * thin - kMeshShapeWeight * (1.0 - std::sin(std::atan2(2.0, 3.0)));
+  CHECK(region_cut_reward(RewardPreset::Mesh, outcome, 8.0) == Approx(expected));
+}
+
 TEST_CASE("the mesh preset charges a template for the corners it makes and the obtuse ones it keeps", "[region][reward]") {
   constexpr double kQ = 1e-7;
   // A square's template: four quads with right angles at the feet and the centre, nothing to charge
