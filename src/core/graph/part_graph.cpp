@@ -81,28 +81,34 @@ GraphMethod graph_method_by_name(const std::string& name) {
 }
 
 PartGraph part_graph(const Part& part, const GraphOptions& options) {
+  const Grid& grid = part.grid();
+  std::vector<std::vector<Point2>> loops;
+  for (const CornerRing& loop : part_boundary(part)) {
+    std::vector<Point2>& points = loops.emplace_back();
+    points.reserve(loop.size());
+    for (const Corner& c : loop) points.push_back({grid.xs[static_cast<size_t>(c.i)], grid.ys[static_cast<size_t>(c.j)]});
+  }
+  return loops_graph(loops, part.bbox().longer_side(), options);
+}
+
+PartGraph loops_graph(const std::vector<std::vector<Point2>>& loops, double longer_side, const GraphOptions& options) {
   if (!(options.size_fraction > 0.0) || !(options.shape_bound > 0.0) || options.shape_bound > 0.125 ||
       options.max_nodes < 0) {
     throw std::invalid_argument("part_graph: size_fraction must be > 0, shape_bound in (0, 0.125], max_nodes >= 0");
   }
-  const Grid& grid = part.grid();
-  const std::vector<CornerRing> loops = part_boundary(part);
-
   const bool bounded = options.method == GraphMethod::Bounded;
-  const double size_bound = options.size_fraction * part.bbox().longer_side();
+  const double size_bound = options.size_fraction * longer_side;
   size_t corner_count = 0;
-  for (const CornerRing& loop : loops) corner_count += loop.size();
+  for (const std::vector<Point2>& loop : loops) corner_count += loop.size();
 
   PartGraph graph;
   Cdt cdt;
   int corners = 0;
   size_t splits = 0;  // Bounded: edge points inserted so far
-  for (const CornerRing& loop : loops) {
+  for (const std::vector<Point2>& points : loops) {
     std::vector<VertexHandle> ring;
-    std::vector<Point2> points;
-    ring.reserve(loop.size());
-    for (const Corner& c : loop) {
-      const Point2 p{grid.xs[static_cast<size_t>(c.i)], grid.ys[static_cast<size_t>(c.j)]};
+    ring.reserve(points.size());
+    for (const Point2& p : points) {
       const VertexHandle v = cdt.insert(Kernel::Point_2(p.x, p.y));
       if (v->info().node != -1) throw std::logic_error("part_graph: two model vertices at one point");
       v->info().node = corners++;
@@ -110,7 +116,6 @@ PartGraph part_graph(const Part& part, const GraphOptions& options) {
       graph.features.push_back({0.f, 0.f, 1.f});
       graph.vertex_nodes.push_back(v->info().node);
       ring.push_back(v);
-      points.push_back(p);
     }
     for (size_t k = 0; k < ring.size(); ++k) {
       const size_t next = (k + 1) % ring.size();
@@ -119,7 +124,7 @@ PartGraph part_graph(const Part& part, const GraphOptions& options) {
         // Split the edge evenly into pieces no longer than the size bound (at most
         // ceil(1 / size_fraction) - 1 points, as no edge is longer than the bounding box).
         const Point2 a = points[k], b = points[next];
-        const double length = std::abs(b.x - a.x) + std::abs(b.y - a.y);
+        const double length = std::hypot(b.x - a.x, b.y - a.y);
         const int pieces = static_cast<int>(std::ceil(length / size_bound - 1e-9));
         for (int s = 1; s < pieces; ++s) {
           if (options.max_nodes > 0 && corner_count + splits >= static_cast<size_t>(options.max_nodes)) break;

@@ -64,4 +64,14 @@ struct PartGraph {
 // Throws std::invalid_argument for options outside those ranges.
 PartGraph part_graph(const Part& part, const GraphOptions& options = {});
 
+// Inputs:  loops, closed polygons (the outer loop and the holes of a part, disjoint, no island in a
+//          hole; any orientation), their vertices the model vertices; longer_side, the longer side of
+//          their bounding box (the size bound's unit); options as above.
+// Outputs: the graph of part_graph for those loops: model vertices first, in the loops' order; an
+//          edge is split by its Euclidean length. part_graph and region_graph (region_graph.h) are
+//          this on their loops.
+// Throws std::invalid_argument for options outside their ranges, std::logic_error for two vertices
+// at one point.
+PartGraph loops_graph(const std::vector<std::vector<Point2>>& loops, double longer_side, const GraphOptions& options = {});
+
 }  // namespace autoblock
