@@ -75,9 +75,6 @@ std::string region_graph_problem(const Region& region, const PartGraph& g) {
   return "";
 }
 
-Region region_of(const RectilinearPolygon& polygon) {
-  return Region(polygon.outer, polygon.holes, tolerance_for_size(ring_bbox(polygon.outer).longer_side()));
-}
 
 }  // namespace
 
@@ -113,7 +110,7 @@ TEST_CASE("region_graph of general faces, with holes and arcs, and their pieces:
   // (an edge is at most the bounding box's diagonal, sqrt(2) times its longer side: 4 points).
   std::vector<Region> faces;
   for (int i = 0; i < 12; ++i) {
-    faces.push_back(region_of(test::general_polygon(100 + i, i % 2 ? GeneralKind::Chamfered : GeneralKind::Polygon, i % 3 == 0)));
+    faces.push_back(test::region_of(test::general_polygon(100 + i, i % 2 ? GeneralKind::Chamfered : GeneralKind::Polygon, i % 3 == 0)));
   }
   std::mt19937_64 rng(31);
   for (int i = 0; i < 10; ++i) {

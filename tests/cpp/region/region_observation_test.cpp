@@ -11,14 +11,6 @@
 
 using namespace autoblock;
 
-namespace {
-
-Region region_of(const RectilinearPolygon& polygon) {
-  return Region(polygon.outer, polygon.holes, tolerance_for_size(ring_bbox(polygon.outer).longer_side()));
-}
-
-}  // namespace
-
 TEST_CASE("the observation at a triangle's corners, by hand", "[region][observation]") {
   // (0,0), (4,0), (0,3): s = 4, centroid (4/3, 1). At (0,0): previous (0,3), next (4,0), a right
   // angle. At (4,0): previous (0,0), next (0,3), the angle atan(3/4) = 36.87 degrees.
@@ -44,7 +36,7 @@ TEST_CASE("the region observation on a rectilinear part is the grid's", "[region
   for (const GeneratedShape& shape : test::generated_shapes(20, 41, options)) {
     const GridFace face = make_grid_face(shape.polygon);
     const std::vector<CornerRing> loops = part_boundary(face.whole);
-    const Region region = region_of(shape.polygon);
+    const Region region = test::region_of(shape.polygon);
     REQUIRE(region.loop_count() == static_cast<int>(loops.size()));
     for (int l = 0; l < region.loop_count(); ++l) {
       const Ring& ring = region.loop(l);
@@ -79,14 +71,14 @@ TEST_CASE("region observations: true angles, bounded, independent of units and p
   // part); every number in [-1, 1]; the same face drawn 1000 times larger elsewhere, the same numbers.
   for (int i = 0; i < 16; ++i) {
     const RectilinearPolygon polygon = test::general_polygon(500 + i, i % 2 ? GeneralKind::Chamfered : GeneralKind::Polygon, i % 4 < 2);
-    const Region region = region_of(polygon);
+    const Region region = test::region_of(polygon);
     RectilinearPolygon moved;
     for (const Point2& p : polygon.outer) moved.outer.push_back({1000.0 * p.x + 3.0, 1000.0 * p.y - 8.0});
     for (const Ring& hole : polygon.holes) {
       Ring& h = moved.holes.emplace_back();
       for (const Point2& p : hole) h.push_back({1000.0 * p.x + 3.0, 1000.0 * p.y - 8.0});
     }
-    const Region big = region_of(moved);
+    const Region big = test::region_of(moved);
     REQUIRE(big.loop_count() == region.loop_count());
     for (int l = 0; l < region.loop_count(); ++l) {
       const Ring& ring = region.loop(l);

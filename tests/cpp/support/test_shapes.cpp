@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <random>
 
+#include "core/geometry/tolerance.h"
 #include "core/geometry/validate_polygon.h"
 #include "core/region/region_candidates.h"
 #include "core/region/region_cut.h"
@@ -37,6 +38,10 @@ RectilinearPolygon general_polygon(std::uint64_t seed, GeneralKind kind, bool ho
   options.holes = holes;
   const GeneralShape shape = generate_general_shape(rng, options);
   return RectilinearPolygon{shape.outer, shape.holes};
+}
+
+Region region_of(const RectilinearPolygon& polygon) {
+  return Region(polygon.outer, polygon.holes, tolerance_for_size(ring_bbox(polygon.outer).longer_side()));
 }
 
 std::vector<Region> face_and_first_pieces(const Region& face, size_t count) {

@@ -29,6 +29,9 @@ std::vector<GeneratedShape> generated_shapes(int count, std::uint64_t seed, cons
 // Inputs: seed, kind, holes. Output: one generated general shape (general_generator.h) as a polygon.
 RectilinearPolygon general_polygon(std::uint64_t seed, GeneralKind kind, bool holes);
 
+// Inputs: polygon. Output: it as a region, on the lattice of its size's tolerance (tolerance.h).
+Region region_of(const RectilinearPolygon& polygon);
+
 // Inputs: face, a region; count. Output: the face, then the pieces of its first candidate cuts
 // (region_candidates order) that split it, until more than count parts are listed: parts of many
 // shapes for property tests of cuts and scores.

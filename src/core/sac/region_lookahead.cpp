@@ -1,0 +1,82 @@
+#include "core/sac/region_lookahead.h"
+
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "core/region/block.h"
+#include "core/region/region_reward.h"
+
+namespace autoblock {
+
+RegionLookahead region_look_ahead(const Region& part, double face_size, const RegionEpisodeOptions& options) {
+  RegionLookahead result;
+  const double scale = lookahead_reward_scale(options.reward);
+  // The vertex each candidate starts at, by its origin (candidates start at a vertex exactly).
+  std::map<std::pair<double, double>, int> vertex_at;
+  std::vector<bool> reflex;
+  for (const Ring& loop : part.loops()) {
+    for (size_t i = 0; i < loop.size(); ++i) {
+      vertex_at.emplace(std::make_pair(loop[i].x, loop[i].y), static_cast<int>(reflex.size()));
+      reflex.push_back(vertex_shape(loop, i, options.rules).reflex);
+    }
+  }
+  // What a cut separating nothing earns: the value of a missing cut in a vertex's summary.
+  const double nothing = region_cut_reward(options.reward, CutOutcome{{part}, {}}, face_size, options.rules);
+  std::vector<std::vector<size_t>> at_vertex(reflex.size());
+  for (ScoredAction& scored : score_candidates(part, face_size, options)) {
+    RegionCandidate c;
+    c.action = scored.action;
+    c.reward = scored.reward;
+    c.pieces = static_cast<int>(scored.outcome->pieces.size());
+    if (scored.action.kind == RegionAction::Kind::Cut) {
+      for (const Region& piece : scored.outcome->pieces) {
+        if (is_block(piece, options.rules)) {
+          ++c.blocks;
+        } else {
+          c.to_cut.push_back(piece);
+        }
+      }
+      const auto found = vertex_at.find({scored.action.cut.origin.x, scored.action.cut.origin.y});
+      if (found != vertex_at.end()) {
+        c.vertex = found->second;
+        at_vertex[static_cast<size_t>(c.vertex)].push_back(result.candidates.size());
+      }
+    }
+    result.candidates.push_back(std::move(c));
+  }
+  for (size_t v = 0; v < reflex.size(); ++v) {
+    std::array<float, kVertexLookahead> f{};
+    f[0] = reflex[v] ? 1.0f : 0.0f;
+    // The two best by reward, the earlier first among equals.
+    int best[2] = {-1, -1};
+    for (const size_t k : at_vertex[v]) {
+      const double r = result.candidates[k].reward;
+      if (best[0] < 0 || r > result.candidates[static_cast<size_t>(best[0])].reward) {
+        best[1] = best[0];
+        best[0] = static_cast<int>(k);
+      } else if (best[1] < 0 || r > result.candidates[static_cast<size_t>(best[1])].reward) {
+        best[1] = static_cast<int>(k);
+      }
+    }
+    for (int j = 0; j < 2; ++j) {
+      const size_t s = static_cast<size_t>(j);
+      if (best[j] < 0) {
+        f[1 + s] = static_cast<float>(nothing / scale);
+        f[3 + s] = 0.25f;
+        f[5 + s] = 0.0f;
+        continue;
+      }
+      const RegionCandidate& c = result.candidates[static_cast<size_t>(best[j])];
+      f[1 + s] = static_cast<float>(c.reward / scale);
+      f[3 + s] = static_cast<float>(c.pieces) / 4.0f;
+      f[5 + s] = static_cast<float>(c.blocks) / static_cast<float>(c.pieces);
+    }
+    result.vertex_features.push_back(f);
+  }
+  result.scale = {static_cast<float>(part.bbox().longer_side() / face_size),
+                  static_cast<float>(std::sqrt(part.area()) / face_size)};
+  return result;
+}
+
+}  // namespace autoblock

@@ -1,0 +1,48 @@
+// One step of lookahead from a general part (issue 12): the candidate actions of the general
+// engine (region_candidates.h) that make progress, with the reward each earns and the pieces it
+// leaves, and per-vertex summaries of the two best cuts at each vertex: what part_lookahead.h is on
+// the grid, for the lookahead agent's value network on general faces.
+//
+// On the grid a corner has two cuts, horizontal and vertical; a vertex of a general part has many
+// (its edges' extensions, bisector, normals, the minimum-area rectangle's axes, diagonals; partial
+// and full). Its summary holds the best two by reward (the earlier candidate first among equals),
+// in the grid's layout (part_lookahead.h, kVertexLookahead numbers):
+//   [0] reflex (0/1)
+//   [1..2] reward / lookahead_reward_scale of the best and the second best cut from the vertex
+//   [3..4] their N / 4 (pieces left)        [5..6] their blocks / N
+// A vertex with fewer than two such cuts gets, for the missing ones, what a cut that separates
+// nothing earns (N = 1, no block). Cuts from an edge's midpoint and the template are candidates but
+// belong to no vertex. The scale numbers: the part's bounding-box longer side and the square root of
+// its area, over the face's size.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/region/region_policy.h"
+#include "core/sac/part_lookahead.h"
+
+namespace autoblock {
+
+struct RegionCandidate {
+  RegionAction action;
+  int vertex = -1;              // the vertex it starts at (loops flattened, Region::loops order), -1: none
+  double reward = 0.0;          // under the episode's preset
+  int pieces = 0;               // N (1 for the template)
+  int blocks = 0;               // pieces that are blocks under the episode's rules
+  std::vector<Region> to_cut;   // the pieces that are not blocks
+};
+
+struct RegionLookahead {
+  std::vector<RegionCandidate> candidates;  // score_candidates order
+  std::vector<std::array<float, kVertexLookahead>> vertex_features;  // one per vertex, loops flattened
+  std::array<float, kPartScale> scale{};
+};
+
+// Inputs:  part, not a block; face_size, the longer side of the face's bounding box; options, the
+//          episode's (reward preset and block rules). The caller holds lock_general_engine()
+//          (region_policy.h), as for any computation on regions.
+// Outputs: its lookahead (above). Deterministic.
+RegionLookahead region_look_ahead(const Region& part, double face_size, const RegionEpisodeOptions& options);
+
+}  // namespace autoblock
