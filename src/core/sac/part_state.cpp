@@ -35,20 +35,28 @@ std::shared_ptr<const PartState> make_part_state(const Part& part, const PartSta
   }
   if (!options.lookahead) return state;
   PartLookahead lookahead = look_ahead(part, loops, options.face_size, options.reward);
-  const size_t nodes = state->graph.positions.size();
-  state->feature_count = kLookaheadFeatures;
-  state->features.assign(nodes * kLookaheadFeatures, 0.0f);
-  for (size_t n = 0; n < nodes; ++n) {
-    float* row = &state->features[n * kLookaheadFeatures];
-    for (int k = 0; k < 3; ++k) row[k] = state->graph.features[n][static_cast<size_t>(k)];
-    for (int k = 0; k < kPartScale; ++k) row[3 + kVertexLookahead + k] = lookahead.scale[static_cast<size_t>(k)];
-  }
-  for (size_t v = 0; v < state->graph.vertex_nodes.size(); ++v) {
-    float* row = &state->features[static_cast<size_t>(state->graph.vertex_nodes[v]) * kLookaheadFeatures];
-    for (int k = 0; k < kVertexLookahead; ++k) row[3 + k] = lookahead.vertex_features[v][static_cast<size_t>(k)];
-  }
+  set_lookahead_features(*state, lookahead.vertex_features, lookahead.scale);
   state->lines = std::move(lookahead.lines);
   return state;
+}
+
+void set_lookahead_features(PartState& state, const std::vector<std::array<float, kVertexLookahead>>& vertex_features,
+                            const std::array<float, kPartScale>& scale) {
+  if (vertex_features.size() != state.graph.vertex_nodes.size()) {
+    throw std::logic_error("set_lookahead_features: one summary per model vertex expected");
+  }
+  const size_t nodes = state.graph.positions.size();
+  state.feature_count = kLookaheadFeatures;
+  state.features.assign(nodes * kLookaheadFeatures, 0.0f);
+  for (size_t n = 0; n < nodes; ++n) {
+    float* row = &state.features[n * kLookaheadFeatures];
+    for (int k = 0; k < 3; ++k) row[k] = state.graph.features[n][static_cast<size_t>(k)];
+    for (int k = 0; k < kPartScale; ++k) row[3 + kVertexLookahead + k] = scale[static_cast<size_t>(k)];
+  }
+  for (size_t v = 0; v < state.graph.vertex_nodes.size(); ++v) {
+    float* row = &state.features[static_cast<size_t>(state.graph.vertex_nodes[v]) * kLookaheadFeatures];
+    for (int k = 0; k < kVertexLookahead; ++k) row[3 + k] = vertex_features[v][static_cast<size_t>(k)];
+  }
 }
 
 namespace {

@@ -3,6 +3,7 @@
 // lookahead agent, node features with one cut of lookahead and the candidate cuts themselves.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -36,6 +37,14 @@ struct PartState {
 
 // Inputs: part; options. Output: the part's state.
 std::shared_ptr<const PartState> make_part_state(const Part& part, const PartStateOptions& options);
+
+// Inputs:  state, with its graph; vertex_features, one per model vertex (graph.vertex_nodes order);
+//          scale, the part's.
+// Effect:  the lookahead node features (kLookaheadFeatures per node, above): the graph's one-hot kind,
+//          the vertex's summary at model-vertex nodes (zero elsewhere), the scale at every node.
+//          Shared by grid parts and general regions (region_state.h).
+void set_lookahead_features(PartState& state, const std::vector<std::array<float, kVertexLookahead>>& vertex_features,
+                            const std::array<float, kPartScale>& scale);
 
 // Inputs:  state, of a part P; symmetry in 0..7 (part_symmetry.h: bit 0 mirrors x, bits 1-2 count
 //          quarter turns).
