@@ -1,0 +1,69 @@
+#include "core/sac/region_lookahead_policy.h"
+
+#include <utility>
+
+#include "core/region/region_candidates.h"
+
+namespace autoblock {
+
+RegionLookaheadPolicy::RegionLookaheadPolicy(std::shared_ptr<LookaheadAgent> agent, std::string name)
+    : agent_(std::move(agent)), name_(std::move(name)) {}
+
+RegionStateOptions RegionLookaheadPolicy::state_options(const RegionEpisodeOptions& episode, double face_size) const {
+  RegionStateOptions options;
+  options.graph = agent_->state_options(face_size).graph;
+  options.lookahead = true;
+  options.episode = episode;
+  options.episode.reward = agent_->config().reward;  // W's preset: rewards and features as it learned them
+  options.face_size = face_size;
+  return options;
+}
+
+std::vector<double> RegionLookaheadPolicy::action_values(const RegionPartState& state, const RegionEpisodeOptions& episode,
+                                                         double face_size) {
+  // The pieces not valued yet, as one batch.
+  std::vector<Region> fresh;
+  std::vector<std::shared_ptr<const RegionPartState>> keep;
+  std::vector<const PartState*> batch;
+  for (const RegionCandidate& c : state.candidates) {
+    for (const Region& piece : c.to_cut) {
+      if (values_.count(piece)) continue;
+      values_.emplace(piece, 0.0);
+      fresh.push_back(piece);
+    }
+  }
+  if (!fresh.empty()) {
+    for (const Region& piece : fresh) {
+      keep.push_back(make_region_state(piece, state_options(episode, face_size)));
+      batch.push_back(keep.back().get());
+    }
+    const std::vector<double> w = agent_->deployed_values(batch);
+    for (size_t k = 0; k < fresh.size(); ++k) values_[fresh[k]] = w[k];
+  }
+  std::vector<double> q;
+  q.reserve(state.candidates.size());
+  for (const RegionCandidate& c : state.candidates) {
+    double value = c.reward;
+    for (const Region& piece : c.to_cut) value += agent_->config().gamma * values_.at(piece);
+    q.push_back(value);
+  }
+  return q;
+}
+
+RegionAction RegionLookaheadPolicy::choose(const RegionEpisode& episode) {
+  if (episode.face().hash() != face_hash_ || episode.steps() == 0) {
+    values_.clear();
+    face_hash_ = episode.face().hash();
+  }
+  const Region& part = episode.current_part();
+  const auto state = make_region_state(part, state_options(episode.options(), episode.face_size()));
+  if (state->candidates.empty()) return progress_action(part, episode.options().rules);
+  const std::vector<double> q = action_values(*state, episode.options(), episode.face_size());
+  size_t best = 0;
+  for (size_t k = 1; k < q.size(); ++k) {
+    if (q[k] > q[best]) best = k;
+  }
+  return state->candidates[best].action;
+}
+
+}  // namespace autoblock

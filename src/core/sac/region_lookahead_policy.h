@@ -1,0 +1,43 @@
+// The lookahead agent deployed on general faces (issue 12): a RegionPolicy that values every
+// candidate action of the current part (region_lookahead.h) as
+//   Q(P, a) = reward(P, a) + gamma * sum over the pieces a leaves that are not blocks of W(piece),
+// W the agent's deployed value network on the pieces' states (region_state.h), rewards and features
+// under the agent's reward preset (what W learned; the episode's rules), and takes the best
+// (the earlier candidate among equals). The template and an O-grid finish the part: their Q is their
+// reward. A part with no candidate that makes progress gets progress_action, so every face ends in
+// blocks. Within a decomposition a piece's value is computed once (kept by the part, which is a
+// canonical value). What lookahead_agent.h says of the grid holds (gamma, the reward scale inside
+// W); the agent is trained on grid faces until training on general ones lands.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "core/region/region_policy.h"
+#include "core/sac/lookahead_agent.h"
+#include "core/sac/region_state.h"
+
+namespace autoblock {
+
+class RegionLookaheadPolicy : public RegionPolicy {
+ public:
+  RegionLookaheadPolicy(std::shared_ptr<LookaheadAgent> agent, std::string name);
+  std::string name() const override { return name_; }
+  RegionAction choose(const RegionEpisode& episode) override;
+  // Inputs: state, a part's (state_options: with lookahead); the episode's options; face_size.
+  // Output: Q of each of state.candidates.
+  std::vector<double> action_values(const RegionPartState& state, const RegionEpisodeOptions& episode, double face_size);
+  // Inputs: the episode's options; face_size. Output: the options of the states this policy reads:
+  //         lookahead with the episode's rules and the agent's reward preset (what W learned).
+  RegionStateOptions state_options(const RegionEpisodeOptions& episode, double face_size) const;
+
+ private:
+  std::shared_ptr<LookaheadAgent> agent_;
+  std::string name_;
+  size_t face_hash_ = 0;
+  std::unordered_map<Region, double, RegionHash> values_;  // W of the pieces valued in this face
+};
+
+}  // namespace autoblock
