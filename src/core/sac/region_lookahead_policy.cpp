@@ -1,5 +1,6 @@
 #include "core/sac/region_lookahead_policy.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "core/region/region_candidates.h"
@@ -21,12 +22,31 @@ RegionStateOptions RegionLookaheadPolicy::state_options(const RegionEpisodeOptio
 
 std::vector<double> RegionLookaheadPolicy::action_values(const RegionPartState& state, const RegionEpisodeOptions& episode,
                                                          double face_size) {
+  std::vector<size_t> all(state.candidates.size());
+  for (size_t k = 0; k < all.size(); ++k) all[k] = k;
+  return values_of(state, all, episode, face_size);
+}
+
+std::vector<size_t> RegionLookaheadPolicy::shortlist(const RegionPartState& state) const {
+  std::vector<size_t> order(state.candidates.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  const size_t keep = static_cast<size_t>(std::max(0, agent_->config().deploy_top_k));
+  if (keep == 0 || keep >= order.size()) return order;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return state.candidates[a].reward > state.candidates[b].reward; });
+  order.resize(keep);
+  std::sort(order.begin(), order.end());
+  return order;
+}
+
+std::vector<double> RegionLookaheadPolicy::values_of(const RegionPartState& state, const std::vector<size_t>& which,
+                                                     const RegionEpisodeOptions& episode, double face_size) {
   // The pieces not valued yet, as one batch.
   std::vector<Region> fresh;
   std::vector<std::shared_ptr<const RegionPartState>> keep;
   std::vector<const PartState*> batch;
-  for (const RegionCandidate& c : state.candidates) {
-    for (const Region& piece : c.to_cut) {
+  for (const size_t k : which) {
+    for (const Region& piece : state.candidates[k].to_cut) {
       if (values_.count(piece)) continue;
       values_.emplace(piece, 0.0);
       fresh.push_back(piece);
@@ -41,10 +61,10 @@ std::vector<double> RegionLookaheadPolicy::action_values(const RegionPartState& 
     for (size_t k = 0; k < fresh.size(); ++k) values_[fresh[k]] = w[k];
   }
   std::vector<double> q;
-  q.reserve(state.candidates.size());
-  for (const RegionCandidate& c : state.candidates) {
-    double value = c.reward;
-    for (const Region& piece : c.to_cut) value += agent_->config().gamma * values_.at(piece);
+  q.reserve(which.size());
+  for (const size_t k : which) {
+    double value = state.candidates[k].reward;
+    for (const Region& piece : state.candidates[k].to_cut) value += agent_->config().gamma * values_.at(piece);
     q.push_back(value);
   }
   return q;
@@ -58,12 +78,13 @@ RegionAction RegionLookaheadPolicy::choose(const RegionEpisode& episode) {
   const Region& part = episode.current_part();
   const auto state = make_region_state(part, state_options(episode.options(), episode.face_size()));
   if (state->candidates.empty()) return progress_action(part, episode.options().rules);
-  const std::vector<double> q = action_values(*state, episode.options(), episode.face_size());
+  const std::vector<size_t> which = shortlist(*state);
+  const std::vector<double> q = values_of(*state, which, episode.options(), episode.face_size());
   size_t best = 0;
   for (size_t k = 1; k < q.size(); ++k) {
     if (q[k] > q[best]) best = k;
   }
-  return state->candidates[best].action;
+  return state->candidates[which[best]].action;
 }
 
 }  // namespace autoblock

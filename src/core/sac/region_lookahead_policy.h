@@ -3,7 +3,9 @@
 //   Q(P, a) = reward(P, a) + gamma * sum over the pieces a leaves that are not blocks of W(piece),
 // W the agent's deployed value network on the pieces' states (region_state.h), rewards and features
 // under the agent's reward preset (what W learned; the episode's rules), and takes the best
-// (the earlier candidate among equals). The template and an O-grid finish the part: their Q is their
+// (the earlier candidate among equals). A piece's state holds its own lookahead (every candidate of
+// it cut), so valuing every candidate's pieces costs about the square of the candidates' count: with
+// the agent's deploy_top_k = k > 0 only the k best candidates by reward are valued (shortlist). The template and an O-grid finish the part: their Q is their
 // reward. A part with no candidate that makes progress gets progress_action, so every face ends in
 // blocks. Within a decomposition a piece's value is computed once (kept by the part, which is a
 // canonical value). What lookahead_agent.h says of the grid holds (gamma, the reward scale inside
@@ -29,11 +31,16 @@ class RegionLookaheadPolicy : public RegionPolicy {
   // Inputs: state, a part's (state_options: with lookahead); the episode's options; face_size.
   // Output: Q of each of state.candidates.
   std::vector<double> action_values(const RegionPartState& state, const RegionEpisodeOptions& episode, double face_size);
+  // Inputs: state, a part's. Output: the candidates whose pieces are valued when deployed, in their
+  //         order: the agent's deploy_top_k best by reward (the earlier among equals), or all (0).
+  std::vector<size_t> shortlist(const RegionPartState& state) const;
   // Inputs: the episode's options; face_size. Output: the options of the states this policy reads:
   //         lookahead with the episode's rules and the agent's reward preset (what W learned).
   RegionStateOptions state_options(const RegionEpisodeOptions& episode, double face_size) const;
 
  private:
+  std::vector<double> values_of(const RegionPartState& state, const std::vector<size_t>& which,
+                                const RegionEpisodeOptions& episode, double face_size);
   std::shared_ptr<LookaheadAgent> agent_;
   std::string name_;
   size_t face_hash_ = 0;

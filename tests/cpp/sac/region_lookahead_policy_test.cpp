@@ -1,5 +1,6 @@
 #include "support/catch_torch.h"
 
+#include <algorithm>
 #include <random>
 
 #include "core/data/arc_generator.h"
@@ -55,6 +56,19 @@ TEST_CASE("the lookahead agent on general faces: Q by hand, every face finished,
         CHECK(q[k] == Approx(expected).epsilon(1e-4));
         ++checked;
       }
+      // Deployed with top k: the k best candidates by reward, in the candidates' order.
+      agent->set_deploy_top_k(3);
+      const std::vector<size_t> three = policy.shortlist(*state);
+      REQUIRE(three.size() == std::min<size_t>(3, state->candidates.size()));
+      for (size_t j = 1; j < three.size(); ++j) CHECK(three[j - 1] < three[j]);
+      int above = 0;  // candidates left out with a higher reward than one kept
+      for (size_t k = 0; k < state->candidates.size(); ++k) {
+        if (std::find(three.begin(), three.end(), k) != three.end()) continue;
+        for (const size_t kept : three) above += state->candidates[k].reward > state->candidates[kept].reward;
+      }
+      CHECK(above == 0);
+      agent->set_deploy_top_k(0);
+      CHECK(policy.shortlist(*state).size() == state->candidates.size());
     }
     RegionLookaheadPolicy first(agent, "sac-mesh"), second(agent, "sac-mesh");
     const RegionDecomposition a = decompose_region(face, first, options), b = decompose_region(face, second, options);
