@@ -1,0 +1,129 @@
+// Learned policies on general faces (issue 12) against the general engine's greedy and search.
+//
+// Fresh generated polygons (a quarter with holes) of 5-12 and 13-40 vertices: each policy decomposes
+// each face under the mesh preset (one thread; the search with its default width and 2 s budget),
+// and its decomposition is meshed once at the default size (no tries: the decomposition's own
+// quality). A learned policy is a lookahead agent's value network (a shipped name or a policy file)
+// deployed by RegionLookaheadPolicy with the file's deploy_top_k. Reported per policy: mean minimum
+// scaled Jacobian over the face's bound, mean blocks (and templates), median and mean decomposition
+// time.
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <random>
+
+#include "bench/bench_stats.h"
+#include "core/api/policy_source.h"
+#include "core/data/general_generator.h"
+#include "core/geometry/occt_face.h"
+#include "core/io/input_face.h"
+#include "core/mesh/mesh_pipeline.h"
+#include "core/region/region_search.h"
+#include "core/sac/compute_threads.h"
+#include "core/sac/policy_file.h"
+#include "core/sac/region_lookahead_policy.h"
+
+using namespace autoblock;
+
+namespace {
+
+struct Row {
+  std::string name;
+  std::shared_ptr<LookaheadAgent> agent;  // null: a baseline
+  std::vector<double> ratio, seconds, blocks;
+};
+
+std::unique_ptr<RegionPolicy> make_policy(const Row& row) {
+  if (row.agent) return std::make_unique<RegionLookaheadPolicy>(row.agent, row.name);
+  if (row.name == "greedy") return std::make_unique<RegionGreedyPolicy>();
+  return std::make_unique<RegionSearchPolicy>();
+}
+
+void table(const std::string& title, const std::vector<InputFace>& faces, std::vector<Row> rows) {
+  RegionEpisodeOptions episode;
+  episode.reward = RewardPreset::Mesh;
+  for (const InputFace& face : faces) {
+    for (Row& row : rows) {
+      std::unique_ptr<RegionPolicy> policy = make_policy(row);
+      RegionDecomposition d;
+      const auto start = std::chrono::steady_clock::now();
+      {
+        const auto lock = lock_general_engine();
+        d = decompose_region(face.region, *policy, episode);
+      }
+      row.seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      MeshOptions options;
+      options.general = episode;
+      const MeshResult m = mesh_region_decomposition(face, d, options);
+      row.ratio.push_back(m.quality.min_scaled_jacobian / m.bound);
+      row.blocks.push_back(static_cast<double>(d.finished.size()));
+    }
+  }
+  std::printf("\n### %s (%zu faces)\n\n", title.c_str(), faces.size());
+  std::printf("| policy | mean min SJ / bound | mean blocks | median ms | mean ms |\n|---|---:|---:|---:|---:|\n");
+  for (const Row& row : rows) {
+    auto mean = [](const std::vector<double>& v) {
+      double s = 0.0;
+      for (const double x : v) s += x;
+      return v.empty() ? 0.0 : s / static_cast<double>(v.size());
+    };
+    std::printf("| %s | %.4f | %.2f | %.1f | %.1f |\n", row.name.c_str(), mean(row.ratio), mean(row.blocks),
+                1e3 * bench::quantile(row.seconds, 0.5), 1e3 * mean(row.seconds));
+  }
+  std::fflush(stdout);
+}
+
+std::vector<InputFace> fresh_faces(int count, int min_vertices, int max_vertices, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<InputFace> faces;
+  for (int k = 0; static_cast<int>(faces.size()) < count && k < 100 * count; ++k) {
+    GeneralOptions options;
+    options.kind = GeneralKind::Polygon;
+    options.holes = k % 4 == 0;
+    options.min_vertices = min_vertices;
+    options.max_vertices = max_vertices;
+    const GeneralShape shape = generate_general_shape(rng, options);
+    InputFace face = input_face_from_occt(occt_face_from_polygon(RectilinearPolygon{shape.outer, shape.holes}, 0.0, true), "face");
+    if (face.is_general()) faces.push_back(std::move(face));
+  }
+  return faces;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Learned policies on general faces against greedy and search."};
+  std::vector<std::string> learned{"sac-mesh"};
+  int small = 200, large = 100;
+  std::uint64_t seed = 20261205;
+  app.add_option("--policy", learned, "lookahead policies (shipped names or files), repeatable")->capture_default_str();
+  app.add_option("--small", small, "fresh polygons of 5-12 vertices")->capture_default_str();
+  app.add_option("--large", large, "fresh polygons of 13-40 vertices")->capture_default_str();
+  app.add_option("--seed", seed, "generator seed (13-40: seed + 1)")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  try {
+    set_compute_threads(1);
+    std::vector<Row> rows{{"greedy", nullptr, {}, {}, {}}, {"search", nullptr, {}, {}, {}}};
+    for (const std::string& name : learned) {
+      const std::string path =
+          std::filesystem::exists(name) ? name : models_folder() + "/policies/" + name + ".pt";
+      LoadedPolicy loaded = load_policy_file(path, false);
+      auto agent = std::dynamic_pointer_cast<LookaheadAgent>(loaded.agent);
+      if (!agent) throw std::runtime_error(name + " is not a lookahead agent's policy");
+      rows.push_back({name, agent, {}, {}, {}});
+    }
+    if (small > 0) table("polygons of 5-12 vertices, a quarter with holes, seed " + std::to_string(seed), fresh_faces(small, 5, 12, seed), rows);
+    if (large > 0) {
+      table("polygons of 13-40 vertices, a quarter with holes, seed " + std::to_string(seed + 1),
+            fresh_faces(large, 13, 40, seed + 1), rows);
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
+  return 0;
+}
