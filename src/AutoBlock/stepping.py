@@ -164,7 +164,7 @@ class Stepper:
         if not native.has("vertex_scores"):
             return None, "value scores need a learned policy, which this build does not have"
         if self.general:
-            return None, "value scores need a learned policy, and none works on faces with edges at other angles yet"
+            return None, "the value network's scores are not shown on faces with edges at other angles yet"
         try:
             # One score per vertex of the next cut's part, in the order of step()["next"]["vertices"];
             # ValueError when the policy has no value network (a baseline) or its file is gone.

@@ -839,9 +839,12 @@ class TestGeneralFaces(unittest.TestCase):
         bad = Stepper(stepper.local_brep, stepper.frame, [tuple(spec)], stepper.max_steps, "bad", "greedy")
         with self.assertRaisesRegex(ValueError, "does not belong to this face"):
             bad.step(1)
-        # No learned policy on general faces yet: a clear ValueError.
+        # A lookahead agent's trained policy takes general faces; the paper's agent is a clear ValueError.
+        learned = AutoBlock.decompose(sketch, policy="sac-mesh")
+        self.assertEqual(learned.policy, "sac-mesh")
+        self.assertTrue(learned.complete)
         with self.assertRaisesRegex(ValueError, "edges at other angles"):
-            AutoBlock.decompose(sketch, policy="sac-mesh")
+            AutoBlock.decompose(sketch, policy="sac-faithful")
         # The blocks meshed with quads (the general mesher: block model, intervals, transfinite, smoothing):
         # conformal by the core's check, every quad counter-clockwise in the face's plane, areas adding up.
         mesh = AutoBlock.mesh(result)

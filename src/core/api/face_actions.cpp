@@ -1,10 +1,16 @@
 #include "core/api/face_actions.h"
 
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include <TopoDS.hxx>
 
 #include "core/api/face_meshing.h"
+#include "core/api/policy_source.h"
 #include "core/common/error.h"
 #include "core/env/occt_replay.h"
 #include "core/env/region_replay.h"
@@ -26,20 +32,50 @@ InputFace check_shape_face(const TopoDS_Shape& shape, const std::string& source,
 
 namespace {
 
-// The general engine's policy by name (general_policy_names()).
-std::unique_ptr<RegionPolicy> general_policy(const std::string& name, const PolicySettings& settings) {
+namespace fs = std::filesystem;
+
+// A trained policy for general faces, loaded once per file (and again when the file changes).
+std::shared_ptr<LearnedPolicy> learned_general_policy(const std::string& name) {
+  static std::mutex mutex;
+  static std::map<std::string, std::pair<fs::file_time_type, std::shared_ptr<LearnedPolicy>>> loaded;
+  const std::string path = policy_file_path(name);  // InputError when unknown
+  std::error_code ec;
+  const fs::file_time_type written = fs::last_write_time(path, ec);
+  std::lock_guard<std::mutex> lock(mutex);
+  auto& slot = loaded[path];
+  if (!slot.second || slot.first != written) slot = {written, learned_runtime().load_policy(path)};
+  return slot.second;
+}
+
+// The general engine's policy by name: general_policy_names(), or a lookahead agent's trained policy
+// (a shipped name or a policy file: region_lookahead_policy.h). own_reward: the preset it aims at
+// (the search's mesh, a trained policy's own; unset for the other baselines).
+std::unique_ptr<RegionPolicy> general_policy(const std::string& name, const PolicySettings& settings,
+                                             std::optional<RewardPreset>* own_reward = nullptr) {
   if (name.empty() || name == "auto" || name == "search" || name == "optimal") {
     RegionSearchOptions options;
     options.time_limit = settings.general_time_limit > 0 ? settings.general_time_limit : 0.0;
     if (settings.general_search_width > 0) options.width = settings.general_search_width;
+    if (own_reward) *own_reward = RewardPreset::Mesh;
     return std::make_unique<RegionSearchPolicy>(options);
   }
   if (name == "greedy") return std::make_unique<RegionGreedyPolicy>();
   if (name == "random" || name == "random-split") return std::make_unique<RegionRandomPolicy>(settings.seed);
   std::string list;
   for (const std::string& n : general_policy_names()) list += (list.empty() ? "" : ", ") + n;
+  if (!is_baseline_name(name)) {
+    const std::shared_ptr<LearnedPolicy> learned = learned_general_policy(name);
+    std::unique_ptr<RegionPolicy> policy = learned->deployed_region_policy(name);
+    if (!policy) {
+      throw InputError("the policy '" + name + "' (the paper's agent) works on faces whose edges run along two "
+                       "perpendicular directions; this face has edges at other angles: use one of " + list +
+                       " or a lookahead agent's policy (sac-mesh, sac-paper)");
+    }
+    if (own_reward) *own_reward = learned->reward();
+    return policy;
+  }
   throw InputError("the policy '" + name + "' works on faces whose edges run along two perpendicular directions; "
-                   "this face has edges at other angles: use one of " + list);
+                   "this face has edges at other angles: use one of " + list + " or a lookahead agent's policy");
 }
 
 RegionEpisodeOptions general_options(const InputFace& face, const std::string& what, int max_steps, RewardPreset reward,
@@ -80,7 +116,8 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
   result.face = face;
   std::vector<TopoDS_Face> blocks;
   if (face.is_general()) {
-    std::unique_ptr<RegionPolicy> policy = general_policy(settings.policy, settings.policy_settings);
+    std::optional<RewardPreset> own_reward;
+    std::unique_ptr<RegionPolicy> policy = general_policy(settings.policy, settings.policy_settings, &own_reward);
     std::optional<FaceMeshing> meshed;
     if (settings.mesh_tries && policy->name() == "search") {
       // The decomposition `autoblock mesh` keeps (face_meshing.h): its tries, each meshed. When none
@@ -112,10 +149,10 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
     RegionEpisodeOptions options;
     options.max_steps = settings.max_steps;
     options.corner_fraction = settings.corner_fraction;
-    // The policy's own preset, as on the grid: mesh for auto and search, paper for the baselines.
-    const bool searching = policy->name() == "search";
+    // The policy's own preset, as on the grid: mesh for auto and search, a trained policy's own, paper
+    // for the other baselines.
     options.reward = !settings.reward.empty() ? reward_preset_by_name(settings.reward)
-                                              : (searching ? RewardPreset::Mesh : RewardPreset::Paper);
+                                              : own_reward.value_or(RewardPreset::Paper);
     {
       const auto lock = lock_general_engine();
       result.region = decompose_region(face.region, *policy, options);

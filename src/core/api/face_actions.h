@@ -67,9 +67,10 @@ InputFace check_shape_face(const TopoDS_Shape& shape, const std::string& source,
 // Inputs:  face, a checked face; settings.
 // Outputs: the decomposition and its blocks as faces: a rectilinear face by the grid engine with any
 //          policy of policy_names() or a policy file, a general face by the general engine with a
-//          policy of general_policy_names(). Throws InputError for a bad policy or reward preset (or a
-//          learned policy on a general face); std::logic_error / std::runtime_error when OpenCASCADE
-//          fails or disagrees.
+//          policy of general_policy_names() or a lookahead agent's trained policy (a shipped name or a
+//          file: sac/region_lookahead_policy.h). Throws InputError for a bad policy or reward preset
+//          (or the paper's agent on a general face); std::logic_error / std::runtime_error when
+//          OpenCASCADE fails or disagrees.
 FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSettings& settings);
 
 // Inputs:  face, a checked face; cuts, its decomposition's cut sequence by position; step;

@@ -17,6 +17,7 @@
 #include "core/env/episode.h"
 #include "core/env/policy.h"
 #include "core/env/reward.h"
+#include "core/region/region_policy.h"
 
 namespace autoblock {
 
@@ -30,6 +31,10 @@ class LearnedPolicy {
   virtual std::unique_ptr<Policy> deployed_policy(const std::string& name) = 0;
   // The value network's score at every model vertex of the episode's current part.
   virtual std::vector<float> vertex_scores(const Episode& episode) = 0;
+  // Inputs: name, for reports. Output: the deployed policy on general faces (the lookahead agent's,
+  //         sac/region_lookahead_policy.h), or null when the agent has none (the paper's agent).
+  //         The caller holds lock_general_engine() while it runs, as for any policy on regions.
+  virtual std::unique_ptr<RegionPolicy> deployed_region_policy(const std::string& name) = 0;
 };
 
 class LearnedRuntime {

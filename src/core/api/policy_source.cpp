@@ -66,19 +66,22 @@ PolicySource::PolicySource(const std::string& name_or_path, BaselineOptions base
     return;
   }
   if (is_baseline_name(name_)) return;
-  std::string path = name_;
+  path_ = policy_file_path(name_);
+  learned_ = learned_runtime().load_policy(path_);
+}
+
+std::string policy_file_path(const std::string& name_or_path) {
   for (const std::string& shipped : shipped_policy_names()) {
-    if (shipped == name_) path = (fs::path(models_folder()) / "policies" / (name_ + ".pt")).string();
+    if (shipped == name_or_path) return (fs::path(models_folder()) / "policies" / (name_or_path + ".pt")).string();
   }
   std::error_code ec;
-  if (path == name_ && !fs::exists(path, ec)) {
+  if (!fs::exists(name_or_path, ec)) {
     std::string known = "auto, ";
     for (const std::string& n : baseline_names()) known += n + ", ";
     for (const std::string& n : shipped_policy_names()) known += n + ", ";
-    throw InputError("unknown policy '" + name_ + "' (expected " + known + "or a policy file)");
+    throw InputError("unknown policy '" + name_or_path + "' (expected " + known + "or a policy file)");
   }
-  path_ = path;
-  learned_ = learned_runtime().load_policy(path);
+  return name_or_path;
 }
 
 RewardPreset PolicySource::reward() const {

@@ -28,6 +28,10 @@ std::string default_policy_name();
 // The learned policy "auto" falls back on: index.json's "auto_fallback" (empty when none ships).
 std::string auto_fallback_name();
 
+// Inputs: name_or_path, a shipped policy's name or a policy file's path. Output: the file's path.
+// Throws InputError for a name that is neither (listing the known names).
+std::string policy_file_path(const std::string& name_or_path);
+
 class PolicySource {
  public:
   // Inputs: name_or_path, "auto", a baseline name, a shipped policy name, a policy file's path, or

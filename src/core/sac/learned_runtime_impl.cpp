@@ -13,6 +13,7 @@
 #include "core/sac/compute_threads.h"
 #include "core/sac/lookahead_agent.h"
 #include "core/sac/policy_file.h"
+#include "core/sac/region_lookahead_policy.h"
 #include "core/sac/sac_config.h"
 #include "core/sac/trainer.h"
 #include "core/sac/training_curves.h"
@@ -28,6 +29,11 @@ class AgentPolicy : public LearnedPolicy {
   RewardPreset reward() const override { return agent_->config().reward; }
   std::unique_ptr<Policy> deployed_policy(const std::string& name) override { return agent_->deployed_policy(name); }
   std::vector<float> vertex_scores(const Episode& episode) override { return agent_->vertex_scores(episode); }
+  std::unique_ptr<RegionPolicy> deployed_region_policy(const std::string& name) override {
+    auto lookahead = std::dynamic_pointer_cast<LookaheadAgent>(agent_);
+    if (!lookahead) return nullptr;
+    return std::make_unique<RegionLookaheadPolicy>(std::move(lookahead), name);
+  }
 
  private:
   std::shared_ptr<LearningAgent> agent_;

@@ -279,11 +279,11 @@ TEST_CASE("decompose keeps the decomposition mesh keeps; its cuts, replayed unde
   CHECK(default_rules.rules.max_corner_degrees == once.region.rules.max_corner_degrees);
 }
 
-TEST_CASE("general faces: grid-only actions and learned policies say so", "[api][general][errors]") {
+TEST_CASE("general faces: grid-only actions and the paper's agent say so", "[api][general][errors]") {
   const InputFace face = check_face(general_face(5, GeneralKind::Polygon, false), "polygon");
   REQUIRE(face.is_general());
   DecomposeSettings settings;
-  settings.policy = "sac-mesh";
+  settings.policy = "sac-faithful";
   CHECK_THROWS_WITH(decompose_input_face(face, settings), Catch::Contains("this face has edges at other angles"));
   settings.policy = "search";
   settings.policy_settings.general_time_limit = 1.0;
@@ -293,4 +293,28 @@ TEST_CASE("general faces: grid-only actions and learned policies say so", "[api]
   CHECK(searched.block_faces.empty());
   CHECK_THROWS_WITH(face_mesh(face, {}, 0, RewardPreset::Paper, MeshOptions{}), Catch::Contains("meshing works on faces"));
   CHECK_THROWS_AS(face_step(face, {}, 0), InputError);
+}
+
+TEST_CASE("a lookahead agent's trained policy decomposes general faces by name; the paper's agent is refused",
+          "[api][general][learned]") {
+  // The shipped sac-mesh and sac-paper are lookahead agents (sac/region_lookahead_policy.h); the
+  // shipped sac-faithful is the paper's agent, which has no general-face version.
+  const InputFace face = check_face(general_face(1301, GeneralKind::Polygon, true), "polygon");
+  REQUIRE(face.is_general());
+  DecomposeSettings settings;
+  settings.reward.clear();  // the policy's own preset
+  for (const char* name : {"sac-mesh", "sac-paper"}) {
+    INFO(name);
+    settings.policy = name;
+    const FaceDecomposition d = decompose_input_face(face, settings);
+    CHECK(d.region.complete());
+    CHECK(d.region.policy == name);
+    CHECK(d.region.reward == (std::string(name) == "sac-mesh" ? RewardPreset::Mesh : RewardPreset::Paper));
+    CHECK(d.block_faces.size() == d.region.finished.size());
+  }
+  settings.policy = "sac-faithful";
+  CHECK_THROWS_WITH(decompose_input_face(face, settings), Catch::Contains("the paper's agent"));
+  CHECK_THROWS_AS(decompose_input_face(face, settings), InputError);
+  settings.policy = "no-such-policy";
+  CHECK_THROWS_AS(decompose_input_face(face, settings), InputError);
 }
