@@ -34,7 +34,7 @@ struct RegionSearchOptions {
   int width = 4;              // candidates expanded per part (by immediate reward)
   double time_limit = 2.0;    // seconds per face; 0: no limit
   bool prune = true;          // branch and bound and bounded scoring, mesh preset (same decisions; false for tests)
-  bool taper = true;          // mesh preset: a finished block's value is minus its taper cost (false: 0, the reward alone)
+  bool taper = true;          // mesh preset: cuts charged for the taper of the blocks they leave, in ranking and values (false: the reward alone)
 };
 
 class RegionSearchPolicy : public RegionPolicy {
