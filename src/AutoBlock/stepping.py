@@ -163,13 +163,11 @@ class Stepper:
         """Per-vertex value scores at step k (a vertex no cut can use scores None), or (None, why not)."""
         if not native.has("vertex_scores"):
             return None, "value scores need a learned policy, which this build does not have"
-        if self.general:
-            return None, "the value network's scores are not shown on faces with edges at other angles yet"
         try:
             # One score per vertex of the next cut's part, in the order of step()["next"]["vertices"];
             # ValueError when the policy has no value network (a baseline) or its file is gone.
             scores = module.vertex_scores(self.local_brep, self.cuts, int(k), self.policy, self.max_steps,
-                                          self.reward, self.label)
+                                          self.reward, self.label, self.rules)
         except ValueError as error:
             return None, str(error)
         return [s if math.isfinite(s) else None for s in scores], ""

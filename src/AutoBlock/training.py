@@ -38,8 +38,10 @@ from . import native
 
 
 class TrainingRequest:
-    """What to train. Data: a folder of .brep/.step faces, or generator settings (dict: count, min_rects,
-    max_rects, holes, seed) for training and for testing. episodes (the total, counting those before a
+    """What to train. Data: a folder of .brep/.step faces (rectilinear ones, and for the lookahead agent
+    faces with edges at other angles or arcs too), or generator settings (dict: count, min_rects, max_rects,
+    holes, seed; general and arcs, counts of general polygons and unions and of faces with arcs, for the
+    lookahead agent) for training and for testing. episodes (the total, counting those before a
     resume), seed, reward (preset: "paper" or "mesh"), output (the policy file; its checkpoint, CSV log and
     curves go next to it), resume (continue from the output's checkpoint), threads (0: all cores),
     eval_every (episodes between test evaluations and checkpoints), agent ("lookahead" or "paper")."""
@@ -96,8 +98,12 @@ class TrainingRequest:
                 if not os.path.isdir(folder):
                     problems.append("{} data: no such folder {}".format(name, folder))
             elif generate:
-                if int(generate.get("count", 0)) < 1:
+                counts = [int(generate.get(key, 0)) for key in ("count", "general", "arcs")]
+                if min(counts) < 0 or sum(counts) < 1:
                     problems.append("{} data: generate at least one shape".format(name))
+                if self.agent == "paper" and sum(counts[1:]) > 0:
+                    problems.append("{} data: the paper agent learns on rectilinear faces only; general faces and "
+                                    "faces with arcs need the lookahead agent".format(name))
                 if int(generate.get("min_rects", 2)) > int(generate.get("max_rects", 10)):
                     problems.append("{} data: minimum rectangles above the maximum".format(name))
             else:

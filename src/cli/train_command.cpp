@@ -38,7 +38,7 @@ void add_train_command(CLI::App& app) {
   };
   auto args = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("train", "Train a decomposition policy with Soft Actor-Critic.");
-  command->add_option("--train", args->train, "folder of training faces")->required();
+  command->add_option("--train", args->train, "folder of training faces (rectilinear; the lookahead agent also learns on faces with edges at other angles or arcs in it)")->required();
   command->add_option("--test", args->test, "folder of test faces (evaluated deterministically)")->required();
   command->add_option("--episodes", args->episodes, "total episodes (a resumed run counts those already done)")
       ->check(CLI::Range(1, 10000000))

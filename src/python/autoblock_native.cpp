@@ -458,16 +458,15 @@ py::dict policy_info_py(const std::string& spec) {
 }
 
 std::vector<double> vertex_scores_py(const std::string& brep, const py::object& cuts, int step, const std::string& policy,
-                                     int max_steps, const std::string& reward, const std::string& source) {
+                                     int max_steps, const std::string& reward, const std::string& source,
+                                     const std::vector<double>& rules) {
+  const std::optional<BlockRules> block_rules = rules_of(rules);
   const RewardPreset preset = reward_preset_by_name(reward);
   const Sequence sequence = sequence_of(cuts);
   py::gil_scoped_release release;
   const InputFace face = face_of(brep, source);
-  if (face.is_general()) {
-    throw InputError(face.source + ": vertex scores come from a learned policy's value network, and no learned policy "
-                     "works on faces with edges at other angles yet");
-  }
   sequence.check_for(face);
+  if (face.is_general()) return face_vertex_scores_general(face, sequence.region, step, policy, max_steps, preset, block_rules);
   return face_vertex_scores(face, sequence.grid, step, policy, max_steps, preset);
 }
 
@@ -667,6 +666,8 @@ GeneratedSet generated_of(const py::dict& d) {
   if (d.contains("min_rects")) set.options.min_rects = d["min_rects"].cast<int>();
   if (d.contains("max_rects")) set.options.max_rects = d["max_rects"].cast<int>();
   if (d.contains("holes")) set.options.holes = d["holes"].cast<bool>();
+  if (d.contains("general")) set.general = d["general"].cast<int>();
+  if (d.contains("arcs")) set.arcs = d["arcs"].cast<int>();
   return set;
 }
 
@@ -828,9 +829,11 @@ PYBIND11_MODULE(autoblock_native, m) {
         "aims at: a trained policy's own)}. policy: a name or a policy file ('' for the default).");
   m.def("vertex_scores", &vertex_scores_py, py::arg("brep"), py::arg("cuts"), py::arg("step"), py::arg("policy") = "",
         py::arg("max_steps") = 0, py::arg("reward") = "paper", py::arg("source") = "face",
+        py::arg("rules") = std::vector<double>{},
         "The policy's value-network score at every vertex of the part cut after `step` cuts, in the order of "
-        "step()['next']['vertices'] (-inf where no candidate cut runs through the vertex). ValueError for a baseline "
-        "policy (no value network) or a step with no cut.");
+        "step()['next']['vertices'] (-inf where no candidate cut runs through the vertex; on a general face, where "
+        "none of the policy's shortlisted actions starts). ValueError for a baseline policy (no value network), the "
+        "paper's agent on a general face, or a step with no cut. rules: a general sequence's block rules, as step.");
   m.def("mesh", &mesh_py, py::arg("brep"), py::arg("cuts"), py::arg("size") = 0.0, py::arg("max_steps") = 0,
         py::arg("reward") = "paper", py::arg("out") = "", py::arg("placement") = std::vector<double>{},
         py::arg("source") = "face", py::arg("rules") = std::vector<double>{}, py::arg("min_edge_intervals") = 1,
@@ -859,7 +862,7 @@ PYBIND11_MODULE(autoblock_native, m) {
         "hexahedra to a .msh, .vtu or .inp file (element: C3D8 or C3D8I for .inp), as `autoblock mesh SOLID --out`.");
   m.def("train", &train_py, py::arg("options"), py::arg("progress") = py::none(),
         "Train a policy (blocking, the GIL released). options: {output, checkpoint, resume, train_folder | "
-        "train_generate {count, seed, min_rects, max_rects, holes}, test_folder | test_generate, episodes, seed, "
+        "train_generate {count, seed, min_rects, max_rects, holes, general, arcs}, test_folder | test_generate, episodes, seed, "
         "reward, agent, threads, eval_every, max_steps}. progress(event) is called with the GIL after every "
         "episode (event: episode, episodes, return, blocks, steps, complete, shape, seconds, test_return or None, "
         "earlier) and returns False to stop. Returns {cancelled, episodes_done, episodes, reward, policy_file (None "

@@ -809,7 +809,7 @@ class TestGeneralFaces(unittest.TestCase):
             self.assertAlmostEqual(step.reward, cut.reward, places=9)
             running += cut.reward
             self.assertIsNone(step.scores)
-            self.assertIn("faces with edges at other angles", step.scores_note)
+            self.assertIn("'greedy' is a baseline", step.scores_note)
             kinds.add(step.kind)
             if cut.kind == "template":
                 self.assertIsNone(step.vertex)
@@ -843,6 +843,14 @@ class TestGeneralFaces(unittest.TestCase):
         learned = AutoBlock.decompose(sketch, policy="sac-mesh")
         self.assertEqual(learned.policy, "sac-mesh")
         self.assertTrue(learned.complete)
+        # Its value scores in the step-through view: one per vertex of the part; its chosen vertex scores best.
+        first = learned.stepper().step(0).next
+        self.assertEqual(first.scores_note, "")
+        self.assertEqual(len(first.scores), len(first.vertices))
+        finite = [s for s in first.scores if s is not None]
+        self.assertTrue(finite)
+        if first.chosen >= 0:
+            self.assertEqual(first.scores[first.chosen], max(finite))
         with self.assertRaisesRegex(ValueError, "edges at other angles"):
             AutoBlock.decompose(sketch, policy="sac-faithful")
         # The blocks meshed with quads (the general mesher: block model, intervals, transfinite, smoothing):
@@ -1310,6 +1318,10 @@ class TestTraining(unittest.TestCase):
                 (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), episodes=0, **data), "at least 1"),
                 (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), reward="nope", **data), "unknown reward"),
                 (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), resume=True, **data), "nothing to resume"),
+                (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), train_generate={"count": 0, "general": 0},
+                                           test_folder=support.SAMPLES), "at least one shape"),
+                (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), train_generate={"count": 2, "arcs": 1},
+                                           test_folder=support.SAMPLES, agent="paper"), "lookahead agent"),
             ]
             for request, words in cases:
                 with self.subTest(words=words):
@@ -1389,6 +1401,41 @@ class TestTraining(unittest.TestCase):
             with self.assertRaisesRegex(ValueError, "holds no shape file|no .brep"):
                 AutoBlock.train(AutoBlock.TrainingRequest(os.path.join(folder, "bad.pt"), train_folder=folder,
                                                           test_folder=support.SAMPLES, episodes=2))
+        finally:
+            support.remove_folder(folder)
+
+    def test_training_on_general_faces(self):
+        """Issue 12: generated general faces and faces with arcs train the lookahead agent, whose policy then
+        decomposes a general face; the paper agent refuses them with a ValueError."""
+        folder = support.temporary_folder()
+        try:
+            output = os.path.join(folder, "general.pt")
+            request = AutoBlock.TrainingRequest(output, train_generate={"count": 1, "general": 2, "arcs": 1, "seed": 4},
+                                                test_generate={"count": 0, "general": 1, "seed": 5},
+                                                episodes=4, eval_every=2, reward="mesh", seed=6)
+            request.validate()
+            events = []
+            result = AutoBlock.train(request, events.append)
+            self.assertFalse(result["cancelled"])
+            self.assertEqual([e.episode for e in events], [1, 2, 3, 4])
+            self.assertTrue(all(e.test_return is not None for e in events[1::2]))
+            self.assertEqual(result["policy_file"], output)
+            hexagon = Part.Face(Part.makePolygon([FreeCAD.Vector(*p) for p in
+                                                  ((0, 0, 0), (6, 0, 0), (8, 3, 0), (5, 7, 0), (0, 6, 0), (-2, 3, 0),
+                                                   (0, 0, 0))]))
+            decomposition = AutoBlock.decompose(hexagon, policy=output)
+            self.assertTrue(decomposition.complete)
+            self.assertGreaterEqual(decomposition.n_blocks, 1)
+            paper = AutoBlock.TrainingRequest(os.path.join(folder, "paper.pt"),
+                                              train_generate={"count": 0, "general": 2, "seed": 4},
+                                              test_generate={"count": 1, "seed": 5}, episodes=2, agent="paper")
+            with self.assertRaisesRegex(ValueError, "lookahead agent"):
+                AutoBlock.train(paper, events.append)
+            paper_to_core = AutoBlock.TrainingRequest(os.path.join(folder, "paper.pt"), train_folder=support.SAMPLES,
+                                                      test_generate={"count": 0, "general": 1, "seed": 5}, episodes=2,
+                                                      agent="paper")
+            with self.assertRaisesRegex(ValueError, "lookahead agent"):
+                AutoBlock.train(paper_to_core, events.append)
         finally:
             support.remove_folder(folder)
 

@@ -103,11 +103,11 @@ class TrainPanel:
         if f.trainGenerateRadio.isChecked():
             train_generate = {"count": f.trainCount.value(), "min_rects": f.trainMinRects.value(),
                               "max_rects": f.trainMaxRects.value(), "holes": f.trainHoles.isChecked(),
-                              "seed": f.seed.value()}
+                              "general": f.trainGeneral.value(), "arcs": f.trainArcs.value(), "seed": f.seed.value()}
         if f.testGenerateRadio.isChecked():
             test_generate = {"count": f.testCount.value(), "min_rects": f.trainMinRects.value(),
                              "max_rects": f.trainMaxRects.value(), "holes": f.trainHoles.isChecked(),
-                             "seed": f.seed.value() + 1}
+                             "general": f.testGeneral.value(), "arcs": f.testArcs.value(), "seed": f.seed.value() + 1}
         return training.TrainingRequest(
             output=f.outputEdit.text().strip(),
             train_folder=None if train_generate else f.trainFolderEdit.text().strip(),

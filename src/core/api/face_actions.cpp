@@ -225,6 +225,25 @@ std::vector<double> face_vertex_scores(const InputFace& face, const std::vector<
   return std::vector<double>(scores.begin(), scores.end());
 }
 
+std::vector<double> face_vertex_scores_general(const InputFace& face, const std::vector<RegionActionSpec>& actions, int step,
+                                               const std::string& policy, int max_steps, RewardPreset reward,
+                                               const std::optional<BlockRules>& rules) {
+  const RegionEpisodeOptions options = general_options(face, "scoring vertices with a value network", max_steps, reward, rules);
+  const auto source = policy_source(policy, PolicySettings{});
+  const std::shared_ptr<LearnedPolicy> scorer = source->scoring_policy();
+  if (!scorer) {
+    throw InputError("the policy '" + source->name() +
+                     "' is a baseline: it has no value network, so there are no vertex scores");
+  }
+  const auto lock = lock_general_engine();
+  const RegionEpisode episode = replay_region_episode(face.region, actions, step, options);
+  if (!episode.running()) {
+    throw InputError("no action follows step " + std::to_string(step) + ": the episode is over, there is no part to score");
+  }
+  const std::vector<float> scores = scorer->region_vertex_scores(episode);
+  return std::vector<double>(scores.begin(), scores.end());
+}
+
 FaceMesh face_mesh(const InputFace& face, const std::vector<CutSpec>& cuts, int max_steps, RewardPreset reward,
                    MeshOptions options) {
   require_rectilinear(face, "meshing");

@@ -112,6 +112,16 @@ std::vector<double> face_vertex_scores(const InputFace& face, const std::vector<
                                        const std::string& policy, int max_steps = 0,
                                        RewardPreset reward = RewardPreset::Paper);
 
+// face_vertex_scores for a general face: actions, step, max_steps, reward and rules as for
+// face_step_general; policy, a lookahead agent's (sac-mesh, sac-paper, a policy file, or auto, whose
+// scores are its learned fallback's). Outputs: one score per vertex of the part the next action cuts,
+// in RegionSnapshot::vertices' order (the best Q of the policy's shortlisted actions from the
+// vertex; -infinity where none starts). Throws InputError as face_vertex_scores does.
+std::vector<double> face_vertex_scores_general(const InputFace& face, const std::vector<RegionActionSpec>& actions, int step,
+                                               const std::string& policy, int max_steps = 0,
+                                               RewardPreset reward = RewardPreset::Paper,
+                                               const std::optional<BlockRules>& rules = std::nullopt);
+
 struct FaceMesh {
   Decomposition decomposition;  // replayed from the cut sequence
   MeshResult result;

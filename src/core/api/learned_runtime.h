@@ -35,6 +35,9 @@ class LearnedPolicy {
   //         sac/region_lookahead_policy.h), or null when the agent has none (the paper's agent).
   //         The caller holds lock_general_engine() while it runs, as for any policy on regions.
   virtual std::unique_ptr<RegionPolicy> deployed_region_policy(const std::string& name) = 0;
+  // The same as vertex_scores on a general face's episode (RegionLookaheadPolicy::vertex_scores); the
+  // caller holds lock_general_engine(). Throws InputError when the agent has no policy on them.
+  virtual std::vector<float> region_vertex_scores(const RegionEpisode& episode) = 0;
 };
 
 class LearnedRuntime {

@@ -7,19 +7,46 @@
 #include "core/api/learned_runtime.h"
 #include "core/common/error.h"
 #include "core/io/dataset.h"
+#include "core/data/arc_generator.h"
+#include "core/data/general_generator.h"
 #include "core/io/input_face.h"
+#include "core/geometry/occt_face.h"
 
 namespace autoblock {
 
 TrainingSet load_training_set(const std::string& folder, const GeneratedSet& generated, const std::string& what) {
   TrainingSet set;
-  if (generated.count > 0) {
+  if (generated.total() > 0) {
+    if (generated.count < 0 || generated.general < 0 || generated.arcs < 0) throw InputError("negative count of " + what + " shapes");
     std::mt19937_64 rng(generated.seed);
+    char name[32];
     for (int k = 0; k < generated.count; ++k) {
       set.faces.push_back(make_grid_face(generate_shape(rng, generated.options).polygon));
-      char name[32];
       std::snprintf(name, sizeof name, "generated_%04d", k);
       set.names.push_back(name);
+    }
+    for (int k = 0; k < generated.general; ++k) {
+      GeneralOptions options;
+      options.kind = static_cast<GeneralKind>(k % 3);
+      options.holes = k % 4 == 3;
+      options.max_vertices = 20;
+      const GeneralShape shape = generate_general_shape(rng, options);
+      const InputFace face = input_face_from_occt(occt_face_from_polygon(RectilinearPolygon{shape.outer, shape.holes}, 0.0, true),
+                                                  "generated general face");
+      std::snprintf(name, sizeof name, "general_%04d", k);
+      if (face.is_general()) {
+        set.general.push_back(face.region);
+        set.general_names.push_back(name);
+      } else {  // a turned union may come out square to the axes
+        set.faces.push_back(face.grid);
+        set.names.push_back(name);
+      }
+    }
+    for (int k = 0; k < generated.arcs; ++k) {
+      const ArcFace arc = generate_arc_face(rng, ArcOptions{});
+      set.general.push_back(input_face_from_occt(arc.face, arc.name).region);
+      std::snprintf(name, sizeof name, "arcs_%04d", k);
+      set.general_names.push_back(name);
     }
     return set;
   }
@@ -32,9 +59,13 @@ TrainingSet load_training_set(const std::string& folder, const GeneratedSet& gen
   }
   for (const std::string& file : files) {
     const InputFace face = load_input_face(file);
-    require_rectilinear(face, "training", "learning on such faces is issue 12");
-    set.faces.push_back(face.grid);
-    set.names.push_back(std::filesystem::path(file).filename().string());
+    if (face.is_general()) {
+      set.general.push_back(face.region);
+      set.general_names.push_back(std::filesystem::path(file).filename().string());
+    } else {
+      set.faces.push_back(face.grid);
+      set.names.push_back(std::filesystem::path(file).filename().string());
+    }
   }
   return set;
 }

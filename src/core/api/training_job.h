@@ -17,11 +17,17 @@
 
 namespace autoblock {
 
-// Shapes made by the generator (shape_generator.h) instead of read from a folder.
+// Shapes made by the generators instead of read from a folder: unions of rectangles
+// (shape_generator.h) and, for the lookahead agent (issue 12), general faces: polygons of 5-20
+// vertices, turned and chamfered unions (general_generator.h, the kinds in turn, a quarter with
+// holes) and faces with circular arcs (arc_generator.h, scales 0.1-100).
 struct GeneratedSet {
-  int count = 0;  // 0: none (use the folder)
+  int count = 0;    // unions of rectangles (0: none; all three 0: use the folder)
   std::uint64_t seed = 0;
   GeneratorOptions options;
+  int general = 0;  // general faces with straight edges
+  int arcs = 0;     // faces with circular arcs
+  int total() const { return count + general + arcs; }
 };
 
 struct TrainingJob {
@@ -72,7 +78,8 @@ struct TrainingOutcome {
   std::string log;               // CSV, one line per episode
   std::string curves;            // SVG
   double final_test_return = 0.0;
-  double optimal_test_return = 0.0;  // the exact search's mean return on the test set (reference)
+  double optimal_test_return = 0.0;  // the exact search's mean return on the test set (reference; on
+                                     // general faces the general engine's search)
   double greedy_test_return = 0.0;   // greedy's, likewise
   int episodes_to_95 = -1;           // first evaluated episode reaching the 95 % mark (-1: never)
   double seconds_to_95 = -1.0;
@@ -80,8 +87,9 @@ struct TrainingOutcome {
   double wall_seconds = 0.0;         // the run's training time, resumed runs included
 };
 
-// Inputs:  folder (when generated.count == 0) or generated; what ("training" or "test"), for messages.
-// Outputs: the set's faces. Throws InputError for a missing folder, an unreadable or unsupported
+// Inputs:  folder (when generated.total() == 0) or generated; what ("training" or "test"), for messages.
+// Outputs: the set's faces: rectilinear ones in faces, the others (edges at other angles, arcs) in
+//          general. Throws InputError for a missing folder, an unreadable or unsupported
 //          face (naming the file), or an empty set.
 TrainingSet load_training_set(const std::string& folder, const GeneratedSet& generated, const std::string& what);
 

@@ -10,13 +10,17 @@
 #include "core/data/general_generator.h"
 #include "core/data/shape_generator.h"
 #include "core/geometry/grid_face.h"
+#include "core/region/region.h"
 
 namespace autoblock {
 
 // Faces to train or test on, with their names (file names, or generated_NNNN).
 struct TrainingSet {
-  std::vector<GridFace> faces;
+  std::vector<GridFace> faces;             // rectilinear faces
   std::vector<std::string> names;
+  std::vector<Region> general;             // general faces (edges at any angle, arcs as samples; issue 12)
+  std::vector<std::string> general_names;
+  size_t size() const { return faces.size() + general.size(); }
 };
 
 // Inputs:  paths, files and folders.

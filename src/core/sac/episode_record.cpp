@@ -2,14 +2,30 @@
 
 namespace autoblock {
 
-EpisodeRecord episode_record_of(const Episode& episode, const std::map<std::string, double>& metric_sums, int updates) {
+namespace {
+
+EpisodeRecord record_of(double ret, int blocks, int steps, EpisodeStatus status,
+                        const std::map<std::string, double>& metric_sums, int updates) {
   EpisodeRecord record;
-  record.ret = episode.total_return();
-  record.blocks = static_cast<int>(episode.blocks().size());
-  record.steps = episode.steps();
-  record.complete = episode.status() == EpisodeStatus::Complete;
+  record.ret = ret;
+  record.blocks = blocks;
+  record.steps = steps;
+  record.complete = status == EpisodeStatus::Complete;
   for (const auto& [name, sum] : metric_sums) record.metrics[name] = sum / updates;
   return record;
+}
+
+}  // namespace
+
+EpisodeRecord episode_record_of(const Episode& episode, const std::map<std::string, double>& metric_sums, int updates) {
+  return record_of(episode.total_return(), static_cast<int>(episode.blocks().size()), episode.steps(), episode.status(),
+                   metric_sums, updates);
+}
+
+EpisodeRecord region_episode_record_of(const RegionEpisode& episode, const std::map<std::string, double>& metric_sums,
+                                       int updates) {
+  return record_of(episode.total_return(), static_cast<int>(episode.finished().size()), episode.steps(), episode.status(),
+                   metric_sums, updates);
 }
 
 nlohmann::json episode_record_json(const EpisodeRecord& r) {

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/env/episode.h"
+#include "core/region/region_episode.h"
 
 namespace autoblock {
 
@@ -29,6 +30,9 @@ struct EpisodeRecord {
 // Outputs: the episode's return, blocks, steps, completion and mean metrics (the caller adds the
 //          temperatures; the trainer the number, shape, evaluation and clock).
 EpisodeRecord episode_record_of(const Episode& episode, const std::map<std::string, double>& metric_sums, int updates);
+// The same for an episode on a general face (blocks: its finished parts, templates included).
+EpisodeRecord region_episode_record_of(const RegionEpisode& episode, const std::map<std::string, double>& metric_sums,
+                                       int updates);
 
 nlohmann::json episode_record_json(const EpisodeRecord& record);
 EpisodeRecord episode_record_from_json(const nlohmann::json& json);

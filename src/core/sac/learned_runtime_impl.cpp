@@ -13,6 +13,7 @@
 #include "core/sac/compute_threads.h"
 #include "core/sac/lookahead_agent.h"
 #include "core/sac/policy_file.h"
+#include "core/region/region_search.h"
 #include "core/sac/region_lookahead_policy.h"
 #include "core/sac/sac_config.h"
 #include "core/sac/trainer.h"
@@ -30,9 +31,15 @@ class AgentPolicy : public LearnedPolicy {
   std::unique_ptr<Policy> deployed_policy(const std::string& name) override { return agent_->deployed_policy(name); }
   std::vector<float> vertex_scores(const Episode& episode) override { return agent_->vertex_scores(episode); }
   std::unique_ptr<RegionPolicy> deployed_region_policy(const std::string& name) override {
+    return agent_->deployed_region_policy(name);
+  }
+  std::vector<float> region_vertex_scores(const RegionEpisode& episode) override {
     auto lookahead = std::dynamic_pointer_cast<LookaheadAgent>(agent_);
-    if (!lookahead) return nullptr;
-    return std::make_unique<RegionLookaheadPolicy>(std::move(lookahead), name);
+    if (!lookahead) {
+      throw InputError("the paper's agent has no value scores on faces with edges at other angles: its policy works on "
+                       "rectilinear faces only");
+    }
+    return RegionLookaheadPolicy(std::move(lookahead), "").vertex_scores(episode);
   }
 
  private:
@@ -53,19 +60,23 @@ void require_parent_folder(const std::string& path, const std::string& what) {
 }
 
 nlohmann::json set_json(const std::string& folder, const GeneratedSet& generated) {
-  if (generated.count > 0) {
-    return {{"generated", generated.count},
-            {"seed", generated.seed},
-            {"min_rects", generated.options.min_rects},
-            {"max_rects", generated.options.max_rects},
-            {"holes", generated.options.holes}};
+  if (generated.total() > 0) {
+    nlohmann::json j = {{"generated", generated.count},
+                        {"seed", generated.seed},
+                        {"min_rects", generated.options.min_rects},
+                        {"max_rects", generated.options.max_rects},
+                        {"holes", generated.options.holes}};
+    if (generated.general > 0) j["general"] = generated.general;
+    if (generated.arcs > 0) j["arcs"] = generated.arcs;
+    return j;
   }
   return folder;
 }
 
-// A baseline's mean return over the set (the curves' reference lines).
+// A baseline's mean return over the set (the curves' reference lines): "optimal" or "greedy" on
+// rectilinear faces; on general faces, where no exact optimum is known, "optimal" is the search.
 double mean_return(const TrainingSet& set, const std::string& policy, RewardPreset reward) {
-  if (set.faces.empty()) return 0.0;
+  if (set.size() == 0) return 0.0;
   double total = 0.0;
   EpisodeOptions options;
   options.reward = reward;
@@ -76,7 +87,21 @@ double mean_return(const TrainingSet& set, const std::string& policy, RewardPres
     auto p = make_baseline_policy(policy, face.size, baseline);
     total += decompose_face(face, *p, options).total_return;
   }
-  return total / static_cast<double>(set.faces.size());
+  if (!set.general.empty()) {
+    RegionEpisodeOptions region_options;
+    region_options.reward = reward;
+    const auto lock = lock_general_engine();
+    for (const Region& face : set.general) {
+      std::unique_ptr<RegionPolicy> p;
+      if (policy == "optimal") {
+        p = std::make_unique<RegionSearchPolicy>();
+      } else {
+        p = std::make_unique<RegionGreedyPolicy>();
+      }
+      total += decompose_region(face, *p, region_options).total_return;
+    }
+  }
+  return total / static_cast<double>(set.size());
 }
 
 struct Reporting {
@@ -166,7 +191,8 @@ TrainingOutcome train(const TrainingJob& job, const TrainingCallbacks& callbacks
   outcome.optimal_test_return = mean_return(test, "optimal", reward);
   outcome.greedy_test_return = mean_return(test, "greedy", reward);
   Reporting reporting{outcome.log, outcome.curves, "AutoBlock SAC training (" + outcome.reward + " reward)",
-                      {{"optimal (test set)", "#2ca02c", outcome.optimal_test_return},
+                      {{test.general.empty() ? "optimal (test set)" : "optimal / search (test set)", "#2ca02c",
+                        outcome.optimal_test_return},
                        {"greedy (test set)", "#ff7f0e", outcome.greedy_test_return}}};
 
   struct Deployment {  // back to one thread for deployment (sac/compute_threads.h), however the run ends

@@ -13,10 +13,13 @@
 #include "core/env/episode.h"
 #include "core/env/policy.h"
 #include "core/geometry/grid_face.h"
+#include "core/region/region.h"
 #include "core/sac/episode_record.h"
 #include "core/sac/sac_config.h"
 
 namespace autoblock {
+
+class RegionPolicy;
 
 // Agents live in shared pointers (make_learning_agent): their deployed policies share them.
 class LearningAgent : public std::enable_shared_from_this<LearningAgent> {
@@ -27,12 +30,18 @@ class LearningAgent : public std::enable_shared_from_this<LearningAgent> {
   // One training episode on face: act stochastically (uniformly during the warm-up), remember,
   // learn. Output: the episode's record (no episode number, evaluation or clock yet).
   virtual EpisodeRecord train_episode(const GridFace& face, std::mt19937_64& rng, int max_steps) = 0;
+  // The same on a general face (issue 12; face, a region, not empty), under the agent's reward
+  // preset and the face's block rules (region_episode.h). The default throws InputError: the agent
+  // learns on rectilinear faces only.
+  virtual EpisodeRecord train_region_episode(const Region& face, std::mt19937_64& rng, int max_steps);
   // Where the run stands, told before every training episode: episodes done over the run's total,
   // in [0, 1]. Agents with a learning-rate schedule follow it; the default ignores it.
   virtual void set_training_progress(double fraction) { (void)fraction; }
 
   // The deterministic deployed policy, sharing this agent (which it does not change).
   virtual std::unique_ptr<Policy> deployed_policy(const std::string& name) = 0;
+  // The deterministic deployed policy on general faces; nullptr when the agent has none.
+  virtual std::unique_ptr<RegionPolicy> deployed_region_policy(const std::string& name);
   // The value network's score at every model vertex of the episode's current part.
   virtual std::vector<float> vertex_scores(const Episode& episode) = 0;
 

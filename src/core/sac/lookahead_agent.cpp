@@ -6,6 +6,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <numeric>
 #include <stdexcept>
 
@@ -13,7 +14,10 @@
 #include "core/geometry/part_boundary.h"
 #include "core/geometry/part_symmetry.h"
 #include "core/nn/module_blend.h"
+#include "core/region/region_candidates.h"
+#include "core/region/region_symmetry.h"
 #include "core/sac/deploy_profile.h"
+#include "core/sac/region_lookahead_policy.h"
 #include "core/sac/state_batch.h"
 
 namespace autoblock {
@@ -193,6 +197,58 @@ PartStateOptions LookaheadAgent::state_options(double face_size) const {
   return options;
 }
 
+RegionStateOptions LookaheadAgent::region_state_options(double face_size, const BlockRules& rules) const {
+  RegionStateOptions options;
+  options.graph = config_.graph;
+  options.lookahead = true;
+  options.episode.reward = config_.reward;
+  options.episode.rules = rules;
+  options.episode.face_rules = false;
+  options.face_size = face_size;
+  options.taper = config_.reward == RewardPreset::Mesh;  // the search's ranking (region_search.h)
+  return options;
+}
+
+bool LookaheadAgent::RegionKey::operator==(const RegionKey& other) const {
+  return face_size == other.face_size && rules.min_corner_degrees == other.rules.min_corner_degrees &&
+         rules.max_corner_degrees == other.rules.max_corner_degrees &&
+         rules.flat_tolerance_degrees == other.rules.flat_tolerance_degrees && region == other.region;
+}
+
+size_t LookaheadAgent::RegionKeyHash::operator()(const RegionKey& key) const {
+  return key.region.hash() ^ (std::hash<double>()(key.face_size) * 0x9e3779b97f4a7c15ULL) ^
+         std::hash<double>()(key.rules.min_corner_degrees + 1e3 * key.rules.max_corner_degrees);
+}
+
+std::shared_ptr<const RegionPartState> LookaheadAgent::cached_region_state(const Region& region, double face_size,
+                                                                           const BlockRules& rules) {
+  if (region_states_.size() > 50000) region_states_.clear();  // a memory bound; states are rebuilt on demand
+  auto& slot = region_states_[RegionKey{region, face_size, rules}];
+  if (!slot) slot = make_region_state(region, region_state_options(face_size, rules));
+  return slot;
+}
+
+std::vector<double> LookaheadAgent::region_action_values(const RegionPartState& state, const std::vector<size_t>& which,
+                                                         double face_size, const BlockRules& rules) {
+  std::vector<const PartState*> children;
+  std::vector<std::shared_ptr<const RegionPartState>> keep;
+  for (const size_t k : which) {
+    for (const Region& piece : state.candidates[k].to_cut) {
+      keep.push_back(cached_region_state(piece, face_size, rules));
+      children.push_back(keep.back().get());
+    }
+  }
+  const std::vector<double> w = children.empty() ? std::vector<double>{} : state_values(children);
+  std::vector<double> q;
+  size_t c = 0;
+  for (const size_t k : which) {
+    double value = state.candidates[k].reward;
+    for (size_t p = 0; p < state.candidates[k].to_cut.size(); ++p) value += config_.gamma * w[c++];
+    q.push_back(value);
+  }
+  return q;
+}
+
 double LookaheadAgent::temperature() const { return std::exp(log_alpha_.item<double>()); }
 
 torch::Tensor LookaheadAgent::forward_values(ValueNetwork& network, const std::vector<const PartState*>& states) {
@@ -265,13 +321,82 @@ std::shared_ptr<const PartState> LookaheadAgent::cached_state(const Part& part, 
 }
 
 void LookaheadAgent::remember(const Part& part, double face_size, int symmetry) {
-  Memory entry{part, face_size, symmetry};
+  Memory entry;
+  entry.part = part;
+  entry.face_size = face_size;
+  entry.symmetry = symmetry;
+  push_memory(std::move(entry));
+}
+
+void LookaheadAgent::push_memory(Memory entry) {
   if (memory_.size() < static_cast<size_t>(config_.buffer_capacity)) {
     memory_.push_back(std::move(entry));
   } else {
     memory_[next_] = std::move(entry);
     next_ = (next_ + 1) % memory_.size();
   }
+}
+
+void LookaheadAgent::remember_region(const Region& part, double face_size, const BlockRules& rules, double angle,
+                                     bool mirror) {
+  Memory entry;
+  entry.region = part;
+  entry.face_size = face_size;
+  entry.rules = rules;
+  entry.angle = angle;
+  entry.mirror = mirror;
+  push_memory(std::move(entry));
+}
+
+EpisodeRecord LookaheadAgent::train_region_episode(const Region& face, std::mt19937_64& rng, int max_steps) {
+  std::unique_lock<std::mutex> lock = lock_general_engine();
+  RegionEpisodeOptions options;
+  options.reward = config_.reward;
+  options.max_steps = max_steps;
+  RegionEpisode episode(face, options);
+  const double face_size = episode.face_size();
+  const BlockRules rules = episode.options().rules;
+  std::map<std::string, double> metric_sums;
+  int updates = 0;
+  while (episode.running()) {
+    const Region part = episode.current_part();
+    const auto state = cached_region_state(part, face_size, rules);
+    if (state->candidates.empty()) {  // nothing makes progress (not met on valid faces): finish as every policy does
+      episode.step(progress_action(part, rules));
+      continue;
+    }
+    const std::vector<size_t> actions = best_candidates(state->candidates, static_cast<size_t>(config_.train_top_k));
+    size_t chosen;
+    if (steps_ < config_.warmup_steps) {
+      chosen = actions[std::uniform_int_distribution<size_t>(0, actions.size() - 1)(rng)];
+    } else {
+      const std::vector<double> q = region_action_values(*state, actions, face_size, rules);
+      const double alpha = temperature();
+      const double top = *std::max_element(q.begin(), q.end());
+      std::vector<double> weights;
+      for (double v : q) weights.push_back(std::exp((v - top) / alpha));
+      chosen = actions[static_cast<size_t>(std::discrete_distribution<int>(weights.begin(), weights.end())(rng))];
+    }
+    const double angle = std::uniform_real_distribution<double>(0.0, 2.0 * M_PI)(rng);
+    const bool mirror = std::uniform_int_distribution<int>(0, 1)(rng) == 1;
+    remember_region(part, face_size, rules, angle, mirror);
+    episode.step(state->candidates[chosen].action);
+    ++steps_;
+    if (steps_ > config_.warmup_steps && memory_.size() >= static_cast<size_t>(config_.batch_size) &&
+        steps_ % config_.update_every == 0) {
+      lock.unlock();  // update takes it
+      for (const auto& [name, value] : update(static_cast<size_t>(config_.batch_size), rng)) metric_sums[name] += value;
+      lock.lock();
+      ++updates;
+    }
+  }
+  EpisodeRecord record = region_episode_record_of(episode, metric_sums, updates);
+  record.alpha = temperature();
+  return record;
+}
+
+std::unique_ptr<RegionPolicy> LookaheadAgent::deployed_region_policy(const std::string& name) {
+  return std::make_unique<RegionLookaheadPolicy>(std::static_pointer_cast<LookaheadAgent>(shared_from_this()), name);
 }
 
 EpisodeRecord LookaheadAgent::train_episode(const GridFace& face, std::mt19937_64& rng, int max_steps) {
@@ -314,38 +439,80 @@ std::map<std::string, double> LookaheadAgent::update(size_t count, std::mt19937_
   std::uniform_int_distribution<size_t> pick(0, memory_.size() - 1);
   std::vector<const Memory*> batch;
   for (size_t k = 0; k < count; ++k) batch.push_back(&memory_[pick(rng)]);
+  std::unique_lock<std::mutex> lock;  // general parts: the region engine's lock (region_policy.h)
+  if (std::any_of(batch.begin(), batch.end(), [](const Memory* m) { return m->general(); })) lock = lock_general_engine();
 
-  // Targets: soft maximum over each part's cuts of reward + gamma * W'(pieces).
-  std::vector<std::shared_ptr<const PartState>> parents;
+  // Targets: soft maximum over each part's actions of reward + gamma * W'(pieces).
+  struct Parent {
+    std::shared_ptr<const PartState> state;
+    const RegionPartState* general = nullptr;  // a general part's state (state, as a RegionPartState)
+    std::vector<size_t> actions;               // general: the candidates valued
+  };
+  std::vector<Parent> parents;
   std::vector<const PartState*> missing;
   std::vector<Part> missing_parts;
+  std::vector<RegionKey> missing_regions;
   std::vector<std::shared_ptr<const PartState>> keep;
   for (const Memory* m : batch) {
-    parents.push_back(cached_state(m->part, m->face_size));
-    for (const LineCandidate& line : parents.back()->lines) {
-      for (const Part& piece : line.to_cut) {
-        if (target_values_.count(piece)) continue;
-        keep.push_back(cached_state(piece, m->face_size));
-        missing.push_back(keep.back().get());
-        missing_parts.push_back(piece);
-        target_values_[piece] = 0.0;  // placeholder, filled below (also dedupes)
+    Parent parent;
+    if (!m->general()) {
+      parent.state = cached_state(m->part, m->face_size);
+      for (const LineCandidate& line : parent.state->lines) {
+        for (const Part& piece : line.to_cut) {
+          if (target_values_.count(piece)) continue;
+          keep.push_back(cached_state(piece, m->face_size));
+          missing.push_back(keep.back().get());
+          missing_parts.push_back(piece);
+          target_values_[piece] = 0.0;  // placeholder, filled below (also dedupes)
+        }
+      }
+    } else {
+      const auto state = cached_region_state(m->region, m->face_size, m->rules);
+      parent.state = state;
+      parent.general = state.get();
+      parent.actions = best_candidates(state->candidates, static_cast<size_t>(config_.train_top_k));
+      for (const size_t a : parent.actions) {
+        for (const Region& piece : state->candidates[a].to_cut) {
+          RegionKey key{piece, m->face_size, m->rules};
+          if (region_target_values_.count(key)) continue;
+          keep.push_back(cached_region_state(piece, m->face_size, m->rules));
+          missing.push_back(keep.back().get());
+          region_target_values_[key] = 0.0;
+          missing_regions.push_back(std::move(key));
+        }
       }
     }
+    parents.push_back(std::move(parent));
   }
   if (!missing.empty()) {
     torch::NoGradGuard no_grad;
     const torch::Tensor w = forward_values(target_, missing).contiguous();
-    for (size_t k = 0; k < missing.size(); ++k) target_values_[missing_parts[k]] = w.data_ptr<float>()[k];
+    const float* values = w.data_ptr<float>();
+    size_t k = 0;
+    for (const Part& part : missing_parts) target_values_[part] = values[k++];
+    for (const RegionKey& key : missing_regions) region_target_values_[key] = values[k++];
   }
   const double alpha = temperature();
   std::vector<float> targets;
   double entropy = 0.0, entropy_target = 0.0;
-  for (const auto& state : parents) {
+  for (size_t b = 0; b < batch.size(); ++b) {
+    const Parent& parent = parents[b];
     std::vector<double> q;
-    for (const LineCandidate& line : state->lines) {
-      double value = line.reward;
-      for (const Part& piece : line.to_cut) value += config_.gamma * target_values_.at(piece);
-      q.push_back(value);
+    if (!parent.general) {
+      for (const LineCandidate& line : parent.state->lines) {
+        double value = line.reward;
+        for (const Part& piece : line.to_cut) value += config_.gamma * target_values_.at(piece);
+        q.push_back(value);
+      }
+    } else {
+      for (const size_t a : parent.actions) {
+        const RegionCandidate& candidate = parent.general->candidates[a];
+        double value = candidate.reward;
+        for (const Region& piece : candidate.to_cut) {
+          value += config_.gamma * region_target_values_.at(RegionKey{piece, batch[b]->face_size, batch[b]->rules});
+        }
+        q.push_back(value);
+      }
     }
     targets.push_back(static_cast<float>(soft_maximum(q, alpha)));
     entropy += softmax_entropy(q, alpha);
@@ -354,14 +521,21 @@ std::map<std::string, double> LookaheadAgent::update(size_t count, std::mt19937_
   entropy /= static_cast<double>(batch.size());
   entropy_target /= static_cast<double>(batch.size());
 
-  // The parts as presented: each in its remembered symmetry.
+  // The parts as presented: each in its remembered symmetry (grid) or turn and mirror (general).
   std::vector<std::shared_ptr<const PartState>> shown;
   std::vector<const PartState*> shown_raw;
   for (size_t k = 0; k < batch.size(); ++k) {
     const Memory& m = *batch[k];
-    shown.push_back(m.symmetry == 0 ? parents[k] : make_part_state(transform_part(m.part, m.symmetry), state_options(m.face_size)));
+    if (!m.general()) {
+      shown.push_back(m.symmetry == 0 ? parents[k].state
+                                      : make_part_state(transform_part(m.part, m.symmetry), state_options(m.face_size)));
+    } else {
+      const Region view = transform_region(m.region, m.angle, m.mirror);
+      shown.push_back(view == m.region ? parents[k].state : cached_region_state(view, m.face_size, m.rules));
+    }
     shown_raw.push_back(shown.back().get());
   }
+  if (lock) lock.unlock();
   value_->train();
   const torch::Tensor w = forward_values(value_, shown_raw);
   const torch::Tensor y = torch::tensor(targets);
@@ -380,8 +554,10 @@ std::map<std::string, double> LookaheadAgent::update(size_t count, std::mt19937_
   if (++updates_ % config_.target_update_every == 0) {
     blend_module(*target_, *value_, 1.0);
     target_values_.clear();
+    region_target_values_.clear();
   }
   if (target_values_.size() > 200000) target_values_.clear();
+  if (region_target_values_.size() > 200000) region_target_values_.clear();
   return {{"value_loss", loss.item<double>()},
           {"alpha", temperature()},
           {"entropy", entropy},
@@ -446,6 +622,7 @@ void LookaheadAgent::load(torch::serialize::InputArchive& archive, bool training
     log_alpha_.copy_(log_alpha);
   }
   target_values_.clear();
+  region_target_values_.clear();
   if (!training) {
     blend_module(*target_, *value_, 1.0);
     return;
@@ -487,16 +664,38 @@ T get(const std::string& in, size_t& offset) {
   return value;
 }
 
-constexpr std::uint32_t kMemoryMagic = 0x4d4c4241;  // "ABLM"
+constexpr std::uint32_t kMemoryMagic = 0x4d4c4241;    // "ABLM": grid parts only (before issue 12)
+constexpr std::uint32_t kMemoryMagicV2 = 0x4e4c4241;  // "ABLN": each entry tagged grid (0) or general (1)
+
+void put_ring(std::string& out, const Ring& ring) {
+  put<std::uint64_t>(out, ring.size());
+  for (const Point2& p : ring) {
+    put(out, p.x);
+    put(out, p.y);
+  }
+}
+
+Ring get_ring(const std::string& in, size_t& offset) {
+  const auto n = get<std::uint64_t>(in, offset);
+  if (n < 3 || n > in.size()) throw InputError("corrupt replay memory (bad loop)");
+  Ring ring(n);
+  for (Point2& p : ring) {
+    p.x = get<double>(in, offset);
+    p.y = get<double>(in, offset);
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw InputError("corrupt replay memory (bad point)");
+  }
+  return ring;
+}
 
 }  // namespace
 
 std::string LookaheadAgent::serialize_memory() const {
   std::string out;
-  put(out, kMemoryMagic);
+  put(out, kMemoryMagicV2);
   std::map<const Grid*, std::uint32_t> grid_ids;
   std::vector<const Grid*> grids;
   for (const Memory& m : memory_) {
+    if (m.general()) continue;
     if (grid_ids.emplace(&m.part.grid(), static_cast<std::uint32_t>(grids.size())).second) grids.push_back(&m.part.grid());
   }
   put<std::uint64_t>(out, grids.size());
@@ -508,6 +707,20 @@ std::string LookaheadAgent::serialize_memory() const {
   }
   put<std::uint64_t>(out, memory_.size());
   for (const Memory& m : memory_) {
+    put<std::uint8_t>(out, m.general() ? 1 : 0);
+    if (m.general()) {
+      put(out, m.face_size);
+      put(out, m.angle);
+      put<std::uint8_t>(out, m.mirror ? 1 : 0);
+      put(out, m.rules.min_corner_degrees);
+      put(out, m.rules.max_corner_degrees);
+      put(out, m.rules.flat_tolerance_degrees);
+      put(out, m.region.quantum());
+      put<std::uint64_t>(out, m.region.holes().size());
+      put_ring(out, m.region.outer());
+      for (const Ring& hole : m.region.holes()) put_ring(out, hole);
+      continue;
+    }
     put(out, grid_ids.at(&m.part.grid()));
     put(out, m.face_size);
     put<std::int32_t>(out, m.symmetry);
@@ -528,7 +741,9 @@ std::string LookaheadAgent::serialize_memory() const {
 
 void LookaheadAgent::deserialize_memory(const std::string& in) {
   size_t offset = 0;
-  if (get<std::uint32_t>(in, offset) != kMemoryMagic) throw InputError("corrupt replay memory (bad magic)");
+  const auto magic = get<std::uint32_t>(in, offset);
+  if (magic != kMemoryMagic && magic != kMemoryMagicV2) throw InputError("corrupt replay memory (bad magic)");
+  const bool tagged = magic == kMemoryMagicV2;
   const auto grid_count = get<std::uint64_t>(in, offset);
   if (grid_count > in.size()) throw InputError("corrupt replay memory (bad grid count)");
   std::vector<std::shared_ptr<const Grid>> grids;
@@ -547,6 +762,29 @@ void LookaheadAgent::deserialize_memory(const std::string& in) {
   if (count > static_cast<std::uint64_t>(config_.buffer_capacity)) throw InputError("corrupt replay memory (too many parts)");
   std::vector<Memory> memory;
   for (std::uint64_t k = 0; k < count; ++k) {
+    const auto kind = tagged ? get<std::uint8_t>(in, offset) : std::uint8_t{0};
+    if (kind > 1) throw InputError("corrupt replay memory (bad entry kind)");
+    if (kind == 1) {
+      Memory m;
+      m.face_size = get<double>(in, offset);
+      m.angle = get<double>(in, offset);
+      m.mirror = get<std::uint8_t>(in, offset) != 0;
+      m.rules.min_corner_degrees = get<double>(in, offset);
+      m.rules.max_corner_degrees = get<double>(in, offset);
+      m.rules.flat_tolerance_degrees = get<double>(in, offset);
+      const double quantum = get<double>(in, offset);
+      const auto holes = get<std::uint64_t>(in, offset);
+      if (!(quantum > 0.0) || !(m.face_size > 0.0) || !std::isfinite(m.angle) || holes > in.size()) {
+        throw InputError("corrupt replay memory (bad general part)");
+      }
+      const Ring outer = get_ring(in, offset);
+      std::vector<Ring> hole_rings;
+      for (std::uint64_t h = 0; h < holes; ++h) hole_rings.push_back(get_ring(in, offset));
+      m.region = Region(outer, hole_rings, quantum);
+      if (m.region.is_empty()) throw InputError("corrupt replay memory (empty general part)");
+      memory.push_back(std::move(m));
+      continue;
+    }
     const auto grid = get<std::uint32_t>(in, offset);
     if (grid >= grids.size()) throw InputError("corrupt replay memory (bad grid index)");
     Memory m;
@@ -567,6 +805,8 @@ void LookaheadAgent::deserialize_memory(const std::string& in) {
   }
   if (offset != in.size()) throw InputError("corrupt replay memory (trailing bytes)");
   memory_ = std::move(memory);
+  region_states_.clear();
+  region_target_values_.clear();
   if (memory_.size() < static_cast<size_t>(config_.buffer_capacity) ? next_ != 0 : next_ >= memory_.size()) {
     throw InputError("corrupt replay memory (bad position)");
   }

@@ -49,6 +49,22 @@
 // soft Bellman target is over all cuts: W learns the value of the whole maximum-entropy policy); a
 // policy file records its deploy_top_k, and files without one (every policy before this) value
 // every cut.
+//
+// General faces (issue 12). The same learning on parts of general faces (region engine): a part's
+// actions are its candidates (region_lookahead.h) with the train_top_k best rewards, valued as
+//   Q(P, a) = reward(P, a) + gamma * sum of W(pieces a leaves that are not blocks),
+// acted on by softmax(Q / alpha) (uniform among them in the warm-up), and remembered parts are
+// revisited with the soft Bellman target over those actions. The deployed policy on general faces is
+// RegionLookaheadPolicy (region_lookahead_policy.h). Rewards and blocks follow the agent's preset and
+// the face's rules (mesh_block_rules under the mesh preset); under the mesh preset a candidate's
+// reward is less the taper charge of the blocks it leaves (region_reward.h), as the search ranks and
+// values cuts, so that W learns the value the search computes. On a rectilinear part no block tapers. Augmentation: a remembered general part
+// is shown turned by a random angle and mirrored at random (region_symmetry.h), with its face's size
+// and rules kept: candidates, rewards and blocks do not depend on the frame, so its target holds for
+// every view (the face's bounding box, which a turn changes, only sets the scale, and the scale is
+// the remembered face's). The network thus learns the invariance under every rotation, not only the
+// square's eight. Grid and general parts share one memory and one network; a batch may mix them.
+// States and target values of general parts are kept keyed by the part, its face's size and rules.
 #pragma once
 
 #include <algorithm>
@@ -63,6 +79,7 @@
 #include "core/nn/value_network.h"
 #include "core/sac/learning_agent.h"
 #include "core/sac/part_state.h"
+#include "core/sac/region_state.h"
 
 namespace autoblock {
 
@@ -105,6 +122,8 @@ class LookaheadAgent : public LearningAgent {
 
   const SacConfig& config() const override { return config_; }
   EpisodeRecord train_episode(const GridFace& face, std::mt19937_64& rng, int max_steps) override;
+  EpisodeRecord train_region_episode(const Region& face, std::mt19937_64& rng, int max_steps) override;
+  std::unique_ptr<RegionPolicy> deployed_region_policy(const std::string& name) override;
   void set_training_progress(double fraction) override;
   std::unique_ptr<Policy> deployed_policy(const std::string& name) override;
   std::vector<float> vertex_scores(const Episode& episode) override;
@@ -114,6 +133,14 @@ class LookaheadAgent : public LearningAgent {
   void deserialize_memory(const std::string& bytes) override;
 
   PartStateOptions state_options(double face_size) const;
+  // The options of a general part's state as this agent reads it: lookahead, the agent's reward
+  // preset, the face's size and block rules.
+  RegionStateOptions region_state_options(double face_size, const BlockRules& rules) const;
+  // Inputs: state, a general part's (region_state_options); which, indices of its candidates.
+  // Output: Q of those candidates (online network, evaluation mode, no gradient). The caller holds
+  //         lock_general_engine() (region_policy.h).
+  std::vector<double> region_action_values(const RegionPartState& state, const std::vector<size_t>& which,
+                                           double face_size, const BlockRules& rules);
   // Q(P, L) for every candidate cut of the state (online network, evaluation mode, no gradient).
   std::vector<double> cut_values(const PartState& state, double face_size);
   // W of the given states (online network, evaluation mode, no gradient), in return units.
@@ -138,13 +165,33 @@ class LookaheadAgent : public LearningAgent {
   size_t memory_size() const { return memory_.size(); }
   // Inputs: part, its face's size, the symmetry it is presented in (0..7). Remembers it.
   void remember(const Part& part, double face_size, int symmetry);
+  // Inputs: part, of a general face, not a block; its face's size and block rules; how it is shown
+  //         (region_symmetry.h: angle in radians, mirror). Remembers it.
+  void remember_region(const Region& part, double face_size, const BlockRules& rules, double angle, bool mirror);
 
  private:
   struct Memory {
-    Part part;
+    Part part;            // a grid part, or
+    Region region;        // a general one (not empty)
     double face_size = 1.0;
-    int symmetry = 0;
+    int symmetry = 0;     // grid: part_symmetry.h
+    BlockRules rules;     // general: the face's
+    double angle = 0.0;   // general: how it is shown (region_symmetry.h)
+    bool mirror = false;
+    bool general() const { return !region.is_empty(); }
   };
+  // A general part as the caches key it: states and values depend on the face's size and rules too.
+  struct RegionKey {
+    Region region;
+    double face_size = 1.0;
+    BlockRules rules;
+    bool operator==(const RegionKey& other) const;
+  };
+  struct RegionKeyHash {
+    size_t operator()(const RegionKey& key) const;
+  };
+  void push_memory(Memory entry);  // the ring buffer's insertion
+  std::shared_ptr<const RegionPartState> cached_region_state(const Region& region, double face_size, const BlockRules& rules);
   torch::Tensor forward_values(ValueNetwork& network, const std::vector<const PartState*>& states);
   std::vector<double> values_of(ValueNetwork& network, const std::vector<const PartState*>& states);
   std::shared_ptr<const PartState> cached_state(const Part& part, double face_size);
@@ -163,6 +210,8 @@ class LookaheadAgent : public LearningAgent {
   long steps_ = 0, updates_ = 0;
   std::unordered_map<Part, std::shared_ptr<const PartState>, PartHash> states_;
   std::unordered_map<Part, double, PartHash> target_values_;  // W' of parts, valid until the next refresh
+  std::unordered_map<RegionKey, std::shared_ptr<const RegionPartState>, RegionKeyHash> region_states_;
+  std::unordered_map<RegionKey, double, RegionKeyHash> region_target_values_;  // W' of general parts
 };
 
 }  // namespace autoblock

@@ -1,5 +1,6 @@
 #include "core/sac/region_lookahead.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -9,7 +10,7 @@
 
 namespace autoblock {
 
-RegionLookahead region_look_ahead(const Region& part, double face_size, const RegionEpisodeOptions& options) {
+RegionLookahead region_look_ahead(const Region& part, double face_size, const RegionEpisodeOptions& options, bool taper) {
   RegionLookahead result;
   const double scale = lookahead_reward_scale(options.reward);
   // The vertex each candidate starts at, by its origin (candidates start at a vertex exactly).
@@ -24,11 +25,15 @@ RegionLookahead region_look_ahead(const Region& part, double face_size, const Re
   // What a cut separating nothing earns: the value of a missing cut in a vertex's summary.
   const double nothing = region_cut_reward(options.reward, CutOutcome{{part}, {}}, face_size, options.rules);
   std::vector<std::vector<size_t>> at_vertex(reflex.size());
-  for (ScoredAction& scored : score_candidates(part, face_size, options)) {
+  // As the search expands them whatever their reward (region_search.cpp): the O-grid on a part with a
+  // hole, the template on a reflex fillet's corner piece.
+  const bool finishing_template = !part.holes().empty() || !concave_runs(part.outer(), options.rules).empty();
+  for (ScoredAction& scored : score_candidates(part, face_size, options, nullptr, 0, taper)) {
     RegionCandidate c;
     c.action = scored.action;
     c.reward = scored.reward;
     c.pieces = static_cast<int>(scored.outcome->pieces.size());
+    c.always = scored.action.kind == RegionAction::Kind::Template && finishing_template;
     if (scored.action.kind == RegionAction::Kind::Cut) {
       for (const Region& piece : scored.outcome->pieces) {
         if (is_block(piece, options.rules)) {
@@ -77,6 +82,19 @@ RegionLookahead region_look_ahead(const Region& part, double face_size, const Re
   result.scale = {static_cast<float>(part.bbox().longer_side() / face_size),
                   static_cast<float>(std::sqrt(part.area()) / face_size)};
   return result;
+}
+
+std::vector<size_t> best_candidates(const std::vector<RegionCandidate>& candidates, size_t keep) {
+  std::vector<size_t> order(candidates.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  if (keep == 0 || keep >= order.size()) return order;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return candidates[a].reward > candidates[b].reward; });
+  std::vector<size_t> kept(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(keep));
+  for (size_t k = keep; k < order.size(); ++k) {
+    if (candidates[order[k]].always) kept.push_back(order[k]);
+  }
+  std::sort(kept.begin(), kept.end());
+  return kept;
 }
 
 }  // namespace autoblock

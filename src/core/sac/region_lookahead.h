@@ -31,6 +31,9 @@ struct RegionCandidate {
   int pieces = 0;               // N (1 for the template)
   int blocks = 0;               // pieces that are blocks under the episode's rules
   std::vector<Region> to_cut;   // the pieces that are not blocks
+  bool always = false;          // in every shortlist (best_candidates): the O-grid on a part with a hole
+                                // or the template on a reflex fillet's corner piece, which finish the
+                                // part at a reward far below a cut's (the search expands them too)
 };
 
 struct RegionLookahead {
@@ -43,6 +46,17 @@ struct RegionLookahead {
 //          episode's (reward preset and block rules). The caller holds lock_general_engine()
 //          (region_policy.h), as for any computation on regions.
 // Outputs: its lookahead (above). Deterministic.
-RegionLookahead region_look_ahead(const Region& part, double face_size, const RegionEpisodeOptions& options);
+// taper: each candidate's reward less the taper charge of the blocks it leaves (score_candidates,
+//         region_policy.h; the search's ranking under the mesh preset), in the candidates and the
+//         summaries alike.
+RegionLookahead region_look_ahead(const Region& part, double face_size, const RegionEpisodeOptions& options,
+                                  bool taper = false);
+
+// Inputs:  candidates; keep, how many (0: all).
+// Outputs: the indices (increasing) of the keep candidates with the best reward, the earlier among
+//          equals, and every candidate marked always; all of them when keep is 0 or at least their
+//          count. The actions a lookahead agent values on a general part (deployed: deploy_top_k;
+//          trained: train_top_k).
+std::vector<size_t> best_candidates(const std::vector<RegionCandidate>& candidates, size_t keep);
 
 }  // namespace autoblock

@@ -1,6 +1,7 @@
 #include "core/sac/region_lookahead_policy.h"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 #include "core/region/region_candidates.h"
@@ -11,13 +12,7 @@ RegionLookaheadPolicy::RegionLookaheadPolicy(std::shared_ptr<LookaheadAgent> age
     : agent_(std::move(agent)), name_(std::move(name)) {}
 
 RegionStateOptions RegionLookaheadPolicy::state_options(const RegionEpisodeOptions& episode, double face_size) const {
-  RegionStateOptions options;
-  options.graph = agent_->state_options(face_size).graph;
-  options.lookahead = true;
-  options.episode = episode;
-  options.episode.reward = agent_->config().reward;  // W's preset: rewards and features as it learned them
-  options.face_size = face_size;
-  return options;
+  return agent_->region_state_options(face_size, episode.rules);
 }
 
 std::vector<double> RegionLookaheadPolicy::action_values(const RegionPartState& state, const RegionEpisodeOptions& episode,
@@ -28,15 +23,7 @@ std::vector<double> RegionLookaheadPolicy::action_values(const RegionPartState& 
 }
 
 std::vector<size_t> RegionLookaheadPolicy::shortlist(const RegionPartState& state) const {
-  std::vector<size_t> order(state.candidates.size());
-  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
-  const size_t keep = static_cast<size_t>(std::max(0, agent_->config().deploy_top_k));
-  if (keep == 0 || keep >= order.size()) return order;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](size_t a, size_t b) { return state.candidates[a].reward > state.candidates[b].reward; });
-  order.resize(keep);
-  std::sort(order.begin(), order.end());
-  return order;
+  return best_candidates(state.candidates, static_cast<size_t>(std::max(0, agent_->config().deploy_top_k)));
 }
 
 std::vector<double> RegionLookaheadPolicy::values_of(const RegionPartState& state, const std::vector<size_t>& which,
@@ -85,6 +72,19 @@ RegionAction RegionLookaheadPolicy::choose(const RegionEpisode& episode) {
     if (q[k] > q[best]) best = k;
   }
   return state->candidates[which[best]].action;
+}
+
+std::vector<float> RegionLookaheadPolicy::vertex_scores(const RegionEpisode& episode) {
+  const Region& part = episode.current_part();
+  std::vector<float> scores(static_cast<size_t>(part.vertex_count()), -std::numeric_limits<float>::infinity());
+  const auto state = make_region_state(part, state_options(episode.options(), episode.face_size()));
+  const std::vector<size_t> which = shortlist(*state);
+  const std::vector<double> q = values_of(*state, which, episode.options(), episode.face_size());
+  for (size_t k = 0; k < which.size(); ++k) {
+    const int v = state->candidates[which[k]].vertex;
+    if (v >= 0 && static_cast<size_t>(v) < scores.size()) scores[static_cast<size_t>(v)] = std::max(scores[static_cast<size_t>(v)], static_cast<float>(q[k]));
+  }
+  return scores;
 }
 
 }  // namespace autoblock

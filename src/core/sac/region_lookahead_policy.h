@@ -5,11 +5,13 @@
 // under the agent's reward preset (what W learned; the episode's rules), and takes the best
 // (the earlier candidate among equals). A piece's state holds its own lookahead (every candidate of
 // it cut), so valuing every candidate's pieces costs about the square of the candidates' count: with
-// the agent's deploy_top_k = k > 0 only the k best candidates by reward are valued (shortlist). The template and an O-grid finish the part: their Q is their
+// the agent's deploy_top_k = k > 0 only the k best candidates by reward are valued, with the O-grid
+// and a reflex fillet's corner template always among them (shortlist, best_candidates in
+// region_lookahead.h). The template and an O-grid finish the part: their Q is their
 // reward. A part with no candidate that makes progress gets progress_action, so every face ends in
 // blocks. Within a decomposition a piece's value is computed once (kept by the part, which is a
 // canonical value). What lookahead_agent.h says of the grid holds (gamma, the reward scale inside
-// W); the agent is trained on grid faces until training on general ones lands.
+// W); the agent learns on grid and general faces alike (lookahead_agent.h, issue 12).
 #pragma once
 
 #include <memory>
@@ -32,11 +34,16 @@ class RegionLookaheadPolicy : public RegionPolicy {
   // Output: Q of each of state.candidates.
   std::vector<double> action_values(const RegionPartState& state, const RegionEpisodeOptions& episode, double face_size);
   // Inputs: state, a part's. Output: the candidates whose pieces are valued when deployed, in their
-  //         order: the agent's deploy_top_k best by reward (the earlier among equals), or all (0).
+  //         order: the agent's deploy_top_k best by reward (the earlier among equals) and the
+  //         candidates marked always, or all (0).
   std::vector<size_t> shortlist(const RegionPartState& state) const;
   // Inputs: the episode's options; face_size. Output: the options of the states this policy reads:
   //         lookahead with the episode's rules and the agent's reward preset (what W learned).
   RegionStateOptions state_options(const RegionEpisodeOptions& episode, double face_size) const;
+  // Inputs: episode, running. Output: at every vertex of its current part (loops flattened, outer
+  //         first: RegionSnapshot::vertices' order) the best Q among the shortlisted candidates that
+  //         start at it (what the step-through panel shows); -infinity at a vertex none starts at.
+  std::vector<float> vertex_scores(const RegionEpisode& episode);
 
  private:
   std::vector<double> values_of(const RegionPartState& state, const std::vector<size_t>& which,

@@ -19,6 +19,7 @@ struct RegionStateOptions {
   bool lookahead = false;          // add lookahead features and candidates
   RegionEpisodeOptions episode;    // lookahead: the reward preset and block rules to look ahead with
   double face_size = 1.0;          // lookahead: the longer side of the face's bounding box
+  bool taper = false;              // lookahead: rewards less the taper charge (region_look_ahead)
 };
 
 struct RegionPartState : PartState {

@@ -44,6 +44,9 @@ struct SacConfig {
   int deploy_top_k = 0;                 // lookahead, deployed: the network values only the pieces of
                                         // the k most promising cuts by a cheap two-step score
                                         // (lookahead_agent.h); 0: every cut (files without it)
+  int train_top_k = 12;                 // lookahead, trained on general faces (issue 12): the
+                                        // actions of a part are its k candidates with the best
+                                        // reward (region_lookahead.h best_candidates); 0: every one
   double polyak = 0.01;                 // paper: target networks move this fraction per update
   int target_update_every = 25;         // lookahead: the target network is copied every so many updates
   double direction_target_entropy = 0.3;     // nats; ln 2 = 0.69 is the maximum for 2 directions

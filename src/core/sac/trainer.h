@@ -1,4 +1,5 @@
-// The paper's training loop: one face from the training set per episode, cuts chosen
+// The paper's training loop: one face from the training set per episode (rectilinear or, for the
+// lookahead agent, general: TrainingSet holds both, drawn uniformly over all of them), cuts chosen
 // stochastically by the agent, which learns as it goes (learning_agent.h), periodic deterministic
 // evaluation on the test set, checkpoints that let a killed run resume where it stopped.
 //
@@ -58,6 +59,8 @@ class Trainer {
 
  private:
   Trainer(const TrainerOptions& options, TrainingSet train, TrainingSet test);
+  // Throws InputError when the data holds general faces and the agent does not learn on them.
+  void require_general_agent() const;
   TrainerOptions options_;
   TrainingSet train_, test_;
   std::shared_ptr<LearningAgent> agent_;

@@ -10,6 +10,7 @@
 #include <gp_Ax1.hxx>
 #include <gp_Trsf.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -317,4 +318,40 @@ TEST_CASE("a lookahead agent's trained policy decomposes general faces by name; 
   CHECK_THROWS_AS(decompose_input_face(face, settings), InputError);
   settings.policy = "no-such-policy";
   CHECK_THROWS_AS(decompose_input_face(face, settings), InputError);
+}
+
+TEST_CASE("vertex scores on a general face: the policy's chosen vertex scores highest; baselines and the paper's agent say why not",
+          "[api][general][learned][scores]") {
+  const InputFace face = check_face(general_face(1302, GeneralKind::Polygon, true), "polygon");
+  REQUIRE(face.is_general());
+  DecomposeSettings settings;
+  settings.reward.clear();
+  settings.policy = "sac-mesh";
+  settings.occt_blocks = false;
+  const FaceDecomposition d = decompose_input_face(face, settings);
+  REQUIRE(d.region.complete());
+  const std::vector<RegionActionSpec> actions = region_action_specs(d.region.cuts);
+  int compared = 0;
+  for (int k = 0; k < static_cast<int>(actions.size()); ++k) {
+    INFO("step " << k);
+    const RegionSnapshot s = face_step_general(face, actions, k, 0, d.region.reward, d.region.rules);
+    REQUIRE(s.has_next);
+    const std::vector<double> scores = face_vertex_scores_general(face, actions, k, "sac-mesh", 0, d.region.reward, d.region.rules);
+    REQUIRE(scores.size() == s.vertices.size());
+    CHECK(std::any_of(scores.begin(), scores.end(), [](double v) { return std::isfinite(v); }));
+    // The deployed policy takes the best Q of its shortlist: when that action starts at a vertex, the
+    // vertex scores the maximum (the policy's own progress actions, past the cap, are not its choice).
+    if (s.chosen_vertex >= 0 && k < d.region.policy_steps) {
+      CHECK(scores[static_cast<size_t>(s.chosen_vertex)] == *std::max_element(scores.begin(), scores.end()));
+      ++compared;
+    }
+  }
+  CHECK(compared >= 1);
+  CHECK_THROWS_WITH(face_vertex_scores_general(face, actions, 0, "greedy", 0, d.region.reward, d.region.rules),
+                    Catch::Contains("baseline"));
+  CHECK_THROWS_WITH(face_vertex_scores_general(face, actions, 0, "sac-faithful", 0, d.region.reward, d.region.rules),
+                    Catch::Contains("the paper's agent"));
+  CHECK_THROWS_WITH(face_vertex_scores_general(face, actions, static_cast<int>(actions.size()), "sac-mesh", 0,
+                                               d.region.reward, d.region.rules),
+                    Catch::Contains("no action follows"));
 }

@@ -2,9 +2,13 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
+#include "core/data/arc_generator.h"
 #include "core/geometry/tolerance.h"
+#include "core/io/input_face.h"
 #include "core/region/block.h"
 #include "core/region/region_cut.h"
 #include "core/region/region_reward.h"
@@ -102,4 +106,54 @@ TEST_CASE("region lookahead on general faces: candidates as the engine scores th
   }
   CHECK(candidates > 200);
   CHECK(with_vertex > 100);
+}
+
+TEST_CASE("region lookahead with the taper charge, and shortlists that keep the O-grid", "[sac][region]") {
+  const auto lock = lock_general_engine();
+  // Rounded polygons (arcs as chains of side vertices) and their first pieces: blocks their cuts
+  // leave may taper. The charge is the search's (region_reward.h), candidate by candidate.
+  std::mt19937_64 rng(1502);
+  int charged = 0;
+  for (int f = 0; f < 4; ++f) {
+    const ArcFace arc = random_arc_face(rng, ArcKind::RoundedPolygon, 2.0);
+    const Region face = input_face_from_occt(arc.face, arc.name).region;
+    RegionEpisodeOptions options;
+    options.reward = RewardPreset::Mesh;
+    options.rules = mesh_block_rules(face.loops());
+    const double size = face.bbox().longer_side();
+    for (const Region& part : test::face_and_first_pieces(face, 6)) {
+      if (is_block(part, options.rules)) continue;
+      const RegionLookahead plain = region_look_ahead(part, size, options);
+      const RegionLookahead taper = region_look_ahead(part, size, options, true);
+      REQUIRE(plain.candidates.size() == taper.candidates.size());
+      for (size_t k = 0; k < plain.candidates.size(); ++k) {
+        const RegionCandidate& c = plain.candidates[k];
+        const double charge =
+            c.action.kind == RegionAction::Kind::Cut ? pieces_taper_cost(cut_region(part, c.action.cut).pieces, options.rules) : 0.0;
+        CHECK(taper.candidates[k].reward == Approx(c.reward - charge).margin(1e-9));
+        charged += charge > 0.0;
+      }
+    }
+  }
+  INFO("candidates charged for taper: " << charged);
+  CHECK(charged >= 1);
+  // The O-grid (a template on a part with a hole) is in every shortlist, whatever its reward.
+  const Region plate = input_face_from_occt(plate_with_holes(10.0, 6.0, {{5.0, 3.0, 1.5}}), "plate").region;
+  RegionEpisodeOptions options;
+  options.reward = RewardPreset::Mesh;
+  options.rules = mesh_block_rules(plate.loops());
+  const RegionLookahead look = region_look_ahead(plate, 10.0, options);
+  for (const size_t keep : {size_t{1}, size_t{3}}) {
+    const std::vector<size_t> kept = best_candidates(look.candidates, keep);
+    CHECK(std::is_sorted(kept.begin(), kept.end()));
+    size_t always = 0;
+    for (size_t k = 0; k < look.candidates.size(); ++k) {
+      if (!look.candidates[k].always) continue;
+      ++always;
+      CHECK(look.candidates[k].action.kind == RegionAction::Kind::Template);
+      CHECK(std::find(kept.begin(), kept.end(), k) != kept.end());
+    }
+    CHECK(always == 1);
+    CHECK(kept.size() == keep + always);  // the O-grid's reward is far below the cuts'
+  }
 }

@@ -2,6 +2,8 @@
 
 #include <filesystem>
 
+#include "core/common/error.h"
+#include "core/data/general_generator.h"
 #include "core/sac/policy_file.h"
 #include "core/sac/trainer.h"
 #include "support/test_shapes.h"
@@ -16,6 +18,21 @@ TrainingSet generated_set(int count, std::uint64_t seed) {
   options.max_rects = 5;
   for (const GeneratedShape& shape : test::generated_shapes(count, seed, options)) {
     set.faces.push_back(make_grid_face(shape.polygon));
+  }
+  return set;
+}
+
+// count general polygons (5-8 vertices, the fourth with a hole) as regions, seed.
+TrainingSet general_set(int count, std::uint64_t seed) {
+  TrainingSet set;
+  std::mt19937_64 rng(seed);
+  for (int k = 0; k < count; ++k) {
+    GeneralOptions options;
+    options.max_vertices = 8;
+    options.holes = k % 4 == 3;
+    const GeneralShape shape = generate_general_shape(rng, options);
+    set.general.push_back(Region(shape.outer, shape.holes, 1e-5));
+    set.general_names.push_back("general " + std::to_string(k));
   }
   return set;
 }
@@ -93,4 +110,71 @@ TEST_CASE("stopping a run writes a checkpoint it can resume from", "[sac][traini
   const LoadedPolicy loaded = load_policy_file(options.checkpoint_path, true);
   CHECK(loaded.meta["training"]["episodes_done"] == 4);
   CHECK(loaded.agent->serialize_memory().size() > 100);
+}
+
+TEST_CASE("a seeded short training run on general faces improves its test return", "[sac][training][region]") {
+  // Mesh preset, the agent's own actions (train_top_k), evaluated with every action valued.
+  TrainerOptions options;
+  options.episodes = 60;
+  options.seed = 7;
+  options.eval_every = 60;
+  SacConfig config = small_config("lookahead");
+  config.reward = RewardPreset::Mesh;
+  config.deploy_top_k = 0;
+  config.train_top_k = 8;
+  Trainer trainer(config, options, general_set(10, 70), general_set(6, 71));
+  const double before = trainer.evaluate_test();
+  trainer.run({});
+  const double after = trainer.history().back().test_return;
+  INFO("test return before " << before << ", after " << after);
+  CHECK(after > before + 1.0);
+  for (const EpisodeRecord& r : trainer.history()) CHECK(r.shape.rfind("general ", 0) == 0);
+}
+
+TEST_CASE("a run on mixed faces resumed from its checkpoint repeats the uninterrupted run exactly", "[sac][training][region]") {
+  auto mixed = [](std::uint64_t seed) {
+    TrainingSet set = generated_set(3, seed);
+    TrainingSet general = general_set(3, seed + 100);
+    set.general = general.general;
+    set.general_names = general.general_names;
+    return set;
+  };
+  const std::string folder = test::temporary_folder("resume-general");
+  TrainerOptions options;
+  options.seed = 11;
+  options.eval_every = 4;
+  options.checkpoint_every = 4;
+  options.threads = 1;
+  SacConfig config = small_config("lookahead");
+  config.warmup_steps = 10;
+  config.batch_size = 8;
+  options.episodes = 8;
+  Trainer straight(config, options, mixed(80), mixed(81));
+  straight.run({});
+
+  options.episodes = 4;
+  options.checkpoint_path = folder + "/run.checkpoint";
+  Trainer first(config, options, mixed(80), mixed(81));
+  first.run({});
+  options.episodes = 8;
+  Trainer second = Trainer::resume(options.checkpoint_path, options, mixed(80), mixed(81));
+  second.run({});
+  REQUIRE(second.history().size() == straight.history().size());
+  int general = 0;
+  for (size_t k = 0; k < straight.history().size(); ++k) {
+    CHECK(second.history()[k].ret == straight.history()[k].ret);
+    CHECK(second.history()[k].shape == straight.history()[k].shape);
+    general += straight.history()[k].shape.rfind("general ", 0) == 0;
+  }
+  CHECK(general > 0);
+  CHECK(general < 8);
+  CHECK(second.history().back().test_return == straight.history().back().test_return);
+}
+
+TEST_CASE("the paper agent refuses general faces with a clear error", "[sac][training][region]") {
+  TrainerOptions options;
+  options.episodes = 1;
+  CHECK_THROWS_AS(Trainer(small_config("paper"), options, general_set(2, 90), generated_set(2, 91)), InputError);
+  CHECK_THROWS_WITH(Trainer(small_config("paper"), options, generated_set(2, 90), general_set(2, 91)),
+                    Catch::Matchers::Contains("train the lookahead agent"));
 }
