@@ -205,7 +205,7 @@ RegionStateOptions LookaheadAgent::region_state_options(double face_size, const 
   options.episode.rules = rules;
   options.episode.face_rules = false;
   options.face_size = face_size;
-  options.taper = config_.reward == RewardPreset::Mesh;  // the search's ranking (region_search.h)
+  options.taper = config_.region_taper && config_.reward == RewardPreset::Mesh;
   return options;
 }
 

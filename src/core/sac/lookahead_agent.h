@@ -56,9 +56,9 @@
 // acted on by softmax(Q / alpha) (uniform among them in the warm-up), and remembered parts are
 // revisited with the soft Bellman target over those actions. The deployed policy on general faces is
 // RegionLookaheadPolicy (region_lookahead_policy.h). Rewards and blocks follow the agent's preset and
-// the face's rules (mesh_block_rules under the mesh preset); under the mesh preset a candidate's
-// reward is less the taper charge of the blocks it leaves (region_reward.h), as the search ranks and
-// values cuts, so that W learns the value the search computes. On a rectilinear part no block tapers. Augmentation: a remembered general part
+// the face's rules (mesh_block_rules under the mesh preset); with region_taper (sac_config.h) and the
+// mesh preset a candidate's reward is less the taper charge of the blocks it leaves (region_reward.h),
+// as the search ranks and values cuts. Augmentation: a remembered general part
 // is shown turned by a random angle and mirrored at random (region_symmetry.h), with its face's size
 // and rules kept: candidates, rewards and blocks do not depend on the frame, so its target holds for
 // every view (the face's bounding box, which a turn changes, only sets the scale, and the scale is

@@ -77,6 +77,7 @@ nlohmann::json sac_config_json(const SacConfig& c) {
           {"deploy_views", c.deploy_views},
           {"deploy_top_k", c.deploy_top_k},
           {"train_top_k", c.train_top_k},
+          {"region_taper", c.region_taper},
           {"polyak", c.polyak},
           {"target_update_every", c.target_update_every},
           {"direction_target_entropy", c.direction_target_entropy},
@@ -119,6 +120,7 @@ SacConfig sac_config_from_json(const nlohmann::json& j) {
     if (c.deploy_top_k < 0) throw InputError("deploy_top_k must be >= 0");
     c.train_top_k = j.value("train_top_k", 12);  // files written before it learned on grid faces only
     if (c.train_top_k < 0) throw InputError("train_top_k must be >= 0");
+    c.region_taper = j.value("region_taper", false);
     c.polyak = j.at("polyak").get<double>();
     c.target_update_every = j.at("target_update_every").get<int>();
     c.direction_target_entropy = j.at("direction_target_entropy").get<double>();

@@ -47,6 +47,9 @@ struct SacConfig {
   int train_top_k = 12;                 // lookahead, trained on general faces (issue 12): the
                                         // actions of a part are its k candidates with the best
                                         // reward (region_lookahead.h best_candidates); 0: every one
+  bool region_taper = false;            // lookahead, general faces, mesh preset: candidates' rewards
+                                        // less the search's taper charge (region_reward.h), trained
+                                        // and deployed (false: the reward itself; files without it)
   double polyak = 0.01;                 // paper: target networks move this fraction per update
   int target_update_every = 25;         // lookahead: the target network is copied every so many updates
   double direction_target_entropy = 0.3;     // nats; ln 2 = 0.69 is the maximum for 2 directions

@@ -8,6 +8,7 @@
 #include "core/region/region_symmetry.h"
 #include "core/sac/lookahead_agent.h"
 #include "core/sac/region_lookahead.h"
+#include "core/sac/sac_config.h"
 #include "support/test_shapes.h"
 
 using namespace autoblock;
@@ -137,4 +138,20 @@ TEST_CASE("a training episode on a general face ends in blocks and remembers its
   CHECK_THROWS_AS(paper->train_region_episode(face, rng, 0), InputError);
   CHECK(paper->deployed_region_policy("x") == nullptr);
   CHECK(agent->deployed_region_policy("x") != nullptr);
+}
+
+TEST_CASE("region_taper: off by default and in files without it; on, the agent's general states carry the charge",
+          "[sac][lookahead][region][config]") {
+  SacConfig config = mesh_config();
+  CHECK_FALSE(config.region_taper);
+  nlohmann::json j = sac_config_json(config);
+  j.erase("region_taper");
+  CHECK_FALSE(sac_config_from_json(j).region_taper);
+  config = with_settings(config, {"region_taper=true"});
+  CHECK(sac_config_from_json(sac_config_json(config)).region_taper);
+  auto agent = std::make_shared<LookaheadAgent>(config);
+  CHECK(agent->region_state_options(10.0, BlockRules{}).taper);
+  config.reward = RewardPreset::Paper;  // the charge is the mesh preset's
+  CHECK_FALSE(std::make_shared<LookaheadAgent>(config)->region_state_options(10.0, BlockRules{}).taper);
+  CHECK_FALSE(std::make_shared<LookaheadAgent>(mesh_config())->region_state_options(10.0, BlockRules{}).taper);
 }
