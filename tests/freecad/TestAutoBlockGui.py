@@ -703,7 +703,11 @@ class TestStepThroughPanel(GuiTestCase):
                 self.assertIn("template", words)
                 continue
             self.assertIn("{} cut at".format(cut.kind), words)
-            self.assertIn("faces with edges at other angles", step_through.plain_text(form.scoresLabel.text()))
+            # The value scores of auto's learned fallback (sac-mesh), one per vertex, as on a rectilinear face.
+            scores = [x for x in cut.scores if x is not None]
+            self.assertEqual(len(cut.scores), len(cut.vertices))
+            self.assertTrue(scores)
+            self.assertIn("highest {:.3f}".format(max(scores)), step_through.plain_text(form.scoresLabel.text()))
             # The red line is the cut's chords, at their angle: one 2-point polyline per chord.
             red = []
             for material in self.scene_nodes_of_type(panel.scene.content, "SoMaterial"):
