@@ -14,7 +14,6 @@
 #include "core/sac/lookahead_agent.h"
 #include "core/sac/policy_file.h"
 #include "core/region/region_search.h"
-#include "core/sac/region_lookahead_policy.h"
 #include "core/sac/sac_config.h"
 #include "core/sac/trainer.h"
 #include "core/sac/training_curves.h"
@@ -34,12 +33,7 @@ class AgentPolicy : public LearnedPolicy {
     return agent_->deployed_region_policy(name);
   }
   std::vector<float> region_vertex_scores(const RegionEpisode& episode) override {
-    auto lookahead = std::dynamic_pointer_cast<LookaheadAgent>(agent_);
-    if (!lookahead) {
-      throw InputError("the paper's agent has no value scores on faces with edges at other angles: its policy works on "
-                       "rectilinear faces only");
-    }
-    return RegionLookaheadPolicy(std::move(lookahead), "").vertex_scores(episode);
+    return agent_->region_vertex_scores(episode);
   }
 
  private:

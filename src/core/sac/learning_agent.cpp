@@ -14,6 +14,11 @@ EpisodeRecord LearningAgent::train_region_episode(const Region&, std::mt19937_64
 
 std::unique_ptr<RegionPolicy> LearningAgent::deployed_region_policy(const std::string&) { return nullptr; }
 
+std::vector<float> LearningAgent::region_vertex_scores(const RegionEpisode&) {
+  throw InputError("the paper's agent has no value scores on faces with edges at other angles: its policy works on "
+                   "rectilinear faces only");
+}
+
 std::shared_ptr<LearningAgent> make_learning_agent(const SacConfig& config) {
   if (config.agent == "paper") return std::make_shared<PaperAgent>(config);
   if (config.agent == "lookahead") return std::make_shared<LookaheadAgent>(config);

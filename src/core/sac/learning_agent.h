@@ -19,6 +19,7 @@
 
 namespace autoblock {
 
+class RegionEpisode;
 class RegionPolicy;
 
 // Agents live in shared pointers (make_learning_agent): their deployed policies share them.
@@ -44,6 +45,9 @@ class LearningAgent : public std::enable_shared_from_this<LearningAgent> {
   virtual std::unique_ptr<RegionPolicy> deployed_region_policy(const std::string& name);
   // The value network's score at every model vertex of the episode's current part.
   virtual std::vector<float> vertex_scores(const Episode& episode) = 0;
+  // The same on a general face's episode (the deployed region policy's shortlist; the caller holds
+  // lock_general_engine()). The default throws InputError: the agent has no policy on general faces.
+  virtual std::vector<float> region_vertex_scores(const RegionEpisode& episode);
 
   // Inputs: archive; training, true for a checkpoint (target networks, optimisers, counters).
   virtual void save(torch::serialize::OutputArchive& archive, bool training) const = 0;

@@ -36,6 +36,14 @@ double softmax_entropy(const std::vector<double>& q, double alpha) {
   return h;
 }
 
+// An index drawn from softmax(q / alpha): the maximum-entropy policy's action in training.
+size_t sample_softmax(const std::vector<double>& q, double alpha, std::mt19937_64& rng) {
+  const double top = *std::max_element(q.begin(), q.end());
+  std::vector<double> weights;
+  for (double v : q) weights.push_back(std::exp((v - top) / alpha));
+  return static_cast<size_t>(std::discrete_distribution<int>(weights.begin(), weights.end())(rng));
+}
+
 double soft_maximum(const std::vector<double>& q, double alpha) {
   const double top = *std::max_element(q.begin(), q.end());
   double z = 0.0;
@@ -370,12 +378,7 @@ EpisodeRecord LookaheadAgent::train_region_episode(const Region& face, std::mt19
     if (steps_ < config_.warmup_steps) {
       chosen = actions[std::uniform_int_distribution<size_t>(0, actions.size() - 1)(rng)];
     } else {
-      const std::vector<double> q = region_action_values(*state, actions, face_size, rules);
-      const double alpha = temperature();
-      const double top = *std::max_element(q.begin(), q.end());
-      std::vector<double> weights;
-      for (double v : q) weights.push_back(std::exp((v - top) / alpha));
-      chosen = actions[static_cast<size_t>(std::discrete_distribution<int>(weights.begin(), weights.end())(rng))];
+      chosen = actions[sample_softmax(region_action_values(*state, actions, face_size, rules), temperature(), rng)];
     }
     const double angle = std::uniform_real_distribution<double>(0.0, 2.0 * M_PI)(rng);
     const bool mirror = std::uniform_int_distribution<int>(0, 1)(rng) == 1;
@@ -399,6 +402,10 @@ std::unique_ptr<RegionPolicy> LookaheadAgent::deployed_region_policy(const std::
   return std::make_unique<RegionLookaheadPolicy>(std::static_pointer_cast<LookaheadAgent>(shared_from_this()), name);
 }
 
+std::vector<float> LookaheadAgent::region_vertex_scores(const RegionEpisode& episode) {
+  return RegionLookaheadPolicy(std::static_pointer_cast<LookaheadAgent>(shared_from_this()), "").vertex_scores(episode);
+}
+
 EpisodeRecord LookaheadAgent::train_episode(const GridFace& face, std::mt19937_64& rng, int max_steps) {
   EpisodeOptions options;
   options.reward = config_.reward;
@@ -412,12 +419,7 @@ EpisodeRecord LookaheadAgent::train_episode(const GridFace& face, std::mt19937_6
     if (steps_ < config_.warmup_steps) {
       chosen = std::uniform_int_distribution<size_t>(0, state->lines.size() - 1)(rng);
     } else {
-      const std::vector<double> q = cut_values(*state, face.size);
-      const double alpha = temperature();
-      const double top = *std::max_element(q.begin(), q.end());
-      std::vector<double> weights;
-      for (double v : q) weights.push_back(std::exp((v - top) / alpha));
-      chosen = static_cast<size_t>(std::discrete_distribution<int>(weights.begin(), weights.end())(rng));
+      chosen = sample_softmax(cut_values(*state, face.size), temperature(), rng);
     }
     remember(episode.current_part(), face.size, std::uniform_int_distribution<int>(0, 7)(rng));
     const LineCandidate& line = state->lines[chosen];

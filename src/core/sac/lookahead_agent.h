@@ -124,6 +124,7 @@ class LookaheadAgent : public LearningAgent {
   EpisodeRecord train_episode(const GridFace& face, std::mt19937_64& rng, int max_steps) override;
   EpisodeRecord train_region_episode(const Region& face, std::mt19937_64& rng, int max_steps) override;
   std::unique_ptr<RegionPolicy> deployed_region_policy(const std::string& name) override;
+  std::vector<float> region_vertex_scores(const RegionEpisode& episode) override;
   void set_training_progress(double fraction) override;
   std::unique_ptr<Policy> deployed_policy(const std::string& name) override;
   std::vector<float> vertex_scores(const Episode& episode) override;

@@ -82,7 +82,9 @@ std::vector<float> RegionLookaheadPolicy::vertex_scores(const RegionEpisode& epi
   const std::vector<double> q = values_of(*state, which, episode.options(), episode.face_size());
   for (size_t k = 0; k < which.size(); ++k) {
     const int v = state->candidates[which[k]].vertex;
-    if (v >= 0 && static_cast<size_t>(v) < scores.size()) scores[static_cast<size_t>(v)] = std::max(scores[static_cast<size_t>(v)], static_cast<float>(q[k]));
+    if (v < 0 || static_cast<size_t>(v) >= scores.size()) continue;  // from an edge's midpoint, or a template
+    float& score = scores[static_cast<size_t>(v)];
+    score = std::max(score, static_cast<float>(q[k]));
   }
   return scores;
 }

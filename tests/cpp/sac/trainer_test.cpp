@@ -1,6 +1,7 @@
 #include "support/catch_torch.h"
 
 #include <filesystem>
+#include <functional>
 
 #include "core/common/error.h"
 #include "core/data/general_generator.h"
@@ -44,6 +45,36 @@ SacConfig small_config(const std::string& agent) {
   return config;
 }
 
+// Runs `episodes` episodes straight, and the same run stopped at half-way and resumed from its
+// checkpoint (in folder); checks that the two histories and final test returns are equal. Output: the
+// straight run's history.
+std::vector<EpisodeRecord> check_resume_repeats(const SacConfig& config, TrainerOptions options, int episodes,
+                                                const std::function<TrainingSet(std::uint64_t)>& set,
+                                                const std::string& folder) {
+  options.episodes = episodes;
+  options.checkpoint_path.clear();
+  Trainer straight(config, options, set(0), set(1));
+  straight.run({});
+
+  options.episodes = episodes / 2;
+  options.checkpoint_path = folder + "/run.checkpoint";
+  Trainer first(config, options, set(0), set(1));
+  first.run({});
+  REQUIRE(std::filesystem::exists(options.checkpoint_path));
+  options.episodes = episodes;
+  Trainer second = Trainer::resume(options.checkpoint_path, options, set(0), set(1));
+  CHECK(second.episodes_done() == episodes / 2);
+  second.run({});
+
+  REQUIRE(second.history().size() == straight.history().size());
+  for (size_t k = 0; k < straight.history().size(); ++k) {
+    CHECK(second.history()[k].ret == straight.history()[k].ret);
+    CHECK(second.history()[k].shape == straight.history()[k].shape);
+  }
+  CHECK(second.history().back().test_return == straight.history().back().test_return);
+  return straight.history();
+}
+
 }  // namespace
 
 TEST_CASE("a seeded short training run improves its test return", "[sac][training]") {
@@ -65,34 +96,14 @@ TEST_CASE("a seeded short training run improves its test return", "[sac][trainin
 
 TEST_CASE("a run resumed from its checkpoint repeats the uninterrupted run exactly", "[sac][training]") {
   for (const std::string kind : {"paper", "lookahead"}) {
-  INFO(kind);
-  const std::string folder = test::temporary_folder("resume");
-  TrainerOptions options;
-  options.seed = 9;
-  options.eval_every = 3;
-  options.checkpoint_every = 3;
-  options.threads = 1;
-
-  options.episodes = 6;
-  Trainer straight(small_config(kind), options, generated_set(5, 60), generated_set(3, 61));
-  straight.run({});
-
-  options.episodes = 3;
-  options.checkpoint_path = folder + "/run.checkpoint";
-  Trainer first(small_config(kind), options, generated_set(5, 60), generated_set(3, 61));
-  first.run({});
-  REQUIRE(std::filesystem::exists(options.checkpoint_path));
-  options.episodes = 6;
-  Trainer second = Trainer::resume(options.checkpoint_path, options, generated_set(5, 60), generated_set(3, 61));
-  CHECK(second.episodes_done() == 3);
-  second.run({});
-
-  REQUIRE(second.history().size() == straight.history().size());
-  for (size_t k = 0; k < straight.history().size(); ++k) {
-    CHECK(second.history()[k].ret == straight.history()[k].ret);
-    CHECK(second.history()[k].shape == straight.history()[k].shape);
-  }
-  CHECK(second.history().back().test_return == straight.history().back().test_return);
+    INFO(kind);
+    TrainerOptions options;
+    options.seed = 9;
+    options.eval_every = 3;
+    options.checkpoint_every = 3;
+    options.threads = 1;
+    check_resume_repeats(small_config(kind), options, 6, [](std::uint64_t k) { return generated_set(k ? 3 : 5, 60 + k); },
+                         test::temporary_folder("resume"));
   }
 }
 
@@ -139,7 +150,6 @@ TEST_CASE("a run on mixed faces resumed from its checkpoint repeats the uninterr
     set.general_names = general.general_names;
     return set;
   };
-  const std::string folder = test::temporary_folder("resume-general");
   TrainerOptions options;
   options.seed = 11;
   options.eval_every = 4;
@@ -148,27 +158,12 @@ TEST_CASE("a run on mixed faces resumed from its checkpoint repeats the uninterr
   SacConfig config = small_config("lookahead");
   config.warmup_steps = 10;
   config.batch_size = 8;
-  options.episodes = 8;
-  Trainer straight(config, options, mixed(80), mixed(81));
-  straight.run({});
-
-  options.episodes = 4;
-  options.checkpoint_path = folder + "/run.checkpoint";
-  Trainer first(config, options, mixed(80), mixed(81));
-  first.run({});
-  options.episodes = 8;
-  Trainer second = Trainer::resume(options.checkpoint_path, options, mixed(80), mixed(81));
-  second.run({});
-  REQUIRE(second.history().size() == straight.history().size());
+  const std::vector<EpisodeRecord> history = check_resume_repeats(
+      config, options, 8, [&](std::uint64_t k) { return mixed(80 + k); }, test::temporary_folder("resume-general"));
   int general = 0;
-  for (size_t k = 0; k < straight.history().size(); ++k) {
-    CHECK(second.history()[k].ret == straight.history()[k].ret);
-    CHECK(second.history()[k].shape == straight.history()[k].shape);
-    general += straight.history()[k].shape.rfind("general ", 0) == 0;
-  }
+  for (const EpisodeRecord& r : history) general += r.shape.rfind("general ", 0) == 0;
   CHECK(general > 0);
   CHECK(general < 8);
-  CHECK(second.history().back().test_return == straight.history().back().test_return);
 }
 
 TEST_CASE("the paper agent refuses general faces with a clear error", "[sac][training][region]") {
