@@ -44,10 +44,12 @@ class TrainingRequest:
     lookahead agent) for training and for testing. episodes (the total, counting those before a
     resume), seed, reward (preset: "paper" or "mesh"), output (the policy file; its checkpoint, CSV log and
     curves go next to it), resume (continue from the output's checkpoint), threads (0: all cores),
-    eval_every (episodes between test evaluations and checkpoints), agent ("lookahead" or "paper")."""
+    eval_every (episodes between test evaluations and checkpoints), agent ("lookahead" or "paper"), init (a
+    fresh run starting from this policy's weights: a shipped name such as "sac-mesh" or a policy file)."""
 
     def __init__(self, output, train_folder=None, train_generate=None, test_folder=None, test_generate=None,
-                 episodes=1500, seed=0, reward="paper", resume=False, threads=0, eval_every=25, agent="lookahead"):
+                 episodes=1500, seed=0, reward="paper", resume=False, threads=0, eval_every=25, agent="lookahead",
+                 init=None):
         self.output = output
         self.train_folder = train_folder
         self.train_generate = train_generate
@@ -60,6 +62,7 @@ class TrainingRequest:
         self.threads = int(threads)
         self.eval_every = int(eval_every)
         self.agent = agent
+        self.init = init or None
 
     def __repr__(self):
         fields = ["{!r}".format(self.output)]
@@ -75,6 +78,8 @@ class TrainingRequest:
             fields.append("eval_every={}".format(self.eval_every))
         if self.agent != "lookahead":
             fields.append("agent={!r}".format(self.agent))
+        if self.init:
+            fields.append("init={!r}".format(self.init))
         return "AutoBlock.TrainingRequest({})".format(", ".join(fields))
 
     @property
@@ -101,9 +106,6 @@ class TrainingRequest:
                 counts = [int(generate.get(key, 0)) for key in ("count", "general", "arcs")]
                 if min(counts) < 0 or sum(counts) < 1:
                     problems.append("{} data: generate at least one shape".format(name))
-                if self.agent == "paper" and sum(counts[1:]) > 0:
-                    problems.append("{} data: the paper agent learns on rectilinear faces only; general faces and "
-                                    "faces with arcs need the lookahead agent".format(name))
                 if int(generate.get("min_rects", 2)) > int(generate.get("max_rects", 10)):
                     problems.append("{} data: minimum rectangles above the maximum".format(name))
             else:
@@ -116,6 +118,8 @@ class TrainingRequest:
             problems.append("unknown reward preset {!r} (expected paper or mesh)".format(self.reward))
         if self.resume and not os.path.exists(self.checkpoint):
             problems.append("nothing to resume: {} does not exist".format(self.checkpoint))
+        if self.resume and self.init:
+            problems.append("an initial policy starts a fresh run: a resumed run keeps its checkpoint's networks")
         if problems:
             raise ValueError("; ".join(problems))
 
@@ -127,6 +131,7 @@ class TrainingRequest:
             "test_folder": self.test_folder or "", "test_generate": dict(self.test_generate or {}),
             "episodes": self.episodes, "seed": self.seed, "reward": self.reward,
             "threads": self.threads or (os.cpu_count() or 1), "eval_every": self.eval_every, "agent": self.agent,
+            "init": self.init or "",
         }
 
 

@@ -5,9 +5,10 @@
 // each face under the mesh preset (one thread; the search with its default width and 2 s budget),
 // and its decomposition is meshed once at the default size (no tries: the decomposition's own
 // quality; a decomposition the mesher refuses counts as not meshed, its quality 0). A learned policy is a lookahead agent's value network (a shipped name or a policy file)
-// deployed by RegionLookaheadPolicy with the file's deploy_top_k. Reported per policy: mean minimum
-// scaled Jacobian over the face's bound, mean blocks (and templates), median and mean decomposition
-// time.
+// deployed by RegionLookaheadPolicy with the file's deploy_top_k (NAME#K: with K instead; NAME+taper: deployed with region_taper). --budget S
+// adds the search with a time limit of S seconds per face (repeatable: quality against time budget).
+// Reported per policy: mean minimum scaled Jacobian over the face's bound, mean blocks, median and
+// mean decomposition time, and how many faces ran out of time (the search finishes those greedily).
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -36,15 +37,21 @@ namespace {
 struct Row {
   std::string name;
   std::shared_ptr<LookaheadAgent> agent;  // null: a baseline
+  double time_limit = 2.0;                // the search's budget per face
   std::vector<double> ratio, seconds, blocks;
   int unmeshed = 0;  // decompositions the mesher refused
+  int capped = 0;    // decompositions that ran out of time
 };
 
 std::unique_ptr<RegionPolicy> make_policy(const Row& row) {
   if (row.agent) return std::make_unique<RegionLookaheadPolicy>(row.agent, row.name);
   if (row.name == "greedy") return std::make_unique<RegionGreedyPolicy>();
-  return std::make_unique<RegionSearchPolicy>();
+  RegionSearchOptions options;
+  options.time_limit = row.time_limit;
+  return std::make_unique<RegionSearchPolicy>(options);
 }
+
+std::string per_face_csv;  // --per-face: every face's ratio, blocks and time per policy
 
 void table(const std::string& title, const std::vector<InputFace>& faces, std::vector<Row> rows) {
   RegionEpisodeOptions episode;
@@ -59,6 +66,7 @@ void table(const std::string& title, const std::vector<InputFace>& faces, std::v
         d = decompose_region(face.region, *policy, episode);
       }
       row.seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      if (policy->time_capped()) ++row.capped;
       MeshOptions options;
       options.general = episode;
       row.blocks.push_back(static_cast<double>(d.finished.size()));
@@ -71,18 +79,29 @@ void table(const std::string& title, const std::vector<InputFace>& faces, std::v
       }
     }
   }
+  if (!per_face_csv.empty()) {
+    std::FILE* out = std::fopen(per_face_csv.c_str(), "a");
+    if (!out) throw std::runtime_error("cannot write " + per_face_csv);
+    for (size_t f = 0; f < faces.size(); ++f) {
+      for (const Row& row : rows) {
+        std::fprintf(out, "\"%s\",%zu,\"%s\",%.6f,%.0f,%.6f\n", title.c_str(), f, row.name.c_str(), row.ratio[f],
+                     row.blocks[f], row.seconds[f]);
+      }
+    }
+    std::fclose(out);
+  }
   std::printf("\n### %s (%zu faces)\n\n", title.c_str(), faces.size());
-  std::printf("| policy | meshed | mean min SJ / bound (0 if not meshed) | mean blocks | median ms | mean ms |\n"
-              "|---|---:|---:|---:|---:|---:|\n");
+  std::printf("| policy | meshed | mean min SJ / bound (0 if not meshed) | mean blocks | median ms | mean ms | out of time |\n"
+              "|---|---:|---:|---:|---:|---:|---:|\n");
   for (const Row& row : rows) {
     auto mean = [](const std::vector<double>& v) {
       double s = 0.0;
       for (const double x : v) s += x;
       return v.empty() ? 0.0 : s / static_cast<double>(v.size());
     };
-    std::printf("| %s | %zu/%zu | %.4f | %.2f | %.1f | %.1f |\n", row.name.c_str(), row.ratio.size() - row.unmeshed,
+    std::printf("| %s | %zu/%zu | %.4f | %.2f | %.1f | %.1f | %d |\n", row.name.c_str(), row.ratio.size() - row.unmeshed,
                 row.ratio.size(), mean(row.ratio), mean(row.blocks),
-                1e3 * bench::quantile(row.seconds, 0.5), 1e3 * mean(row.seconds));
+                1e3 * bench::quantile(row.seconds, 0.5), 1e3 * mean(row.seconds), row.capped);
   }
   std::fflush(stdout);
 }
@@ -122,23 +141,39 @@ int main(int argc, char** argv) {
   std::vector<std::string> learned{"sac-mesh"};
   int small = 200, large = 100, arcs = 0;
   std::uint64_t seed = 20261205;
-  app.add_option("--policy", learned, "lookahead policies (shipped names or files), repeatable")->capture_default_str();
+  std::vector<double> budgets;
+  app.add_option("--policy", learned, "lookahead policies (shipped names or files; NAME#K values the K best cuts; NAME+taper charges the search's taper), repeatable")
+      ->capture_default_str();
+  app.add_option("--budget", budgets, "also the search with this time limit per face, in seconds (repeatable)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--small", small, "fresh polygons of 5-12 vertices")->capture_default_str();
   app.add_option("--large", large, "fresh polygons of 13-40 vertices")->capture_default_str();
   app.add_option("--arcs", arcs, "fresh faces with circular arcs (fillets, holes, slots, rounded polygons)")
       ->capture_default_str();
+  app.add_option("--per-face", per_face_csv, "append every face's figures to this CSV (set, face, policy, ratio, blocks, seconds)");
   app.add_option("--seed", seed, "generator seed (13-40: seed + 1, arcs: seed + 2)")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
     set_compute_threads(1);
-    std::vector<Row> rows{{"greedy", nullptr, {}, {}, {}, 0}, {"search", nullptr, {}, {}, {}, 0}};
-    for (const std::string& name : learned) {
+    std::vector<Row> rows{{"greedy"}, {"search"}};
+    for (const double budget : budgets) {
+      char name[64];
+      std::snprintf(name, sizeof name, "search, %g s", budget);
+      rows.push_back({name, nullptr, budget});
+    }
+    for (const std::string& spec : learned) {
+      const bool taper = spec.size() > 6 && spec.compare(spec.size() - 6, 6, "+taper") == 0;
+      const std::string base = taper ? spec.substr(0, spec.size() - 6) : spec;
+      const size_t hash = base.rfind('#');
+      const std::string name = hash == std::string::npos ? base : base.substr(0, hash);
       const std::string path =
           std::filesystem::exists(name) ? name : models_folder() + "/policies/" + name + ".pt";
       LoadedPolicy loaded = load_policy_file(path, false);
       auto agent = std::dynamic_pointer_cast<LookaheadAgent>(loaded.agent);
       if (!agent) throw std::runtime_error(name + " is not a lookahead agent's policy");
-      rows.push_back({name, agent, {}, {}, {}, 0});
+      if (hash != std::string::npos) agent->set_deploy_top_k(std::stoi(base.substr(hash + 1)));
+      if (taper) agent->set_region_taper(true);
+      rows.push_back({spec, agent});
     }
     if (small > 0) table("polygons of 5-12 vertices, a quarter with holes, seed " + std::to_string(seed), fresh_faces(small, 5, 12, seed), rows);
     if (large > 0) {

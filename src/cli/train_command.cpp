@@ -1,5 +1,5 @@
 // autoblock train --train DIR --test DIR [--episodes N] [--seed S] [--out POLICY]
-//                 [--resume CHECKPOINT] [--threads T] [--reward paper|mesh] ...
+//                 [--resume CHECKPOINT | --init POLICY] [--threads T] [--reward paper|mesh] ...
 // The training job of core/api (training_job.h) with a terminal around it: a progress bar, Ctrl-C.
 #include <algorithm>
 #include <atomic>
@@ -29,7 +29,7 @@ std::string sibling(const std::string& path, const std::string& suffix) {
 
 void add_train_command(CLI::App& app) {
   struct Arguments {
-    std::string train, test, out = "policy.pt", resume, checkpoint, log, curves;
+    std::string train, test, out = "policy.pt", resume, init, checkpoint, log, curves;
     std::string agent = "lookahead", reward = "paper", value_network, bootstrap = "graph";
     int episodes = 1500, threads = 2, eval_every = 25, batch_size = 0, views = 0;
     double lr_final = 0.0, average = -1.0;
@@ -46,6 +46,9 @@ void add_train_command(CLI::App& app) {
   command->add_option("--seed", args->seed, "seed (with one thread a seeded run repeats exactly)")->capture_default_str();
   command->add_option("--out", args->out, "the trained policy file")->capture_default_str();
   command->add_option("--resume", args->resume, "continue the run saved in this checkpoint");
+  command->add_option("--init", args->init,
+                      "a fresh run starting from this policy's weights (a shipped name such as sac-mesh, or a file; "
+                      "the same agent and value network)");
   command->add_option("--threads", args->threads, "threads for the networks' arithmetic")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
@@ -95,6 +98,7 @@ void add_train_command(CLI::App& app) {
     job.checkpoint = args->checkpoint;
     job.resume = !args->resume.empty();
     if (job.resume) job.checkpoint = args->resume;
+    job.init = args->init;
     job.train_folder = args->train;
     job.test_folder = args->test;
     job.episodes = args->episodes;

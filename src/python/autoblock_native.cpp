@@ -681,6 +681,7 @@ py::dict train_py(const py::dict& options, const py::object& progress) {
   job.output = option<std::string>(options, "output", "");
   job.checkpoint = option<std::string>(options, "checkpoint", "");
   job.resume = option<bool>(options, "resume", false);
+  job.init = option<std::string>(options, "init", "");
   job.train_folder = option<std::string>(options, "train_folder", "");
   job.test_folder = option<std::string>(options, "test_folder", "");
   if (options.contains("train_generate")) job.train_generate = generated_of(options["train_generate"].cast<py::dict>());

@@ -1318,15 +1318,24 @@ class TestTraining(unittest.TestCase):
                 (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), episodes=0, **data), "at least 1"),
                 (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), reward="nope", **data), "unknown reward"),
                 (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), resume=True, **data), "nothing to resume"),
+                (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), resume=True, init="sac-mesh", **data),
+                 "starts a fresh run"),
                 (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), train_generate={"count": 0, "general": 0},
                                            test_folder=support.SAMPLES), "at least one shape"),
-                (AutoBlock.TrainingRequest(os.path.join(folder, "p.pt"), train_generate={"count": 2, "arcs": 1},
-                                           test_folder=support.SAMPLES, agent="paper"), "lookahead agent"),
             ]
             for request, words in cases:
                 with self.subTest(words=words):
                     with self.assertRaisesRegex(ValueError, words):
                         request.validate()
+            # A warm start: its repr keeps it; the core refuses another agent kind's policy.
+            warm = AutoBlock.TrainingRequest(os.path.join(folder, "w.pt"), init="sac-faithful", episodes=1,
+                                             train_generate={"count": 2, "max_rects": 3, "seed": 1},
+                                             test_generate={"count": 1, "max_rects": 3, "seed": 2})
+            warm.validate()
+            self.assertEqual(eval(repr(warm), {"AutoBlock": AutoBlock}).to_options(), warm.to_options())
+            with self.assertRaisesRegex(ValueError, "paper agent's"):
+                AutoBlock.train(warm)
+            self.assertFalse(os.path.exists(os.path.join(folder, "w.pt")))
         finally:
             support.remove_folder(folder)
 
@@ -1406,7 +1415,8 @@ class TestTraining(unittest.TestCase):
 
     def test_training_on_general_faces(self):
         """Issue 12: generated general faces and faces with arcs train the lookahead agent, whose policy then
-        decomposes a general face; the paper agent refuses them with a ValueError."""
+        decomposes a general face; and the paper's agent, with its continuous angle; a policy of the paper's
+        agent written before that (sac-faithful) refuses general faces with a ValueError."""
         folder = support.temporary_folder()
         try:
             output = os.path.join(folder, "general.pt")
@@ -1427,15 +1437,16 @@ class TestTraining(unittest.TestCase):
             self.assertTrue(decomposition.complete)
             self.assertGreaterEqual(decomposition.n_blocks, 1)
             paper = AutoBlock.TrainingRequest(os.path.join(folder, "paper.pt"),
-                                              train_generate={"count": 0, "general": 2, "seed": 4},
-                                              test_generate={"count": 1, "seed": 5}, episodes=2, agent="paper")
-            with self.assertRaisesRegex(ValueError, "lookahead agent"):
-                AutoBlock.train(paper, events.append)
-            paper_to_core = AutoBlock.TrainingRequest(os.path.join(folder, "paper.pt"), train_folder=support.SAMPLES,
-                                                      test_generate={"count": 0, "general": 1, "seed": 5}, episodes=2,
-                                                      agent="paper")
-            with self.assertRaisesRegex(ValueError, "lookahead agent"):
-                AutoBlock.train(paper_to_core, events.append)
+                                              train_generate={"count": 1, "general": 2, "seed": 4},
+                                              test_generate={"count": 0, "general": 1, "seed": 5}, episodes=3,
+                                              agent="paper", reward="mesh")
+            paper.validate()
+            self.assertFalse(AutoBlock.train(paper)["cancelled"])
+            decomposition = AutoBlock.decompose(hexagon, policy=paper.output)
+            self.assertTrue(decomposition.complete)
+            self.assertGreaterEqual(decomposition.n_blocks, 1)
+            with self.assertRaisesRegex(ValueError, "before"):
+                AutoBlock.decompose(hexagon, policy="sac-faithful")
         finally:
             support.remove_folder(folder)
 

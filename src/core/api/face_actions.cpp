@@ -67,9 +67,9 @@ std::unique_ptr<RegionPolicy> general_policy(const std::string& name, const Poli
     const std::shared_ptr<LearnedPolicy> learned = learned_general_policy(name);
     std::unique_ptr<RegionPolicy> policy = learned->deployed_region_policy(name);
     if (!policy) {
-      throw InputError("the policy '" + name + "' (the paper's agent) works on faces whose edges run along two "
-                       "perpendicular directions; this face has edges at other angles: use one of " + list +
-                       " or a lookahead agent's policy (sac-mesh, sac-paper)");
+      throw InputError("the policy '" + name + "' (the paper's agent, trained before it learned on general faces) "
+                       "works on faces whose edges run along two perpendicular directions; this face has edges at "
+                       "other angles: use one of " + list + " or a policy trained since (sac-mesh, sac-paper)");
     }
     if (own_reward) *own_reward = learned->reward();
     return policy;

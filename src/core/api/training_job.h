@@ -34,6 +34,8 @@ struct TrainingJob {
   std::string output;            // the policy file written when the run completes
   std::string checkpoint;        // empty: output + ".checkpoint"
   bool resume = false;           // continue the run saved in the checkpoint
+  std::string init;              // a fresh run starting from this policy's weights (a shipped name or
+                                 // a file; the same agent kind and value network), not from random ones
   std::string train_folder;      // a folder of .brep/.step faces, or
   GeneratedSet train_generate;   // generated shapes (count > 0)
   std::string test_folder;
@@ -95,7 +97,8 @@ TrainingSet load_training_set(const std::string& folder, const GeneratedSet& gen
 
 // Inputs:  job; callbacks.
 // Outputs: what the run did and wrote. Loads the learned-policy runtime. Throws InputError for bad data or options (a missing output
-//          folder, a missing or foreign checkpoint, an unknown reward preset or agent); exceptions
+//          folder, a missing or foreign checkpoint, an unknown reward preset or agent, an initial
+//          policy of another agent kind or network, or init with resume); exceptions
 //          thrown by the callbacks pass through (after the checkpoint is written).
 TrainingOutcome run_training_job(const TrainingJob& job, const TrainingCallbacks& callbacks);
 

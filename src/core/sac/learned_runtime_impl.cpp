@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "core/api/learned_runtime.h"
+#include "core/api/policy_source.h"
 #include "core/baselines/baseline_policy.h"
 #include "core/common/error.h"
 #include "core/env/decomposition.h"
@@ -151,12 +152,17 @@ TrainingOutcome train(const TrainingJob& job, const TrainingCallbacks& callbacks
                        "(except deploy_views and deploy_top_k)");
     }
   }
+  if (job.resume && !job.init.empty()) {
+    throw InputError("an initial policy starts a fresh run: a resumed run keeps its checkpoint's networks");
+  }
   if (job.resume && !fs::exists(outcome.checkpoint)) {
     throw InputError("nothing to resume: the checkpoint " + outcome.checkpoint + " does not exist");
   }
   // Checked before the data loads (which can take a while).
   SacConfig config;
   if (!job.resume) config = job_config(job);
+  std::shared_ptr<LearningAgent> initial;
+  if (!job.init.empty()) initial = load_policy_file(policy_file_path(job.init), false).agent;
 
   TrainingSet train_set = load_training_set(job.train_folder, job.train_generate, "training");
   TrainingSet test_set = load_training_set(job.test_folder, job.test_generate, "test");
@@ -172,6 +178,7 @@ TrainingOutcome train(const TrainingJob& job, const TrainingCallbacks& callbacks
       job.resume ? std::make_unique<Trainer>(Trainer::resume(outcome.checkpoint, options, std::move(train_set),
                                                              std::move(test_set)))
                  : std::make_unique<Trainer>(config, options, std::move(train_set), std::move(test_set));
+  if (initial) trainer->agent()->copy_weights_from(*initial);
   if (job.resume && !job.settings.empty()) {
     const auto lookahead = std::dynamic_pointer_cast<LookaheadAgent>(trainer->agent());
     if (!lookahead) throw InputError("deploy_views and deploy_top_k apply to the lookahead agent only");
@@ -221,6 +228,7 @@ TrainingOutcome train(const TrainingJob& job, const TrainingCallbacks& callbacks
                     {"seed", job.seed},
                     {"train", set_json(job.train_folder, job.train_generate)},
                     {"test", set_json(job.test_folder, job.test_generate)},
+                    {"init", job.init},
                     {"final_test_return", speed.final_test_return},
                     {"optimal_test_return", outcome.optimal_test_return},
                     {"greedy_test_return", outcome.greedy_test_return},

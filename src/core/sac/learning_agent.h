@@ -52,6 +52,10 @@ class LearningAgent : public std::enable_shared_from_this<LearningAgent> {
   // Inputs: archive; training, true for a checkpoint (target networks, optimisers, counters).
   virtual void save(torch::serialize::OutputArchive& archive, bool training) const = 0;
   virtual void load(torch::serialize::InputArchive& archive, bool training) = 0;
+  // Takes other's deployed networks (and temperature) as this agent's starting weights, targets
+  // included: a warm start. Throws InputError when the two are of different kinds or networks.
+  void copy_weights_from(const LearningAgent& other);
+
   // The replay memory as bytes, and back (throws InputError for malformed bytes).
   virtual std::string serialize_memory() const = 0;
   virtual void deserialize_memory(const std::string& bytes) = 0;

@@ -18,6 +18,7 @@
 #include "core/region/region_symmetry.h"
 #include "core/sac/deploy_profile.h"
 #include "core/sac/region_lookahead_policy.h"
+#include "core/sac/softmax_draw.h"
 #include "core/sac/state_batch.h"
 
 namespace autoblock {
@@ -34,14 +35,6 @@ double softmax_entropy(const std::vector<double>& q, double alpha) {
     if (p > 0) h -= p * std::log(p);
   }
   return h;
-}
-
-// An index drawn from softmax(q / alpha): the maximum-entropy policy's action in training.
-size_t sample_softmax(const std::vector<double>& q, double alpha, std::mt19937_64& rng) {
-  const double top = *std::max_element(q.begin(), q.end());
-  std::vector<double> weights;
-  for (double v : q) weights.push_back(std::exp((v - top) / alpha));
-  return static_cast<size_t>(std::discrete_distribution<int>(weights.begin(), weights.end())(rng));
 }
 
 double soft_maximum(const std::vector<double>& q, double alpha) {

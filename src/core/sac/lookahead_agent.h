@@ -153,6 +153,9 @@ class LookaheadAgent : public LearningAgent {
   void set_deploy_views(int views) { config_.deploy_views = std::max(1, std::min(8, views)); }
   // Overrides the configuration's deploy_top_k (0: every cut) of this agent's deployed policies.
   void set_deploy_top_k(int k) { config_.deploy_top_k = std::max(0, k); }
+  // Overrides the configuration's region_taper (mesh preset, general faces: candidates charged for
+  // the search's taper) in training and deployment from now on (for benchmarks and ablations).
+  void set_region_taper(bool taper) { config_.region_taper = taper; }
   // Whether this agent's deployed policies keep the pieces' values from step to step (default
   // true). Off, every step values all its pieces again, as before issue 8 (for benchmarks).
   void set_deploy_reuse(bool reuse) { deploy_reuse_ = reuse; }

@@ -10,7 +10,7 @@ namespace autoblock {
 namespace {
 
 constexpr char kMagic[4] = {'A', 'B', 'R', 'B'};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;
 
 class Writer {
  public:
@@ -113,9 +113,11 @@ std::string ReplayBuffer::serialize() const {
     w.put(index.at(t.state.get()));
     w.put<std::int32_t>(t.vertex);
     w.put<std::int32_t>(t.direction);
+    w.put(t.angle);
     w.put(t.reward);
     w.put<std::uint32_t>(static_cast<std::uint32_t>(t.children.size()));
     for (const auto& c : t.children) w.put(index.at(c.get()));
+    w.put_vector(t.children_template);
   }
   return w.bytes;
 }
@@ -125,7 +127,8 @@ ReplayBuffer ReplayBuffer::deserialize(const std::string& bytes) {
   r.need(4);
   if (std::memcmp(bytes.data(), kMagic, 4) != 0) throw InputError("corrupt replay buffer (bad magic)");
   r.offset = 4;
-  if (r.get<std::uint32_t>() != kVersion) throw InputError("replay buffer of an unsupported version");
+  const auto version = r.get<std::uint32_t>();
+  if (version != 1 && version != kVersion) throw InputError("replay buffer of an unsupported version");
   ReplayBuffer buffer(static_cast<size_t>(r.get<std::uint64_t>()));
   buffer.next_ = static_cast<size_t>(r.get<std::uint64_t>());
   const auto state_count = r.get<std::uint64_t>();
@@ -159,13 +162,20 @@ ReplayBuffer ReplayBuffer::deserialize(const std::string& bytes) {
     t.state = state_at(r.get<std::uint32_t>());
     t.vertex = r.get<std::int32_t>();
     t.direction = r.get<std::int32_t>();
+    if (version >= 2) t.angle = r.get<float>();
     t.reward = r.get<float>();
     if (t.vertex < 0 || t.vertex >= static_cast<int>(t.state->observations.size()) || t.direction < 0 ||
-        t.direction > 1) {
+        t.direction > 1 || !(t.angle >= -1.0f && t.angle <= 1.0f)) {
       throw InputError("corrupt replay buffer (bad action)");
     }
     const auto children = r.get<std::uint32_t>();
     for (std::uint32_t c = 0; c < children; ++c) t.children.push_back(state_at(r.get<std::uint32_t>()));
+    if (version >= 2) {
+      t.children_template = r.get_vector<float>();
+      if (!t.children_template.empty() && t.children_template.size() != t.children.size()) {
+        throw InputError("corrupt replay buffer (bad template rewards)");
+      }
+    }
     buffer.items_.push_back(std::move(t));
   }
   if (buffer.items_.size() == buffer.capacity_ ? buffer.next_ >= buffer.capacity_ : buffer.next_ != 0) {

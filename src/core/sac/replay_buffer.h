@@ -19,9 +19,14 @@ namespace autoblock {
 struct Transition {
   std::shared_ptr<const PartState> state;                  // the part that was cut
   int vertex = 0;                                          // index into state->observations
-  int direction = 0;                                       // 0 horizontal, 1 vertical
+  int direction = 0;                                       // 0 horizontal, 1 vertical (grid faces)
   float reward = 0.0f;
   std::vector<std::shared_ptr<const PartState>> children;  // empty: every piece is a block
+  float angle = 0.0f;                                      // general faces (continuous_sac_agent.h): the
+                                                           // actor's squashed action u in [-1, 1]
+  // General faces: per child, the reward of finishing it with the template (block.h), NaN where the
+  // template does not apply (empty on grid faces: no child has one).
+  std::vector<float> children_template;
 };
 
 class ReplayBuffer {
@@ -35,7 +40,8 @@ class ReplayBuffer {
   std::vector<const Transition*> sample(size_t count, std::mt19937_64& rng) const;
   const Transition& at(size_t k) const { return items_[k]; }
 
-  // Binary form for checkpoints (states written once each).
+  // Binary form for checkpoints (states written once each; version 2 adds the angle and the
+  // children's template rewards, version 1 still reads).
   std::string serialize() const;
   // Throws InputError when bytes are malformed.
   static ReplayBuffer deserialize(const std::string& bytes);

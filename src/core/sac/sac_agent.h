@@ -44,10 +44,9 @@
 
 #include <torch/torch.h>
 
-#include "core/nn/mlp.h"
-#include "core/nn/value_network.h"
 #include "core/sac/replay_buffer.h"
 #include "core/sac/sac_config.h"
+#include "core/sac/sac_networks.h"
 
 namespace autoblock {
 
@@ -80,10 +79,7 @@ class SacAgent {
   torch::Tensor child_values(const std::vector<const PartState*>& children);
 
   SacConfig config_;
-  ValueNetwork value_{nullptr}, value_target_{nullptr};
-  Mlp actor_{nullptr}, q1_{nullptr}, q2_{nullptr}, q1_target_{nullptr}, q2_target_{nullptr};
-  torch::Tensor log_alpha_, log_tau_;
-  std::unique_ptr<torch::optim::Adam> value_optimizer_, critic_optimizer_, actor_optimizer_, temperature_optimizer_;
+  SacNetworks nets_;
 };
 
 }  // namespace autoblock

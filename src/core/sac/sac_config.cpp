@@ -81,6 +81,7 @@ nlohmann::json sac_config_json(const SacConfig& c) {
           {"polyak", c.polyak},
           {"target_update_every", c.target_update_every},
           {"direction_target_entropy", c.direction_target_entropy},
+          {"angle_target_entropy", c.angle_target_entropy},
           {"vertex_target_entropy_fraction", c.vertex_target_entropy_fraction},
           {"initial_direction_temperature", c.initial_direction_temperature},
           {"initial_vertex_temperature", c.initial_vertex_temperature}};
@@ -124,6 +125,7 @@ SacConfig sac_config_from_json(const nlohmann::json& j) {
     c.polyak = j.at("polyak").get<double>();
     c.target_update_every = j.at("target_update_every").get<int>();
     c.direction_target_entropy = j.at("direction_target_entropy").get<double>();
+    c.angle_target_entropy = j.value("angle_target_entropy", -1.0);  // files before the continuous agent
     c.vertex_target_entropy_fraction = j.at("vertex_target_entropy_fraction").get<double>();
     c.initial_direction_temperature = j.at("initial_direction_temperature").get<double>();
     c.initial_vertex_temperature = j.at("initial_vertex_temperature").get<double>();

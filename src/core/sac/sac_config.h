@@ -53,6 +53,9 @@ struct SacConfig {
   double polyak = 0.01;                 // paper: target networks move this fraction per update
   int target_update_every = 25;         // lookahead: the target network is copied every so many updates
   double direction_target_entropy = 0.3;     // nats; ln 2 = 0.69 is the maximum for 2 directions
+  double angle_target_entropy = -1.0;   // paper, general faces: nats of the squashed angle action u in
+                                        // [-1, 1] (continuous_sac_agent.h; -dim(A), SAC's usual choice;
+                                        // ln 2 = 0.69 is the uniform's)
   double vertex_target_entropy_fraction = 0.3;  // of ln(number of vertices of the part); lookahead:
                                                 // of ln(number of candidate cuts)
   double initial_direction_temperature = 0.2;   // SAC's alpha

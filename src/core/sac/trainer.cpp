@@ -33,8 +33,9 @@ Trainer::Trainer(const SacConfig& config, const TrainerOptions& options, Trainin
 
 void Trainer::require_general_agent() const {
   if ((!train_.general.empty() || !test_.general.empty()) && !agent_->deployed_region_policy("")) {
-    throw InputError("the " + agent_->config().agent + " agent learns on faces whose edges run along two perpendicular "
-                     "directions only, and the data holds faces with edges at other angles: train the lookahead agent");
+    throw InputError("this " + agent_->config().agent + " agent learns on faces whose edges run along two perpendicular "
+                     "directions only (its checkpoint was written before the paper's agent learned on general faces), "
+                     "and the data holds faces with edges at other angles: start a fresh run");
   }
 }
 

@@ -140,7 +140,6 @@ TEST_CASE("autoblock train: bad options and data get exit 2 and a one-line error
   // Every case is refused before training starts, so nothing is written.
   const std::string folder = test::temporary_folder("cli-train");
   REQUIRE(test::run_autoblock("generate --count 2 --seed 1 --out '" + folder + "/s'").exit_code == 0);
-  REQUIRE(test::run_autoblock("generate --kind polygon --count 2 --seed 1 --out '" + folder + "/g'").exit_code == 0);
   const std::string data = "--train '" + folder + "/s' --test '" + folder + "/s' --out '" + folder + "/p.pt' ";
   const std::vector<std::string> cases{"train", "train --train '" + folder + "/nowhere' --test '" + folder + "/s'",
                                        "train " + data + "--deploy-views 9", "train " + data + "--weight-average 1",
@@ -151,9 +150,8 @@ TEST_CASE("autoblock train: bad options and data get exit 2 and a one-line error
                                        "train " + data + "--resume '" + folder + "/p.pt' --set gamma=0.5",
                                        "train --train '" + folder + "/s' --test '" + folder + "/s' --out '" + folder +
                                            "/no/such/p.pt' --episodes 1",
-                                       // general faces train the lookahead agent only
-                                       "train --train '" + folder + "/g' --test '" + folder + "/s' --out '" + folder +
-                                           "/p.pt' --episodes 1 --agent paper"};
+                                       "train " + data + "--init no-such-policy",
+                                       "train " + data + "--init sac-faithful"};
   for (const std::string& arguments : cases) {
     const auto r = test::run_autoblock(arguments);
     INFO(arguments << ": " << r.err);

@@ -132,11 +132,6 @@ TEST_CASE("a training episode on a general face ends in blocks and remembers its
     CHECK(record.steps >= 1);
   }
   CHECK(agent->memory_size() >= 3);
-  // The paper's agent refuses.
-  auto paper = make_learning_agent(default_sac_config("paper"));
-  const Region face = test::region_of(test::general_polygon(1320, GeneralKind::Polygon, false));
-  CHECK_THROWS_AS(paper->train_region_episode(face, rng, 0), InputError);
-  CHECK(paper->deployed_region_policy("x") == nullptr);
   CHECK(agent->deployed_region_policy("x") != nullptr);
 }
 
