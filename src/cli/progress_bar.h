@@ -15,6 +15,8 @@ class ProgressBar {
   void update(long done, const std::string& note = "");
   // Clears the line.
   void finish();
+  // True when the bar is drawn (stderr is a terminal).
+  bool drawn() const { return enabled_; }
 
  private:
   long total_;

@@ -124,7 +124,7 @@ void add_train_command(CLI::App& app) {
     double window = 0.0, last_test = 0.0;
     std::vector<double> recent;
     TrainingCallbacks callbacks;
-    callbacks.on_episode = [&](const EpisodeRecord& r, bool) {
+    callbacks.on_episode = [&](const EpisodeRecord& r, bool earlier) {
       recent.push_back(r.ret);
       window += r.ret;
       if (recent.size() > 10) window -= recent[recent.size() - 11];
@@ -132,6 +132,12 @@ void add_train_command(CLI::App& app) {
       char note[128];
       std::snprintf(note, sizeof note, "avg10 %.2f  test %.2f", window / std::min<size_t>(recent.size(), 10), last_test);
       progress.update(r.episode, note);
+      // Without a terminal (a log file, a background run) a line at every evaluation instead.
+      if (!progress.drawn() && r.evaluated && !earlier) {
+        std::fprintf(stderr, "train: episode %d of %d, %.1f min: %s\n", r.episode, args->episodes, r.wall_seconds / 60.0,
+                     note);
+        std::fflush(stderr);
+      }
     };
     callbacks.should_stop = [] { return interrupted.load(); };
     const TrainingOutcome outcome = run_training_job(job, callbacks);
