@@ -54,7 +54,7 @@ class LearningAgent : public std::enable_shared_from_this<LearningAgent> {
   virtual void load(torch::serialize::InputArchive& archive, bool training) = 0;
   // Takes other's deployed networks (and temperature) as this agent's starting weights, targets
   // included: a warm start. Throws InputError when the two are of different kinds or networks.
-  void copy_weights_from(const LearningAgent& other);
+  virtual void copy_weights_from(const LearningAgent& other);
 
   // The replay memory as bytes, and back (throws InputError for malformed bytes).
   virtual std::string serialize_memory() const = 0;

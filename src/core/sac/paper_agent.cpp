@@ -186,6 +186,11 @@ EpisodeRecord PaperAgent::train_region_episode(const Region& face, std::mt19937_
   return record;
 }
 
+void PaperAgent::copy_weights_from(const LearningAgent& other) {
+  LearningAgent::copy_weights_from(other);
+  has_general_ = true;  // the general networks stay as they were when other has none
+}
+
 void PaperAgent::save(torch::serialize::OutputArchive& archive, bool training) const {
   agent_->save(archive, training);
   if (has_general_) general_->save(archive, "general_", training);

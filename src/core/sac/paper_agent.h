@@ -29,6 +29,9 @@ class PaperAgent : public LearningAgent {
   std::unique_ptr<RegionPolicy> deployed_region_policy(const std::string& name) override;
   std::vector<float> vertex_scores(const Episode& episode) override;
   std::vector<float> region_vertex_scores(const RegionEpisode& episode) override;
+  // A warm start from a policy written before the continuous agent keeps this agent's own (fresh)
+  // networks for general faces.
+  void copy_weights_from(const LearningAgent& other) override;
   void save(torch::serialize::OutputArchive& archive, bool training) const override;
   void load(torch::serialize::InputArchive& archive, bool training) override;
   std::string serialize_memory() const override;

@@ -237,3 +237,15 @@ TEST_CASE("the paper agent's replay memory holds both buffers and reads the old 
   CHECK_THROWS_AS(old.deserialize_memory("ABPM"), InputError);
   CHECK_THROWS_AS(old.deserialize_memory(bytes.substr(0, bytes.size() / 2)), InputError);
 }
+
+TEST_CASE("a paper agent warm-started from a policy without general networks keeps its own", "[sac][continuous]") {
+  torch::manual_seed(19);
+  SacConfig config = default_sac_config("paper");
+  auto agent = make_learning_agent(config);
+  const LoadedPolicy faithful = load_policy_file(policy_file_path("sac-faithful"), false);
+  agent->copy_weights_from(*faithful.agent);
+  CHECK(agent->deployed_region_policy("x") != nullptr);
+  const GridFace face = test::grid_face_of(test::l_shape());
+  Episode episode(face);
+  CHECK((agent->vertex_scores(episode) == faithful.agent->vertex_scores(episode)));
+}
