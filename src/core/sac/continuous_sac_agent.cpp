@@ -1,5 +1,6 @@
 #include "core/sac/continuous_sac_agent.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -16,7 +17,6 @@ namespace {
 
 constexpr double kLogStdMin = -5.0, kLogStdMax = 2.0;
 constexpr double kSquashEpsilon = 1e-6;
-
 
 struct Squashed {
   torch::Tensor u, logp;  // the action in [-1, 1] and its log density
@@ -103,15 +103,20 @@ torch::Tensor ContinuousSacAgent::child_values(const std::vector<const PartState
   std::vector<const PartGraph*> graphs;
   for (const PartState* c : children) graphs.push_back(&c->graph);
   const GraphBatch batch = batch_graphs(graphs);
-  nets_.value_target->eval();
-  const torch::Tensor vertex_values =
-      nets_.value_target->forward(batch.x, batch.edge_index, batch.pseudo).index_select(0, batch.vertex_nodes);
+  torch::Tensor vertex_values;  // V' at every child's vertices (bootstrap "graph" only)
+  if (config_.bootstrap == Bootstrap::Graph) {
+    nets_.value_target->eval();
+    vertex_values =
+        nets_.value_target->forward(batch.x, batch.edge_index, batch.pseudo).index_select(0, batch.vertex_nodes);
+  }
   const double tau = vertex_temperature();
   const double alpha = angle_temperature();
   torch::Tensor result = torch::empty({static_cast<int64_t>(children.size())}, torch::kFloat32);
   for (size_t c = 0; c < children.size(); ++c) {
-    torch::Tensor values = vertex_values.slice(0, batch.vertex_offsets[c], batch.vertex_offsets[c + 1]);
-    if (config_.bootstrap == Bootstrap::Critics) {
+    torch::Tensor values;
+    if (config_.bootstrap == Bootstrap::Graph) {
+      values = vertex_values.slice(0, batch.vertex_offsets[c], batch.vertex_offsets[c + 1]);
+    } else {
       // Each vertex's soft value through the target critics, at one draw of the actor's angle.
       std::vector<const Observation*> observations;
       for (const Observation& o : children[c]->observations) observations.push_back(&o);

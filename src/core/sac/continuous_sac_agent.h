@@ -18,8 +18,9 @@
 // agent, sac_agent.h):
 //   y = r + gamma * sum over the cut's children c of W'(c),
 //   W'(c) = tau * logsumexp over c's choices of (V'(c, v) or the template's reward) / tau,
-//   critics     (Q_i(o_v, u) - y)^2, twin, each 10 -> 256 -> 128 -> 64 -> 1, Polyak-averaged targets
-//               (the targets are for bootstrap "critics"; this agent's W' is the graph's);
+//   critics     (Q_i(o_v, u) - y)^2, twin, each 10 -> 256 -> 128 -> 64 -> 1, Polyak-averaged targets;
+//               with bootstrap "critics" a vertex's term in W'(c) is min_i Q'_i(o_v, u) - alpha log pi(u | o_v)
+//               at one draw u of the actor instead of V'(c, v) (the default, "graph", uses V');
 //   value       (V(P, v) - y)^2 at the chosen vertex only, as the paper;
 //   actor       reparameterised: E[alpha log pi(u | o) - min_i Q_i(o, u)], u = tanh(mu + sigma eps),
 //               log pi(u) = log N(eps) - sum log(1 - u^2) (SAC's tanh correction);

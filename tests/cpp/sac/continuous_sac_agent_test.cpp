@@ -115,6 +115,15 @@ TEST_CASE("the continuous agent's Bellman target counts a child's template as on
   for (const char* key : {"critic_loss", "value_loss", "actor_loss", "alpha", "tau", "angle_entropy", "vertex_entropy"}) {
     CHECK(std::isfinite(metrics.at(key)));
   }
+  // Through the target critics instead: the children's terms differ, the terminal cut's does not.
+  config.bootstrap = Bootstrap::Critics;
+  torch::manual_seed(5);
+  ContinuousSacAgent critics(config);
+  const auto other = critics.update({&done, &tree}, rng);
+  CHECK(std::isfinite(other.at("mean_target")));
+  CHECK(other.at("mean_target") != Approx(metrics.at("mean_target")).epsilon(1e-6));
+  const auto terminal = critics.update({&done}, rng);
+  CHECK(terminal.at("mean_target") == Approx(-1.5));
 }
 
 TEST_CASE("the continuous actor learns the angle its critics value most", "[sac][continuous]") {
