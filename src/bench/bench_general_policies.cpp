@@ -35,6 +35,8 @@ using namespace autoblock;
 namespace {
 
 struct Row {
+  Row(std::string name_, std::shared_ptr<LookaheadAgent> agent_ = nullptr, double time_limit_ = 2.0)
+      : name(std::move(name_)), agent(std::move(agent_)), time_limit(time_limit_) {}
   std::string name;
   std::shared_ptr<LookaheadAgent> agent;  // null: a baseline
   double time_limit = 2.0;                // the search's budget per face
@@ -155,11 +157,11 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     set_compute_threads(1);
-    std::vector<Row> rows{{"greedy"}, {"search"}};
+    std::vector<Row> rows{Row("greedy"), Row("search")};
     for (const double budget : budgets) {
       char name[64];
       std::snprintf(name, sizeof name, "search, %g s", budget);
-      rows.push_back({name, nullptr, budget});
+      rows.push_back(Row(name, nullptr, budget));
     }
     for (const std::string& spec : learned) {
       const bool taper = spec.size() > 6 && spec.compare(spec.size() - 6, 6, "+taper") == 0;
@@ -173,7 +175,7 @@ int main(int argc, char** argv) {
       if (!agent) throw std::runtime_error(name + " is not a lookahead agent's policy");
       if (hash != std::string::npos) agent->set_deploy_top_k(std::stoi(base.substr(hash + 1)));
       if (taper) agent->set_region_taper(true);
-      rows.push_back({spec, agent});
+      rows.push_back(Row(spec, agent));
     }
     if (small > 0) table("polygons of 5-12 vertices, a quarter with holes, seed " + std::to_string(seed), fresh_faces(small, 5, 12, seed), rows);
     if (large > 0) {

@@ -149,6 +149,7 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
     RegionEpisodeOptions options;
     options.max_steps = settings.max_steps;
     options.corner_fraction = settings.corner_fraction;
+    options.cut_smooth_parts = settings.cut_smooth_parts;
     // The policy's own preset, as on the grid: mesh for auto and search, a trained policy's own, paper
     // for the other baselines.
     options.reward = !settings.reward.empty() ? reward_preset_by_name(settings.reward)

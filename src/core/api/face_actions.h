@@ -29,6 +29,7 @@ struct DecomposeSettings {
   bool occt_blocks = true;                     // cut the blocks from the face with OpenCASCADE and merge them
   double corner_fraction = kMeshCornerFraction;  // general faces, mesh preset: a block's corners within
                                                  // [asin(f B), 180 - asin(f B)] degrees (block.h)
+  bool cut_smooth_parts = false;                 // general faces, mesh preset: BlockRules::cut_smooth_parts
   // A general face searched (auto, search): the decomposition `autoblock mesh` keeps, by the tries of
   // mesh_input_face (api/face_meshing.h), each meshed at the default size: the one whose mesh is best
   // (its block rules, RegionDecomposition::rules, and min_edge_intervals say how to replay and mesh it).

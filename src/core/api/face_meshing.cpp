@@ -35,9 +35,13 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
   // The tries: kSearchTries, the first with the settings' block rules and width if set (the others
   // as listed, that one left out). A policy other than the search makes one decomposition, meshed once.
   const int set_width = settings.policy_settings.general_search_width;
-  std::vector<SearchTry> tries{{set_width > 0 ? set_width : kSearchTries[0].width, settings.corner_fraction}};
+  std::vector<SearchTry> tries{
+      {set_width > 0 ? set_width : kSearchTries[0].width, settings.corner_fraction, settings.cut_smooth_parts}};
   for (const SearchTry& t : kSearchTries) {
-    if (t.width != tries[0].width || t.corner_fraction != tries[0].corner_fraction) tries.push_back(t);
+    if (t.width != tries[0].width || t.corner_fraction != tries[0].corner_fraction ||
+        t.cut_smooth_parts != tries[0].cut_smooth_parts) {
+      tries.push_back(t);
+    }
   }
   auto finish = [&] {
     if (occt_model) {
@@ -58,6 +62,7 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
   for (size_t k = 0; k < tries.size(); ++k) {
     if (have && ratio(out.result) >= kRetryBelow) break;
     decompose.corner_fraction = tries[k].corner_fraction;
+    decompose.cut_smooth_parts = tries[k].cut_smooth_parts;
     decompose.policy_settings.general_search_width = tries[k].width;
     // (The replay takes its block rules from the decomposition: no options to change for it.)
     FaceDecomposition again = decompose_input_face(face, decompose);
@@ -112,6 +117,7 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
       out.result = std::move(meshed);
       out.corner_fraction = tries[k].corner_fraction;
       out.search_width = tries[k].width;
+      out.cut_smooth_parts = tries[k].cut_smooth_parts;
       out.min_edge_intervals = min_edge_intervals;
       have = true;
     }
@@ -144,6 +150,7 @@ nlohmann::json face_meshing_json(const std::string& input, const FaceMeshing& m)
   nlohmann::json report = mesh_report_json(input, m.decomposition.region, m.result, m.seconds);
   report["attempts"] = m.attempts;
   report["corner_fraction"] = m.corner_fraction;
+  report["cut_smooth_parts"] = m.cut_smooth_parts;
   report["min_edge_intervals"] = m.min_edge_intervals;
   report["search_width"] = m.search_width;
   return report;

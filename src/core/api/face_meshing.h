@@ -20,6 +20,7 @@ struct FaceMeshing {
   double corner_fraction = kMeshCornerFraction;  // the block rules of the one kept (face_actions.h)
   int min_edge_intervals = 1;       // the intervals every model edge has at least (MeshOptions)
   int search_width = 4;             // the kept search's width (candidates expanded per part)
+  bool cut_smooth_parts = false;    // the kept search's progress rule (SearchTry)
   bool general() const { return decomposition.general(); }
   const std::string& policy() const {
     return general() ? decomposition.region.policy : decomposition.decomposition.policy;
@@ -38,8 +39,8 @@ struct FaceMeshing {
 //          kRetryBelow of the face's topology bound (topology_jacobian_bound: what its corners, holes
 //          and arcs allow); a try's mesh below it is meshed again with at least two intervals per
 //          model edge; the conformal mesh with the best minimum scaled Jacobian is kept (attempts,
-//          search_width, corner_fraction and min_edge_intervals say what was kept). Each search has
-//          the time limit. A search whose blocks fail to mesh (no interval counts for them, say: a
+//          search_width, corner_fraction, cut_smooth_parts and min_edge_intervals say what was
+//          kept). Each search has the time limit. A search whose blocks fail to mesh (no interval counts for them, say: a
 //          rare web of templates whose sides' counts contradict), or that leaves a part unfinished,
 //          is skipped; the first failure is thrown when every try fails. A width set in settings
 //          makes the first try (the others follow, those of that width and rules left out).
@@ -50,14 +51,19 @@ struct FaceMeshing {
 // widths and block rules give different decompositions whose meshes differ more than their rewards;
 // several cheap searches find a good mesh sooner than one wide one. On the 200-face arc benchmark
 // (BENCHMARKS.md, "Tries of a searched face") the first try, of width 2, is the one kept on most
-// faces, at a fraction of the default width's time.
+// faces, at a fraction of the default width's time. The last try lets the search cut parts that only
+// the usual template's fallback could finish (BlockRules::cut_smooth_parts: a wedge whose ends are
+// rounded); as every try's rule it lost on more faces than it won (BENCHMARKS.md, "Parts with fewer
+// than three corners").
 constexpr double kRetryBelow = 0.85;
 struct SearchTry {
-  int width;               // candidates expanded per part (region_search.h; its default: 4)
-  double corner_fraction;  // the block rules (face_actions.h)
+  int width;                      // candidates expanded per part (region_search.h; its default: 4)
+  double corner_fraction;         // the block rules (face_actions.h)
+  bool cut_smooth_parts = false;  // the progress rule (block.h, BlockRules::cut_smooth_parts)
 };
 constexpr SearchTry kSearchTries[] = {{2, kMeshCornerFraction}, {3, kMeshCornerFraction}, {4, kMeshCornerFraction},
-                                      {4, 0.95},                {4, 0.75},                {8, kMeshCornerFraction}};
+                                      {4, 0.95},                {4, 0.75},                {8, kMeshCornerFraction},
+                                      {4, kMeshCornerFraction, true}};
 FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& settings, MeshOptions options);
 
 // Inputs:  face, a general face; actions, a whole cut sequence of it (as the workbench stores it, see

@@ -31,6 +31,12 @@ struct BlockRules {
   double min_corner_degrees = 30.0;
   double max_corner_degrees = 150.0;
   double flat_tolerance_degrees = 20.0;
+  // Not what a block is but which cuts make progress (region_candidates.h, part_complexity): true
+  // makes a part with fewer than three corners that the smooth template does not take (a wedge with a
+  // rounded end and a rounded tip, say) count as complex, so that the cuts leaving simpler pieces make
+  // progress and the search may cut it instead of finishing it with the usual template's fallback
+  // corners. One of `autoblock mesh`'s later tries (kSearchTries).
+  bool cut_smooth_parts = false;
 };
 
 // Inputs: ring, a loop of a region; its vertex number i; rules.

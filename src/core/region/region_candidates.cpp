@@ -120,6 +120,11 @@ Complexity part_complexity(const Region& part, const BlockRules& rules) {
       if (!run.open_before && !run.open_after && run.turn > kClosedRunLimit) ++c.reflex;
     }
   }
+  // A part that only the usual template's fallback corners could finish (block.h, cut_smooth_parts).
+  if (rules.cut_smooth_parts && c.holes == 0 && c.reflex == 0 && c.corners < 3 && part.outer().size() > 3 &&
+      !smooth_template(part, rules)) {
+    c.corners += kSmoothPartCorners;
+  }
   return c;
 }
 

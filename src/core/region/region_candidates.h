@@ -25,7 +25,9 @@
 // open ends count as reflex vertices (a reflex fillet: two; block.h, concave_runs), and so does a
 // concave arc closed at both ends that turns by more than kClosedRunLimit: the cuts square to the arc
 // at its ends make progress, those along its chords (a fan of slivers) do not. A cut makes
-// progress when every piece it leaves is less complex than the part, or is a block. The
+// progress when every piece it leaves is less complex than the part, or is a block. Under rules
+// with cut_smooth_parts (block.h) a part without holes or reflex vertices, with fewer than three
+// corners, that the smooth template does not take counts kSmoothPartCorners more corners. The
 // non-learned policies choose only cuts that make progress (and the template): every sequence of
 // such actions ends, so no policy can cut a triangle into a triangle and a quadrilateral forever.
 #pragma once
@@ -38,6 +40,8 @@ namespace autoblock {
 
 // Inputs: part, not empty. Output: the candidates above, in a fixed order (vertex by vertex).
 std::vector<RegionAction> region_candidates(const Region& part);
+
+constexpr int kSmoothPartCorners = 6;
 
 struct Complexity {
   int holes = 0, reflex = 0, corners = 0;

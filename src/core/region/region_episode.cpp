@@ -14,7 +14,10 @@ RegionEpisode::RegionEpisode(const Region& face, RegionEpisodeOptions options) :
   if (face.is_empty()) throw std::invalid_argument("RegionEpisode: empty face");
   face_size_ = face.bbox().longer_side();
   if (options_.max_steps <= 0) options_.max_steps = 10 * face.vertex_count() + 10;
-  if (options_.face_rules && options_.reward == RewardPreset::Mesh) options_.rules = mesh_block_rules(face.loops(), options_.corner_fraction);
+  if (options_.face_rules && options_.reward == RewardPreset::Mesh) {
+    options_.rules = mesh_block_rules(face.loops(), options_.corner_fraction);
+    options_.rules.cut_smooth_parts = options_.cut_smooth_parts;
+  }
   std::vector<int> ids;
   push(face, &ids);
   if (queue_.empty()) status_ = EpisodeStatus::Complete;

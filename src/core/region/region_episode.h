@@ -33,6 +33,7 @@ struct RegionEpisodeOptions {
   BlockRules rules;           // what a block is (block.h); see face_rules
   bool face_rules = true;     // the mesh preset: rules = mesh_block_rules(the face's loops) instead
   double corner_fraction = kMeshCornerFraction;  // face_rules: mesh_block_rules' fraction
+  bool cut_smooth_parts = false;                 // face_rules: the rules' cut_smooth_parts (block.h)
 };
 
 struct RegionPiece {

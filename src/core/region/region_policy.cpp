@@ -109,7 +109,7 @@ std::vector<ScoredAction> score_candidates(const Region& part, double face_size,
       const auto [at, inserted] = chord_sets.insert({std::move(key), static_cast<long>(groups.size())});
       group = at->second;
       if (!inserted) return false;
-      groups.push_back(Group{action.cut});
+      groups.emplace_back().cut = action.cut;
       told_chords = chords;
       return keep == 0;  // every candidate wanted: scored now
     });
@@ -120,7 +120,7 @@ std::vector<ScoredAction> score_candidates(const Region& part, double face_size,
     }
     if (!told) {
       group = static_cast<long>(groups.size());
-      groups.push_back(Group{action.cut});
+      groups.emplace_back().cut = action.cut;
     }
     Group& g = groups[static_cast<size_t>(group)];
     if (outcome) {

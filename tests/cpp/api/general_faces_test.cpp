@@ -23,6 +23,7 @@
 #include "core/geometry/occt_face.h"
 #include "core/geometry/occt_properties.h"
 #include "core/io/decomposition_json.h"
+#include "core/io/input_face.h"
 #include "core/region/region_search.h"
 #include "core/region/region_snapshot.h"
 #include "support/test_shapes.h"
@@ -227,13 +228,38 @@ TEST_CASE("a poor searched mesh is searched again (other widths, other block rul
   CHECK(once.attempts == 1);
   CHECK(once.search_width == kSearchTries[0].width);
   CHECK(once.corner_fraction == kSearchTries[0].corner_fraction);
-  // Every try after the first is another search (no two alike), ending with the widest.
+  CHECK_FALSE(once.cut_smooth_parts);
+  // Every try after the first is another search (no two alike); the last alone cuts smooth parts.
   for (size_t i = 0; i < std::size(kSearchTries); ++i) {
     for (size_t j = i + 1; j < std::size(kSearchTries); ++j) {
-      CHECK((kSearchTries[i].width != kSearchTries[j].width || kSearchTries[i].corner_fraction != kSearchTries[j].corner_fraction));
+      CHECK((kSearchTries[i].width != kSearchTries[j].width || kSearchTries[i].corner_fraction != kSearchTries[j].corner_fraction ||
+             kSearchTries[i].cut_smooth_parts != kSearchTries[j].cut_smooth_parts));
     }
+    CHECK(kSearchTries[i].cut_smooth_parts == (i + 1 == std::size(kSearchTries)));
   }
-  for (const SearchTry& t : kSearchTries) CHECK(t.width <= std::end(kSearchTries)[-1].width);
+}
+
+TEST_CASE("a wedge rounded at both ends: the last try cuts it, and its mesh is kept", "[api][general][mesh][arc]") {
+  // Face 150 of the arc benchmark (`autoblock generate --kind arcs --seed 20261202`): two corners (its
+  // rounded tip's), which no cut reduces, so every try but the last finishes the whole face with the
+  // usual template's fallback, whose mesh fans into the tip (min scaled Jacobian 0.067). The last try
+  // counts such a part as complex (BlockRules::cut_smooth_parts) and cuts it into blocks.
+  const InputFace face = load_input_face(std::string(AUTOBLOCK_SOURCE_DIR) + "/tests/data/arcs/rounded-wedge.brep");
+  REQUIRE(face.is_general());
+  DecomposeSettings settings;
+  settings.policy_settings.general_time_limit = 0.0;  // the same searches on a loaded machine
+  const FaceMeshing m = mesh_input_face(face, settings, MeshOptions{});
+  REQUIRE(m.result.conformity.conformal);
+  CHECK(m.attempts == static_cast<int>(std::size(kSearchTries)));
+  CHECK(m.cut_smooth_parts);
+  CHECK(m.blocks() >= 2);
+  CHECK(m.result.quality.min_scaled_jacobian > 0.1);
+  CHECK(face_meshing_json("wedge", m)["cut_smooth_parts"] == true);
+  // decompose keeps that decomposition (what the workbench stores), and its cuts replay and mesh the same.
+  settings.occt_blocks = false;
+  const FaceDecomposition d = decompose_input_face(face, settings);
+  CHECK(d.region.finished.size() == m.decomposition.region.finished.size());
+  CHECK(d.region.rules.cut_smooth_parts);
 }
 
 TEST_CASE("decompose keeps the decomposition mesh keeps; its cuts, replayed under its rules, mesh the same",

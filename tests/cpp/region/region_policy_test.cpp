@@ -300,3 +300,64 @@ TEST_CASE("a convex fillet: its open ends count as corners, cut square to the ed
   RegionGreedyPolicy greedy;
   CHECK(decompose_region(part, greedy, options).complete());
 }
+
+TEST_CASE("a part with two corners that the smooth template does not take: cut under cut_smooth_parts",
+          "[region][policy][arc]") {
+  // Face 150 of the arc benchmark (`autoblock generate --kind arcs --seed 20261202`), as the engine
+  // sees it: a long wedge whose wide end and two lower corners are rounded (arcs: side vertices) and
+  // whose tip is rounded by an arc shorter than an element (one chord: the tip's two corners, at
+  // (1.50, 0.78) and (1.41, 0.85)). Two corners, and the smooth template folds on it.
+  const Ring ring{{-0.37844218365095117, -1.1406757156707579}, {-0.26552926929177695, -1.1388855796092732},
+                  {-0.1561577305675237, -1.110770599640451},   {-0.0563789634072447, -1.0578869344899777},
+                  {1.261896022265787, -0.14582233528558106},   {1.3211706796063507, -0.09483651954811072},
+                  {1.3684999262635262, -0.032603335485842135}, {1.4017995088854331, 0.03813710892009884},
+                  {1.41960302987265, 0.1142692049770431},      {1.5023609930667456, 0.775009233121149},
+                  {1.4092766107033339, 0.854257835482025},     {1.2472131964350608, 0.8068080097118997},
+                  {1.1440432539244783, 0.7650032611726001},    {-1.43252683683233, -0.5932764632543575},
+                  {-1.4550796190102449, -0.6091722611046821},  {-1.472837960230575, -0.6302897628736145},
+                  {-1.4846298793880495, -0.6552346790664999},  {-1.4896765491104398, -0.6823610898313867},
+                  {-1.4876455540268099, -0.7098779614955276},  {-1.478670339011541, -0.7359691272708211},
+                  {-1.4633436267017383, -0.75891237034799},    {-1.442677024990412, -0.7771934205269384},
+                  {-1.4180346037930407, -0.789605289863152},   {-0.48864969766448874, -1.1160425697897673}};
+  const Region part(ring, {}, tolerance_for_size(ring_bbox(ring).longer_side()));
+  const BlockRules plain;
+  BlockRules cutting;
+  cutting.cut_smooth_parts = true;
+  REQUIRE(part_complexity(part, plain).corners == 2);
+  REQUIRE_FALSE(smooth_template(part, plain));
+  CHECK(part_complexity(part, cutting).corners == 2 + kSmoothPartCorners);
+  // Under the plain rules no candidate cut makes progress (every piece has at least the part's two
+  // corners): the template's fallback is all a policy may do. Under cut_smooth_parts some cuts do.
+  int plain_progress = 0, cutting_progress = 0;
+  for (const RegionAction& a : region_candidates(part)) {
+    if (a.kind != RegionAction::Kind::Cut) continue;
+    const std::vector<Region> pieces = cut_region(part, a.cut).pieces;
+    plain_progress += makes_progress(part, pieces, plain);
+    cutting_progress += makes_progress(part, pieces, cutting);
+  }
+  CHECK(plain_progress == 0);
+  CHECK(cutting_progress > 0);
+  CHECK(progress_action(part, plain).kind == RegionAction::Kind::Template);
+  // The search (mesh preset) takes the template under the plain rules; with the flag it cuts, and
+  // every piece it finishes has four corners or is a template of a simpler part.
+  RegionEpisodeOptions options;
+  options.reward = RewardPreset::Mesh;
+  RegionSearchPolicy search;
+  const RegionDecomposition before = decompose_region(part, search, options);
+  REQUIRE(before.complete());
+  CHECK(before.finished.size() == 1);
+  options.cut_smooth_parts = true;
+  const RegionDecomposition after = decompose_region(part, search, options);
+  REQUIRE(after.complete());
+  CHECK(after.finished.size() >= 2);
+  CHECK(after.rules.cut_smooth_parts);
+  double area = 0.0;
+  for (const FinishedRegion& f : after.finished) area += f.region.area();
+  CHECK(area == Approx(part.area()).epsilon(1e-6));  // the cuts end on the face's lattice
+  // A disk, which the smooth template takes, is no more complex under the flag.
+  Ring disk;
+  for (int k = 0; k < 24; ++k) disk.push_back({std::cos(k * M_PI / 12), std::sin(k * M_PI / 12)});
+  const Region round(disk, {}, 1e-7);
+  REQUIRE(smooth_template(round, plain));
+  CHECK(part_complexity(round, cutting).corners == part_complexity(round, plain).corners);
+}

@@ -1,7 +1,10 @@
 #include "support/test_shapes.h"
 
 #include <filesystem>
+#include <mutex>
 #include <random>
+#include <system_error>
+#include <vector>
 
 #include "core/geometry/tolerance.h"
 #include "core/geometry/validate_polygon.h"
@@ -55,11 +58,36 @@ std::vector<Region> face_and_first_pieces(const Region& face, size_t count) {
   return parts;
 }
 
+namespace {
+
+// The folders made by temporary_folder, removed when the test program exits (they used to be left
+// in /tmp: thousands after a few runs).
+struct TemporaryFolders {
+  std::mutex mutex;
+  std::vector<std::filesystem::path> folders;
+  ~TemporaryFolders() {
+    for (const std::filesystem::path& folder : folders) {
+      std::error_code ignored;
+      std::filesystem::remove_all(folder, ignored);
+    }
+  }
+};
+
+TemporaryFolders& temporary_folders() {
+  static TemporaryFolders folders;
+  return folders;
+}
+
+}  // namespace
+
 std::string temporary_folder(const std::string& name) {
   namespace fs = std::filesystem;
   std::random_device random;
   const fs::path folder = fs::temp_directory_path() / ("autoblock-test-" + name + "-" + std::to_string(random()));
   fs::create_directories(folder);
+  TemporaryFolders& all = temporary_folders();
+  const std::lock_guard<std::mutex> lock(all.mutex);
+  all.folders.push_back(folder);
   return folder.string();
 }
 

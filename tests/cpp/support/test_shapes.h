@@ -37,7 +37,7 @@ Region region_of(const RectilinearPolygon& polygon);
 // shapes for property tests of cuts and scores.
 std::vector<Region> face_and_first_pieces(const Region& face, size_t count);
 
-// A fresh empty temporary folder, removed by nobody (the system's temp cleaner does it).
+// A fresh empty temporary folder, removed with its contents when the test program exits.
 std::string temporary_folder(const std::string& name);
 
 }  // namespace autoblock::test
