@@ -140,6 +140,10 @@ void add_train_command(CLI::App& app) {
       }
     };
     callbacks.should_stop = [] { return interrupted.load(); };
+    callbacks.on_status = [](const std::string& line) {
+      std::fprintf(stderr, "train: %s...\n", line.c_str());
+      std::fflush(stderr);
+    };
     const TrainingOutcome outcome = run_training_job(job, callbacks);
     progress.finish();
     std::signal(SIGINT, SIG_DFL);

@@ -49,7 +49,8 @@ struct PolicySettings {
                               // do auto and learned policies
   std::string reward;         // the preset optimal maximises (a name of reward_preset_names(); empty: paper)
   double general_time_limit = 2.0;  // seconds per face (<= 0: unlimited) for the general engine's search
-                                    // (auto, search), after which progress cuts finish the parts
+                                    // (auto, search), after which progress cuts finish the parts, and for
+                                    // a learned policy on a general face (then greedy finishes them)
   int general_search_width = 0;     // the general search's candidates expanded per part (0: its default)
 };
 

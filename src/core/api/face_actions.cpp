@@ -72,7 +72,9 @@ std::unique_ptr<RegionPolicy> general_policy(const std::string& name, const Poli
                        "other angles: use one of " + list + " or a policy trained since (sac-mesh, sac-paper)");
     }
     if (own_reward) *own_reward = learned->reward();
-    return policy;
+    // The search's budget bounds a learned policy too: past it, greedy finishes the parts left.
+    return std::make_unique<TimedRegionPolicy>(std::move(policy),
+                                               settings.general_time_limit > 0 ? settings.general_time_limit : 0.0);
   }
   throw InputError("the policy '" + name + "' works on faces whose edges run along two perpendicular directions; "
                    "this face has edges at other angles: use one of " + list + " or a lookahead agent's policy");

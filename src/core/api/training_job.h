@@ -68,6 +68,9 @@ struct TrainingCallbacks {
   std::function<void(const EpisodeRecord& record, bool earlier)> on_episode;
   // Asked between episodes: true stops the run (a checkpoint is written).
   std::function<bool()> should_stop;
+  // A line on what the run is doing before its first episode (the data read, the reference returns
+  // computed: the search on every general test face, up to its time limit each).
+  std::function<void(const std::string& line)> on_status;
 };
 
 struct TrainingOutcome {

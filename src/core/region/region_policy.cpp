@@ -7,8 +7,10 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <tuple>
 #include <unordered_map>
+#include <utility>
 
 #include "core/region/region_candidates.h"
 #include "core/region/region_reward.h"
@@ -171,6 +173,26 @@ std::vector<ScoredAction> score_candidates(const Region& part, double face_size,
     if (g.outcome) scored.push_back({action, g.outcome, g.reward});
   }
   return scored;
+}
+
+TimedRegionPolicy::TimedRegionPolicy(std::unique_ptr<RegionPolicy> policy, double seconds)
+    : policy_(std::move(policy)), seconds_(seconds) {
+  if (!policy_) throw std::invalid_argument("TimedRegionPolicy: no policy");
+}
+
+RegionAction TimedRegionPolicy::choose(const RegionEpisode& episode) {
+  const auto now = std::chrono::steady_clock::now();
+  if (!started_ || episode.face().hash() != face_hash_ || episode.steps() == 0) {
+    started_ = true;
+    capped_ = false;
+    face_hash_ = episode.face().hash();
+    deadline_ = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds_));
+  }
+  if (seconds_ > 0.0 && now > deadline_) {
+    capped_ = true;
+    return greedy_.choose(episode);
+  }
+  return policy_->choose(episode);
 }
 
 RegionAction RegionGreedyPolicy::choose(const RegionEpisode& episode) {

@@ -47,6 +47,29 @@ class RegionRandomPolicy : public RegionPolicy {
   std::mt19937_64 rng_;
 };
 
+// A policy with a time budget per face (a learned policy on general faces: what the grid's learned
+// policies do under --time-limit): the wrapped policy chooses until `seconds` have passed since its
+// first choice on the face, then greedy finishes the parts left and time_capped() says so. A new face
+// (another face, or an episode at its first step) starts the clock again.
+// Inputs: policy, not null; seconds (<= 0: no limit, the policy alone).
+class TimedRegionPolicy : public RegionPolicy {
+ public:
+  TimedRegionPolicy(std::unique_ptr<RegionPolicy> policy, double seconds);
+  std::string name() const override { return policy_->name(); }
+  RegionAction choose(const RegionEpisode& episode) override;
+  bool time_capped() const override { return capped_ || policy_->time_capped(); }
+  RegionPolicy& inner() { return *policy_; }
+
+ private:
+  std::unique_ptr<RegionPolicy> policy_;
+  double seconds_;
+  RegionGreedyPolicy greedy_;
+  size_t face_hash_ = 0;
+  bool started_ = false;
+  bool capped_ = false;
+  std::chrono::steady_clock::time_point deadline_;
+};
+
 // The best candidate by immediate reward, with its outcome (shared by greedy and search).
 struct ScoredAction {
   RegionAction action;

@@ -1,6 +1,7 @@
 // The learned-policy runtime (core/api/learned_runtime.h) over the agents, policy files and the
 // trainer: the one entry point of libautoblock_learn.so.
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 
@@ -68,6 +69,8 @@ nlohmann::json set_json(const std::string& folder, const GeneratedSet& generated
   return folder;
 }
 
+constexpr double kReferenceOptimalSeconds = 30.0;
+
 // A baseline's mean return over the set (the curves' reference lines): "optimal" or "greedy" on
 // rectilinear faces; on general faces, where no exact optimum is known, "optimal" is the search.
 double mean_return(const TrainingSet& set, const std::string& policy, RewardPreset reward) {
@@ -78,7 +81,7 @@ double mean_return(const TrainingSet& set, const std::string& policy, RewardPres
   for (const GridFace& face : set.faces) {
     BaselineOptions baseline;
     baseline.reward = reward;
-    baseline.optimal_seconds = 30;
+    baseline.optimal_seconds = kReferenceOptimalSeconds;
     auto p = make_baseline_policy(policy, face.size, baseline);
     total += decompose_face(face, *p, options).total_return;
   }
@@ -189,6 +192,13 @@ TrainingOutcome train(const TrainingJob& job, const TrainingCallbacks& callbacks
   const RewardPreset reward = trainer->agent()->config().reward;
   outcome.reward = reward_preset_name(reward);
   const TrainingSet& test = trainer->test_set();
+  if (callbacks.on_status) {
+    char line[240];
+    std::snprintf(line, sizeof line, "reference returns of the test faces: the exact search on %zu (up to %g s each), "
+                  "the search on %zu general ones (up to %g s each), greedy on all", test.faces.size(),
+                  kReferenceOptimalSeconds, test.general.size(), RegionSearchOptions{}.time_limit);
+    callbacks.on_status(line);
+  }
   outcome.optimal_test_return = mean_return(test, "optimal", reward);
   outcome.greedy_test_return = mean_return(test, "greedy", reward);
   Reporting reporting{outcome.log, outcome.curves, "AutoBlock SAC training (" + outcome.reward + " reward)",

@@ -338,7 +338,16 @@ TEST_CASE("a lookahead agent's trained policy decomposes general faces by name; 
     CHECK(d.region.policy == name);
     CHECK(d.region.reward == (std::string(name) == "sac-mesh" ? RewardPreset::Mesh : RewardPreset::Paper));
     CHECK(d.block_faces.size() == d.region.finished.size());
+    CHECK_FALSE(d.region.time_capped);
   }
+  // The general time limit bounds a learned policy too: past it greedy finishes, and the result says so.
+  settings.policy = "sac-mesh";
+  settings.policy_settings.general_time_limit = 1e-6;
+  const FaceDecomposition capped = decompose_input_face(face, settings);
+  CHECK(capped.region.complete());
+  CHECK(capped.region.time_capped);
+  CHECK(capped.region.policy == "sac-mesh");
+  settings.policy_settings.general_time_limit = 2.0;
   settings.policy = "sac-faithful";
   CHECK_THROWS_WITH(decompose_input_face(face, settings), Catch::Contains("the paper's agent"));
   CHECK_THROWS_AS(decompose_input_face(face, settings), InputError);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cmath>
 #include <random>
+#include <thread>
 
 #include <catch2/catch.hpp>
 
@@ -360,4 +361,57 @@ TEST_CASE("a part with two corners that the smooth template does not take: cut u
   const Region round(disk, {}, 1e-7);
   REQUIRE(smooth_template(round, plain));
   CHECK(part_complexity(round, cutting).corners == part_complexity(round, plain).corners);
+}
+
+namespace {
+
+// A policy that counts its choices and takes 2 ms over each (a slow learned policy's stand-in).
+class SlowGreedy : public RegionPolicy {
+ public:
+  std::string name() const override { return "slow"; }
+  RegionAction choose(const RegionEpisode& episode) override {
+    ++calls;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    return greedy.choose(episode);
+  }
+  int calls = 0;
+  RegionGreedyPolicy greedy;
+};
+
+}  // namespace
+
+TEST_CASE("a timed policy: past its budget greedy finishes the face, and a new face starts the clock again",
+          "[region][policy]") {
+  std::mt19937_64 rng(20261204);
+  GeneralOptions generate;
+  generate.min_vertices = generate.max_vertices = 16;
+  const Region face = face_region(generate_general_shape(rng, generate));
+  RegionEpisodeOptions options;
+  options.reward = RewardPreset::Mesh;
+  // No budget: the wrapped policy makes every choice.
+  {
+    auto slow = std::make_unique<SlowGreedy>();
+    SlowGreedy* inner = slow.get();
+    TimedRegionPolicy timed(std::move(slow), 0.0);
+    const RegionDecomposition d = decompose_region(face, timed, options);
+    REQUIRE(d.complete());
+    CHECK(d.policy_steps >= 3);
+    CHECK(inner->calls == d.policy_steps);
+    CHECK_FALSE(d.time_capped);
+  }
+  // A budget of a microsecond: the first choice is the policy's, the others greedy's; the same
+  // decomposition (the stand-in is greedy), complete, and reported as capped.
+  auto slow = std::make_unique<SlowGreedy>();
+  SlowGreedy* inner = slow.get();
+  TimedRegionPolicy timed(std::move(slow), 1e-6);
+  const RegionDecomposition d = decompose_region(face, timed, options);
+  REQUIRE(d.complete());
+  CHECK(inner->calls == 1);
+  CHECK(d.time_capped);
+  RegionGreedyPolicy greedy;
+  CHECK(decompose_region(face, greedy, options).finished.size() == d.finished.size());
+  // The next face (an episode at its first step) gets the policy again.
+  const RegionDecomposition again = decompose_region(face, timed, options);
+  CHECK(inner->calls == 2);
+  CHECK(again.time_capped);
 }

@@ -100,9 +100,9 @@ TEST_CASE("the continuous agent's Bellman target counts a child's template as on
   const float finish = template_choice_reward(pentagon, RewardPreset::Mesh, 5.0, BlockRules{});
   REQUIRE_FALSE(std::isnan(finish));
   CHECK(std::isnan(template_choice_reward(l, RewardPreset::Mesh, 5.0, BlockRules{})));  // not convex
-  Transition done{ls, 2, 0, -1.5f, {}};
+  Transition done{ls, 2, 0, -1.5f, {}, 0.0f, {}};
   done.angle = 0.25f;
-  Transition tree{ls, 1, 0, -2.0f, {ps, ls}};
+  Transition tree{ls, 1, 0, -2.0f, {ps, ls}, 0.0f, {}};
   tree.angle = -0.5f;
   tree.children_template = {finish, kNoTemplateReward};
   const double tau = agent.vertex_temperature();
@@ -137,7 +137,7 @@ TEST_CASE("the continuous actor learns the angle its critics value most", "[sac]
   std::mt19937_64 rng(2);
   std::vector<Transition> memory;
   for (int k = 0; k < 256; ++k) {
-    Transition t{state, 2, 0, 0.0f, {}};
+    Transition t{state, 2, 0, 0.0f, {}, 0.0f, {}};
     t.angle = static_cast<float>(-1.0 + 2.0 * (k + 0.5) / 256.0);
     t.reward = static_cast<float>(-8.0 * (t.angle - 0.4) * (t.angle - 0.4));
     memory.push_back(t);
@@ -158,7 +158,7 @@ TEST_CASE("the continuous actor learns the angle its critics value most", "[sac]
 TEST_CASE("the replay buffer keeps the angle and the template rewards, and reads its first version", "[sac][continuous]") {
   const auto state = general_state(region(test::l_shape()), GraphOptions{});
   ReplayBuffer buffer(4);
-  Transition t{state, 1, 0, -2.5f, {state, state}};
+  Transition t{state, 1, 0, -2.5f, {state, state}, 0.0f, {}};
   t.angle = -0.75f;
   t.children_template = {1.25f, kNoTemplateReward};
   buffer.add(t);
@@ -172,7 +172,7 @@ TEST_CASE("the replay buffer keeps the angle and the template rewards, and reads
   // Version 1 (before the continuous agent): no angle, no template rewards. Rewritten from version
   // 2's bytes of a grid transition without children.
   ReplayBuffer grid(2);
-  grid.add(Transition{state, 3, 1, 4.5f, {}});
+  grid.add(Transition{state, 3, 1, 4.5f, {}, 0.0f, {}});
   std::string bytes = grid.serialize();
   const std::uint32_t one = 1;
   std::memcpy(&bytes[4], &one, sizeof one);
@@ -186,7 +186,7 @@ TEST_CASE("the replay buffer keeps the angle and the template rewards, and reads
   CHECK(old.at(0).angle == 0.0f);
   CHECK(old.at(0).children_template.empty());
   // A transition whose angle is outside [-1, 1] is corrupt.
-  Transition wild{state, 1, 0, 0.0f, {}};
+  Transition wild{state, 1, 0, 0.0f, {}, 0.0f, {}};
   wild.angle = 3.0f;
   ReplayBuffer bad(1);
   bad.add(wild);
@@ -240,7 +240,7 @@ TEST_CASE("the paper agent's replay memory holds both buffers and reads the old 
   CHECK(copy.serialize_memory() == bytes);
   // The old form: the grid's buffer alone.
   ReplayBuffer grid(8);
-  grid.add(Transition{general_state(region(test::l_shape()), config.graph), 0, 1, 1.0f, {}});
+  grid.add(Transition{general_state(region(test::l_shape()), config.graph), 0, 1, 1.0f, {}, 0.0f, {}});
   PaperAgent old(config);
   old.deserialize_memory(grid.serialize());
   CHECK_THROWS_AS(old.deserialize_memory("ABPM"), InputError);

@@ -30,8 +30,8 @@ TEST_CASE("SAC losses on a tiny hand-made batch match their formulas", "[sac]") 
                                  config.graph);
   // Transition 1: cut the L at its re-entrant corner (vertex 3) vertically, reward 10.28, done.
   // Transition 2: a cut of the U that left two children (the L, twice, for the arithmetic).
-  Transition done{l, 3, 1, 10.28f, {}};
-  Transition tree{u, 4, 0, 5.58f, {l, l}};
+  Transition done{l, 3, 1, 10.28f, {}, 0.0f, {}};
+  Transition tree{u, 4, 0, 5.58f, {l, l}, 0.0f, {}};
   // Before the update the target networks equal the online ones: W(L) = tau logsumexp(V(L)/tau).
   const double tau = agent.vertex_temperature();
   const double w = soft_value(agent.vertex_values(*l), tau);
@@ -52,7 +52,7 @@ TEST_CASE("the critics' loss is the squared error against the Bellman target", "
   SacAgent agent(config);
   const auto l = make_part_state(test::grid_face_of(test::l_shape()).whole, config.graph);
   // Terminal transitions only: y = r. The critics are fresh: Q_i(o)[a] are their outputs now.
-  Transition a{l, 3, 1, 4.0f, {}}, b{l, 0, 0, -3.0f, {}};
+  Transition a{l, 3, 1, 4.0f, {}, 0.0f, {}}, b{l, 0, 0, -3.0f, {}, 0.0f, {}};
   const auto metrics = agent.update({&a, &b});
   // Mean of y over the batch.
   CHECK(metrics.at("mean_target") == Approx(0.5));
@@ -68,7 +68,7 @@ TEST_CASE("the temperatures move towards their target entropies", "[sac]") {
   config.direction_target_entropy = 0.05;  // far below the initial ~ln 2: alpha must fall
   SacAgent agent(config);
   const auto l = make_part_state(test::grid_face_of(test::l_shape()).whole, config.graph);
-  Transition a{l, 3, 1, 4.0f, {}};
+  Transition a{l, 3, 1, 4.0f, {}, 0.0f, {}};
   const double alpha0 = agent.direction_temperature();
   for (int k = 0; k < 50; ++k) agent.update({&a});
   CHECK(agent.direction_temperature() < alpha0);
@@ -80,7 +80,7 @@ namespace {
 // updates on one terminal transition per direction there (rewards: horizontal, vertical).
 double p_vertical_after(SacAgent& agent, const std::shared_ptr<const PartState>& l, float horizontal, float vertical,
                         int updates) {
-  Transition h{l, 3, 0, horizontal, {}}, v{l, 3, 1, vertical, {}};
+  Transition h{l, 3, 0, horizontal, {}, 0.0f, {}}, v{l, 3, 1, vertical, {}, 0.0f, {}};
   for (int k = 0; k < updates; ++k) agent.update({&h, &v});
   return agent.direction_probabilities(l->observations[3])[1];
 }
