@@ -1009,8 +1009,17 @@ class TestTrainPanel(GuiTestCase):
             self.assertIn("Cancelled", form.statusLabel.text())
             self.assertFalse(form.defaultButton.isEnabled())
             self.assertTrue(form.resume.isEnabled())
+            # Start from: random weights by default, a shipped trained policy by name, nothing when resuming.
+            self.assertEqual(form.init.itemText(0), "random weights")
+            self.assertIn("sac-mesh", [form.init.itemText(k) for k in range(form.init.count())])
+            self.assertNotIn("greedy", [form.init.itemText(k) for k in range(form.init.count())])
+            self.assertIsNone(panel.request().init)
+            form.init.setCurrentText("sac-mesh")
+            self.assertEqual(panel.request().init, "sac-mesh")
             form.resume.setChecked(True)
             self.assertTrue(panel.request().resume)
+            self.assertIsNone(panel.request().init)
+            self.assertFalse(form.init.isEnabled())
             # Bad input is reported in the panel, nothing starts.
             form.outputEdit.setText("/no/such/folder/policy.pt")
             form.startButton.click()

@@ -1,5 +1,5 @@
 """The Train task panel (resources/ui/train.ui): data (folders or generated shapes), episodes, seed, reward
-preset and output file; a background run with a progress bar, a live plot of training and test return,
+preset, output file and what a fresh run starts from (random weights or a trained policy); a background run with a progress bar, a live plot of training and test return,
 Cancel, resume from the checkpoint, and making the result the default policy.
 
 It drives a training backend through the protocol of training.py: by default the core's trainer, started
@@ -36,6 +36,7 @@ def show(backend=None):
 
 class TrainPanel:
     POLL_MS = 200
+    RANDOM_WEIGHTS = "random weights"
 
     def __init__(self, backend=None):
         self.native = backend is None  # the core's trainer, started through its echoed console call
@@ -58,6 +59,15 @@ class TrainPanel:
                             "mesh (few, fat blocks; the shipped sac-mesh, auto's fallback, was trained with it)")
         if preferences.params().GetString(preferences.REWARD_PRESET, "") in presets:
             f.reward.setCurrentText(preferences.params().GetString(preferences.REWARD_PRESET, ""))
+        # Start from: random weights, or a shipped trained policy (or a policy file typed in): --init.
+        f.init.addItem(self.RANDOM_WEIGHTS)
+        try:
+            from .. import console
+
+            f.init.addItems([n for n in console.policy_names() if console.policy_info(n)["learned"]])
+        except Exception:
+            pass
+        f.resume.toggled.connect(lambda on: f.init.setEnabled(not on))
         data = os.path.join(paths.MODELS, "data")
         f.trainFolderEdit.setText(os.path.join(data, "train"))
         f.testFolderEdit.setText(os.path.join(data, "test"))
@@ -115,7 +125,14 @@ class TrainPanel:
             test_folder=None if test_generate else (f.testFolderEdit.text().strip() or None),
             test_generate=test_generate, episodes=f.episodes.value(), seed=f.seed.value(),
             reward=f.reward.currentText(), resume=f.resume.isChecked(), threads=preferences.threads(),
-            eval_every=f.evalEvery.value())
+            eval_every=f.evalEvery.value(), init=self._init())
+
+    def _init(self):
+        """The policy a fresh run starts from (None: random weights; a resumed run keeps its checkpoint's)."""
+        text = self.form.init.currentText().strip()
+        if self.form.resume.isChecked() or not text or text == self.RANDOM_WEIGHTS:
+            return None
+        return text
 
     # -- running ----------------------------------------------------------------------------------------
     def _set_running(self, running):
