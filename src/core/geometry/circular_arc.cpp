@@ -104,21 +104,60 @@ int FaceArcs::arc_of_point(Point2 p) const {
   return -1;
 }
 
-int FaceArcs::arc_of_chord(Point2 a, Point2 b) const {
+namespace {
+
+// Both ends and the middle of a -> b on the arc's polygon, the ends at most two chord steps apart (the
+// default's, or a short arc's one chord: the whole arc) as seen from the centre.
+bool chord_on_arc(const CircularArc& arc, Point2 a, Point2 b, double tolerance) {
+  const Point2 m{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
+  const double max_turn = std::max(2.0 * kArcStepDegrees * kPi / 180.0, 2.0 * std::fabs(arc.sweep) / arc_chord_count(arc));
+  if (!point_on_arc_polygon(a, arc, tolerance) || !point_on_arc_polygon(b, arc, tolerance) ||
+      !point_on_arc_polygon(m, arc, tolerance)) {
+    return false;
+  }
+  const double ta = std::atan2(a.y - arc.center.y, a.x - arc.center.x);
+  const double tb = std::atan2(b.y - arc.center.y, b.x - arc.center.x);
+  double turn = std::fabs(ta - tb);
+  if (turn > kPi) turn = kTwoPi - turn;
+  return turn <= max_turn;
+}
+
+}  // namespace
+
+int FaceArcs::arc_of_mesh_edge(Point2 a, Point2 b) const {
   const Point2 m{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
   for (size_t k = 0; k < arcs.size(); ++k) {
     const CircularArc& arc = arcs[k];
-    // Two chord steps: the default's, or a short arc's one chord (the whole arc).
-    const double max_turn = std::max(2.0 * kArcStepDegrees * kPi / 180.0, 2.0 * std::fabs(arc.sweep) / arc_chord_count(arc));
-    if (!point_on_arc_polygon(a, arc, tolerance) || !point_on_arc_polygon(b, arc, tolerance) ||
-        !point_on_arc_polygon(m, arc, tolerance)) {
+    if (arc.outside) {  // a hole's arc or a concave fillet: its chords only (arc_of_chord)
+      if (chord_on_arc(arc, a, b, tolerance)) return static_cast<int>(k);
       continue;
     }
+    const double step = std::fabs(arc.sweep) / arc_chord_count(arc);
+    const double max_turn = std::max(kMeshEdgeArcSteps * kArcStepDegrees * kPi / 180.0, 2.0 * step);
+    if (!point_on_arc_polygon(a, arc, tolerance) || !point_on_arc_polygon(b, arc, tolerance)) continue;
     const double ta = std::atan2(a.y - arc.center.y, a.x - arc.center.x);
     const double tb = std::atan2(b.y - arc.center.y, b.x - arc.center.x);
     double turn = std::fabs(ta - tb);
     if (turn > kPi) turn = kTwoPi - turn;
-    if (turn <= max_turn) return static_cast<int>(k);
+    if (turn > max_turn + 1e-9 + tolerance / arc.radius) continue;  // (an edge of exactly max_turn, rounded)
+    // The middle: no nearer the centre than the chord of that turn (less the arc's own band), not
+    // outside the circle, and within the arc's directions.
+    const double d = std::hypot(m.x - arc.center.x, m.y - arc.center.y);
+    const double inner = arc.radius * std::min(std::cos(0.5 * turn), std::cos(0.5 * step));
+    if (d < inner - tolerance || d > arc.radius + tolerance) continue;
+    if (!full_circle(arc)) {
+      const double slack = tolerance / arc.radius;
+      const double s = along(std::atan2(m.y - arc.center.y, m.x - arc.center.x), arc);
+      if (!(s <= std::fabs(arc.sweep) + slack || s >= kTwoPi - slack)) continue;
+    }
+    return static_cast<int>(k);
+  }
+  return -1;
+}
+
+int FaceArcs::arc_of_chord(Point2 a, Point2 b) const {
+  for (size_t k = 0; k < arcs.size(); ++k) {
+    if (chord_on_arc(arcs[k], a, b, tolerance)) return static_cast<int>(k);
   }
   return -1;
 }

@@ -26,6 +26,16 @@ constexpr double kArcToleranceQuanta = 4.0;
 // The largest turn of one chord of a polygonised arc, in degrees (a full circle: 24 chords).
 constexpr double kArcStepDegrees = 15.0;
 
+// The most chord steps one boundary edge of a mesh may span along a convex arc (the face inside its
+// circle: a rounded corner or tip; FaceArcs::arc_of_mesh_edge): 3, 45 degrees. A mesh takes one
+// interval per chord step as the minimum on an arc; a poor one is made again with that as a target
+// and this as the minimum on a convex arc (mesh_region_decomposition), so that a block side holding a
+// tight arc (a rounded acute tip) need not carry far more intervals than its length asks for, its
+// quads fanning into the tip from the shorter side opposite. Along a hole's arc or a concave fillet
+// (CircularArc::outside) one chord step stays the minimum: a hole keeps its nodes (stress
+// concentrates there).
+constexpr int kMeshEdgeArcSteps = 3;
+
 struct CircularArc {
   Point2 center;
   double radius = 0.0;
@@ -110,6 +120,12 @@ struct FaceArcs {
   //         and the middle lie on, the ends at most two chord steps apart as seen from the centre (so
   //         a diameter, or a cut across the circle, is no chord of it), or -1.
   int arc_of_chord(Point2 a, Point2 b) const;
+  // Inputs: a, b, the ends of a mesh's boundary edge. Output: the index of an arc that both ends lie
+  //         on, at most kMeshEdgeArcSteps chord steps apart as seen from the centre (or the whole of a
+  //         short arc, two of its chord steps), the edge's middle on the chord between them (inside
+  //         the circle by the edge's own sagitta) and within the arc's directions; along an arc with
+  //         `outside` (a hole's), as arc_of_chord; or -1.
+  int arc_of_mesh_edge(Point2 a, Point2 b) const;
 };
 
 }  // namespace autoblock

@@ -112,7 +112,8 @@ IntervalAssignment assign_edge_intervals(const BlockModel& model, const Interval
     if (e < options.edge_minimum.size()) least = std::max(least, options.edge_minimum[e]);
     glp_set_col_bnds(lp, n_col(e), GLP_DB, least, std::max<double>(least, kMaxEdgeIntervals));
     glp_set_col_bnds(lp, t_col(e), GLP_LO, 0.0, 0.0);
-    glp_set_obj_coef(lp, t_col(e), mean_weight);
+    const bool targeted = e < options.edge_target.size() && options.edge_target[e] > 0.0;
+    glp_set_obj_coef(lp, t_col(e), mean_weight + (targeted ? options.edge_target_weight : 0.0));
   }
   std::vector<int> ia{0}, ja{0};
   std::vector<double> ar{0.0};
@@ -128,7 +129,8 @@ IntervalAssignment assign_edge_intervals(const BlockModel& model, const Interval
     ar.push_back(value);
   };
   for (size_t e = 0; e < n_edges; ++e) {
-    const double g = model.edges[e].length / h;
+    double g = model.edges[e].length / h;
+    if (e < options.edge_target.size()) g = std::max(g, options.edge_target[e]);
     // t_e - slope n_e >= intercept for the secant between consecutive breakpoints, and T - t_e >= 0.
     // Breakpoints: every integer down to 10, then 10 % apart down to 1 (between sparse breakpoints the
     // secant lies above f_e: there the program sees a slightly larger deviation than the true one).

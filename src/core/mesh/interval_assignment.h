@@ -53,6 +53,13 @@ struct IntervalOptions {
   double time_limit = 30.0;  // seconds for GLPK
   int min_intervals = 1;     // a general face's model edges (edge_intervals.h): at least this many each
   std::vector<int> edge_minimum;  // a general face's: per model edge, at least this many (empty: none)
+  // A general face's: per model edge, a count the program aims at when it is above the edge's length
+  // over h (an arc's chord steps); deviations are measured from it, so it is a target, not a bound
+  // (empty, or 0: length over h).
+  std::vector<double> edge_target;
+  // The weight of a targeted edge's deviation in the objective, beside the largest deviation's 1: the
+  // program keeps the target unless missing it lowers the largest deviation more than this much.
+  double edge_target_weight = 0.1;
 };
 
 struct IntervalAssignment {

@@ -75,7 +75,7 @@ Conformity check_conformity(const QuadMesh& mesh, const std::vector<Ring>& loops
       ++c.boundary_edges;
       const Point2& a = mesh.nodes[static_cast<size_t>(e.a)];
       const Point2& b = mesh.nodes[static_cast<size_t>(e.b)];
-      const int arc = arcs.arc_of_chord(a, b);
+      const int arc = arcs.arc_of_mesh_edge(a, b);
       if (arc >= 0) {
         // Run as its quad runs it (the mesh on its left): the quads miss the gap to the arc.
         const ArcGap gap = e.forward == 1 ? arc_gap(arcs.arcs[static_cast<size_t>(arc)], a, b)

@@ -66,12 +66,13 @@ double checked_target_size(const InputFace& face, const MeshOptions& options, Me
 // The user's fixed counts made by fix (per stretch), then the assignment by assign, into result.
 template <class Fix, class Assign>
 void assign_with_fixed(MeshResult& result, const MeshOptions& options, double h, Fix fix, Assign assign,
-                       const std::vector<int>& edge_minimum = {}) {
+                       const std::vector<int>& edge_minimum = {}, const std::vector<double>& edge_target = {}) {
   IntervalOptions interval_options;
   interval_options.target_size = h;
   interval_options.max_quads = options.max_quads;
   interval_options.min_intervals = options.min_edge_intervals;
   interval_options.edge_minimum = edge_minimum;
+  interval_options.edge_target = edge_target;
   for (const EdgeIntervals& e : options.fixed) interval_options.fixed.push_back(fix(e));
   result.fixed = interval_options.fixed;
   result.intervals = assign(interval_options);
@@ -87,6 +88,61 @@ int inverted_quads(const QuadMesh& mesh, std::vector<char>* parts) {
     if (parts) (*parts)[static_cast<size_t>(mesh.quad_block[k])] = 1;
   }
   return count;
+}
+
+// A general face's interval counts into r (r.block_model made), each model edge at least its
+// edge_minimum, arcs aiming at edge_target (IntervalOptions).
+void assign_arc_intervals(MeshResult& r, const MeshOptions& options, double h, double tolerance,
+                          const std::vector<int>& edge_minimum, const std::vector<double>& edge_target) {
+  assign_with_fixed(r, options, h, [&](const EdgeIntervals& e) {
+    return fixed_edge_intervals(r.block_model, e.a, e.b, e.intervals, tolerance);
+  }, [&](const IntervalOptions& o) { return assign_edge_intervals(r.block_model, o); }, edge_minimum, edge_target);
+  }
+
+// r's mesh and smoothing from its block model and intervals (assign_arc_intervals, with edge_minimum
+// and edge_target), twisted and folded parts made again as below.
+void mesh_blocks(MeshResult& r, const InputFace& face, const RegionDecomposition& d, const MeshOptions& options, double h,
+                 double tolerance, std::vector<int> edge_minimum, const std::vector<double>& edge_target) {
+  r.mesh = block_model_mesh(r.block_model, r.intervals.intervals, face.planar.z, &face.arcs);
+  r.smoothing = smooth_quad_mesh(r.mesh, options.smoothing_sweeps, kWorstRounds, &face.arcs);
+  // A thin part whose two long sides have their vertices at different places along it gets a twisted
+  // (inverted) quad when those sides carry few intervals, each vertex being a node: up to three times,
+  // the edges of the parts with an inverted quad get twice their count as a minimum, and intervals
+  // and mesh are made again (stopping where the quad limit or fixed counts forbid it).
+  for (int round = 0; round < 3; ++round) {
+    std::vector<char> twisted(d.finished.size(), 0);
+    if (inverted_quads(r.mesh, &twisted) == 0) break;
+    for (const ModelBlock& block : r.block_model.blocks) {
+      if (!twisted[static_cast<size_t>(block.part)]) continue;
+      for (const ModelSide& side : block.sides) {
+        for (const int e : side.edges) {
+          edge_minimum[static_cast<size_t>(e)] = std::max(edge_minimum[static_cast<size_t>(e)], 2 * r.intervals.intervals[static_cast<size_t>(e)]);
+        }
+      }
+    }
+    // assign_with_fixed changes r's intervals only when the assignment succeeds.
+    try {
+      assign_arc_intervals(r, options, h, tolerance, edge_minimum, edge_target);
+    } catch (const InputError&) {
+      break;  // too many quads, or the fixed counts forbid more: the mesh stays as it is
+    }
+    r.mesh = block_model_mesh(r.block_model, r.intervals.intervals, face.planar.z, &face.arcs);
+    r.smoothing = smooth_quad_mesh(r.mesh, options.smoothing_sweeps, kWorstRounds, &face.arcs);
+  }
+  // A fold that finer intervals do not undo (opposite sides spacing their nodes differently: a long
+  // side with a fillet facing a short arc): those parts' blocks are filled along their sides' lengths
+  // (transfinite_grid_by_length), kept if that leaves fewer inverted quads.
+  std::vector<char> folded(d.finished.size(), 0);
+  if (const int before = inverted_quads(r.mesh, &folded); before > 0) {
+    std::vector<char> by_length(r.block_model.blocks.size(), 0);
+    for (size_t b = 0; b < by_length.size(); ++b) by_length[b] = folded[static_cast<size_t>(r.block_model.blocks[b].part)];
+    QuadMesh again = block_model_mesh(r.block_model, r.intervals.intervals, face.planar.z, &face.arcs, &by_length);
+    const SmoothingReport smoothing = smooth_quad_mesh(again, options.smoothing_sweeps, kWorstRounds, &face.arcs);
+    if (inverted_quads(again, nullptr) < before) {
+      r.mesh = std::move(again);
+      r.smoothing = smoothing;
+    }
+  }
 }
 
 }  // namespace
@@ -175,20 +231,30 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   auto start = std::chrono::steady_clock::now();
   result.block_model = block_model(d, d.rules, q);
   merge_arc_chains(result.block_model, face.arcs);
-  // An edge along an arc turns at most one of the arc's chord steps per interval (as its chords had one
-  // interval at least each): a quad's edge along the arc stays within the band of the arc's polygon,
-  // where the conformity check finds it on the arc (FaceArcs::arc_of_chord).
-  std::vector<int> edge_minimum(result.block_model.edges.size(), 0);
-  for (size_t e = 0; e < edge_minimum.size(); ++e) {
+  // An edge along an arc gets at least one interval per chord step of the arc: a quad's edge along the
+  // arc is a chord the conformity check finds on the arc (FaceArcs::arc_of_mesh_edge). That minimum can
+  // make a block side holding a tight convex arc (a rounded acute tip) carry far more intervals than
+  // its length asks for, and its quads fan into the tip from the shorter side opposite. So a poor mesh
+  // (below kArcTargetsBelow of the topology bound) with a convex arc is made a second time with the
+  // chord steps as the program's targets instead (IntervalOptions::edge_target), a convex arc's edge
+  // turning by up to kMeshEdgeArcSteps chord steps, a hole's or a concave fillet's one as before; the
+  // better mesh is kept (MeshResult::arc_targets).
+  const size_t n_edges = result.block_model.edges.size();
+  std::vector<int> chord_minimum(n_edges, 0), relaxed_minimum(n_edges, 0);
+  std::vector<double> edge_target(n_edges, 0.0);
+  bool relaxable = false;
+  for (size_t e = 0; e < n_edges; ++e) {
     const ModelEdge& edge = result.block_model.edges[e];
     if (edge.arc < 0) continue;
     const CircularArc& arc = face.arcs.arcs[static_cast<size_t>(edge.arc)];
     const double step = std::fabs(arc.sweep) / arc_chord_count(arc);
-    edge_minimum[e] = std::max(1, static_cast<int>(std::ceil(std::fabs(edge.arc_sweep) / step - 1e-6)));
+    chord_minimum[e] = std::max(1, static_cast<int>(std::ceil(std::fabs(edge.arc_sweep) / step - 1e-6)));
+    edge_target[e] = chord_minimum[e];
+    const int most = arc.outside ? 1 : kMeshEdgeArcSteps;
+    relaxed_minimum[e] = std::max(1, static_cast<int>(std::ceil(std::fabs(edge.arc_sweep) / (most * step) - 1e-6)));
+    relaxable = relaxable || relaxed_minimum[e] < chord_minimum[e];
   }
-  assign_with_fixed(result, options, h, [&](const EdgeIntervals& e) {
-    return fixed_edge_intervals(result.block_model, e.a, e.b, e.intervals, tolerance);
-  }, [&](const IntervalOptions& o) { return assign_edge_intervals(result.block_model, o); }, edge_minimum);
+  assign_arc_intervals(result, options, h, tolerance, chord_minimum, {});
   result.interval_seconds = since(start);
 
   start = std::chrono::steady_clock::now();
@@ -196,54 +262,41 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   result.merge_seconds = since(start);
 
   start = std::chrono::steady_clock::now();
-  result.mesh = block_model_mesh(result.block_model, result.intervals.intervals, face.planar.z, &face.arcs);
-  result.smoothing = smooth_quad_mesh(result.mesh, options.smoothing_sweeps, kWorstRounds, &face.arcs);
-  // A thin part whose two long sides have their vertices at different places along it gets a twisted
-  // (inverted) quad when those sides carry few intervals, each vertex being a node: up to three times,
-  // the edges of the parts with an inverted quad get twice their count as a minimum, and intervals
-  // and mesh are made again (stopping where the quad limit or fixed counts forbid it).
-  for (int round = 0; round < 3; ++round) {
-    std::vector<char> twisted(d.finished.size(), 0);
-    if (inverted_quads(result.mesh, &twisted) == 0) break;
-    for (const ModelBlock& block : result.block_model.blocks) {
-      if (!twisted[static_cast<size_t>(block.part)]) continue;
-      for (const ModelSide& side : block.sides) {
-        for (const int e : side.edges) {
-          edge_minimum[static_cast<size_t>(e)] = std::max(edge_minimum[static_cast<size_t>(e)], 2 * result.intervals.intervals[static_cast<size_t>(e)]);
-        }
-      }
-    }
-    // assign_with_fixed changes result's intervals only when the assignment succeeds.
-    try {
-      assign_with_fixed(result, options, h, [&](const EdgeIntervals& e) {
-        return fixed_edge_intervals(result.block_model, e.a, e.b, e.intervals, tolerance);
-      }, [&](const IntervalOptions& o) { return assign_edge_intervals(result.block_model, o); }, edge_minimum);
-    } catch (const InputError&) {
-      break;  // too many quads, or the fixed counts forbid more: the mesh stays as it is
-    }
-    result.mesh = block_model_mesh(result.block_model, result.intervals.intervals, face.planar.z, &face.arcs);
-    result.smoothing = smooth_quad_mesh(result.mesh, options.smoothing_sweeps, kWorstRounds, &face.arcs);
-  }
-  // A fold that finer intervals do not undo (opposite sides spacing their nodes differently: a long
-  // side with a fillet facing a short arc): those parts' blocks are filled along their sides' lengths
-  // (transfinite_grid_by_length), kept if that leaves fewer inverted quads.
-  std::vector<char> folded(d.finished.size(), 0);
-  if (const int before = inverted_quads(result.mesh, &folded); before > 0) {
-    std::vector<char> by_length(result.block_model.blocks.size(), 0);
-    for (size_t b = 0; b < by_length.size(); ++b) by_length[b] = folded[static_cast<size_t>(result.block_model.blocks[b].part)];
-    QuadMesh again = block_model_mesh(result.block_model, result.intervals.intervals, face.planar.z, &face.arcs, &by_length);
-    const SmoothingReport smoothing = smooth_quad_mesh(again, options.smoothing_sweeps, kWorstRounds, &face.arcs);
-    if (inverted_quads(again, nullptr) < before) {
-      result.mesh = std::move(again);
-      result.smoothing = smoothing;
-    }
-  }
+  mesh_blocks(result, face, d, options, h, tolerance, chord_minimum, {});
   result.mesh_seconds = since(start);
 
   start = std::chrono::steady_clock::now();
   result.quality = mesh_quality(result.mesh);
   result.conformity = check_conformity(result.mesh, loops, tolerance, face.arcs);
   result.check_seconds = since(start);
+  if (!options.arc_targets || !relaxable || !result.conformity.conformal ||
+      result.quality.min_scaled_jacobian >= kArcTargetsBelow * result.topology_bound) {
+    return result;
+  }
+  start = std::chrono::steady_clock::now();
+  MeshResult again;
+  again.block_model = result.block_model;
+  try {
+    assign_arc_intervals(again, options, h, tolerance, relaxed_minimum, edge_target);
+    mesh_blocks(again, face, d, options, h, tolerance, relaxed_minimum, edge_target);
+  } catch (const InputError&) {
+    result.mesh_seconds += since(start);
+    return result;  // the fixed counts or the quad limit forbid it: the first mesh stands
+  }
+  const MeshQuality quality = mesh_quality(again.mesh);
+  if (quality.min_scaled_jacobian > result.quality.min_scaled_jacobian) {
+    Conformity conformity = check_conformity(again.mesh, loops, tolerance, face.arcs);
+    if (conformity.conformal) {
+      result.fixed = std::move(again.fixed);
+      result.intervals = std::move(again.intervals);
+      result.mesh = std::move(again.mesh);
+      result.smoothing = again.smoothing;
+      result.quality = quality;
+      result.conformity = std::move(conformity);
+      result.arc_targets = true;
+    }
+  }
+  result.mesh_seconds += since(start);
   return result;
 }
 

@@ -30,6 +30,10 @@ struct EdgeIntervals {
 // rectangles: nothing to smooth).
 constexpr int kDefaultSmoothingSweeps = 30;
 
+// A general face's mesh below this fraction of its topology bound (block.h) that has a convex arc is
+// made a second time with the arcs' chord steps as targets, not minima (mesh_region_decomposition).
+constexpr double kArcTargetsBelow = 0.85;
+
 struct MeshOptions {
   double size = 0.0;                 // target element size h; 0: the face's size / kDefaultSizeDivisions
   std::vector<EdgeIntervals> fixed;  // fixed interval counts
@@ -42,6 +46,9 @@ struct MeshOptions {
   // the hex sweep builds on). Its mesh is made from the block model and checked on its own (the
   // conformity check against the face's loops), so meshing a face alone can leave this off.
   bool occt_model = true;
+  // A general face's poor mesh with a convex arc is made again with the arcs' chord steps as targets
+  // (kArcTargetsBelow, MeshResult::arc_targets); false: the first mesh only.
+  bool arc_targets = true;
 };
 
 struct MeshResult {
@@ -61,6 +68,9 @@ struct MeshResult {
   double interval_seconds = 0.0;
   double mesh_seconds = 0.0;    // mapped meshing
   double check_seconds = 0.0;   // quality and conformity
+  // A general face's: the mesh kept was made with the arcs' chord steps as the interval program's
+  // targets rather than its minima (mesh_region_decomposition).
+  bool arc_targets = false;
 };
 
 // Inputs:  face; decomposition of it (complete); options.

@@ -74,6 +74,7 @@ nlohmann::json mesh_report_json(const std::string& input, const RegionDecomposit
   nlohmann::json report = common_report(input, d.policy, d.finished.size(), r, seconds, "edges",
                                         r.block_model.edges.size(), d.seconds);
   report["templates"] = d.templates;
+  report["intervals"]["arc_targets"] = r.arc_targets;
   report["smoothing"] = {{"sweeps", r.smoothing.sweeps},
                          {"moves", r.smoothing.moves},
                          {"min_scaled_jacobian_before", r.smoothing.min_before}};

@@ -262,6 +262,49 @@ TEST_CASE("a wedge rounded at both ends: the last try cuts it, and its mesh is k
   CHECK(d.region.rules.cut_smooth_parts);
 }
 
+TEST_CASE("a rounded acute tip: the arcs' chord steps as targets, not minima, keep its quads from fanning",
+          "[api][general][mesh][arc]") {
+  // Face 92 of the arc benchmark (`autoblock generate --kind arcs --seed 20261202`): a polygon whose acute
+  // tip is rounded by an arc of several chords. The block holding the tip has the arc on one side and a
+  // short side opposite; one interval per chord as a minimum makes that short side carry them all.
+  const InputFace face = load_input_face(std::string(AUTOBLOCK_SOURCE_DIR) + "/tests/data/arcs/rounded-tip.brep");
+  REQUIRE(face.is_general());
+  DecomposeSettings settings;
+  settings.policy_settings.general_time_limit = 0.0;
+  settings.occt_blocks = false;
+  const FaceDecomposition d = decompose_input_face(face, settings);
+  REQUIRE(d.region.complete());
+  MeshOptions options;
+  options.occt_model = false;
+  options.min_edge_intervals = d.region.min_edge_intervals;
+  options.general.reward = d.region.reward;
+  options.arc_targets = false;
+  const MeshResult minima = mesh_region_decomposition(face, d.region, options);
+  REQUIRE(minima.conformity.conformal);
+  CHECK_FALSE(minima.arc_targets);
+  CHECK(minima.quality.min_scaled_jacobian < kArcTargetsBelow * minima.topology_bound);
+  options.arc_targets = true;
+  const MeshResult targets = mesh_region_decomposition(face, d.region, options);
+  REQUIRE(targets.conformity.conformal);  // every boundary node on its arc, the chords within the rule
+  CHECK(targets.arc_targets);
+  CHECK(targets.quality.min_scaled_jacobian > minima.quality.min_scaled_jacobian + 0.1);
+  CHECK(targets.mesh.quads.size() < minima.mesh.quads.size());
+  // On a convex arc an edge spans at most kMeshEdgeArcSteps chord steps, on others one.
+  for (size_t e = 0; e < targets.block_model.edges.size(); ++e) {
+    const ModelEdge& edge = targets.block_model.edges[e];
+    if (edge.arc < 0) continue;
+    const CircularArc& arc = face.arcs.arcs[static_cast<size_t>(edge.arc)];
+    const double step = std::fabs(arc.sweep) / arc_chord_count(arc);
+    const double most = (arc.outside ? 1 : kMeshEdgeArcSteps) * step;
+    CHECK(std::fabs(edge.arc_sweep) / targets.intervals.intervals[e] <= most * (1.0 + 1e-5));  // (the counts round within 1e-6)
+    CHECK(minima.intervals.intervals[e] >= static_cast<int>(std::ceil(std::fabs(edge.arc_sweep) / step - 1e-6)));
+  }
+  // The whole route keeps it, and the report says so.
+  const FaceMeshing m = mesh_input_face(face, DecomposeSettings{}, MeshOptions{});
+  REQUIRE(m.result.conformity.conformal);
+  CHECK(face_meshing_json("tip", m)["intervals"]["arc_targets"] == m.result.arc_targets);
+}
+
 TEST_CASE("decompose keeps the decomposition mesh keeps; its cuts, replayed under its rules, mesh the same",
           "[api][general][mesh]") {
   // The hexagon above, whose first try is poor: the tries keep another width, other rules or finer

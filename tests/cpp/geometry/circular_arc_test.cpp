@@ -51,6 +51,33 @@ TEST_CASE("points and chords on an arc's polygon are found, others are not", "[g
   CHECK(project_to_circle(middle, arcs.arcs[0]).x == Approx(10 * std::cos(0.5 * (2 + 3) * kPi / 12)));
 }
 
+TEST_CASE("a mesh's boundary edge along an arc may turn by up to three chord steps, not more", "[geometry][arc]") {
+  FaceArcs arcs;
+  arcs.arcs.push_back(CircularArc{{0, 0}, 10.0, 0.0, 0.5 * kPi});  // the first quadrant: six 15-degree chords
+  arcs.tolerance = 1e-6;
+  const auto on = [](double degrees) { return Point2{10 * std::cos(degrees * kPi / 180), 10 * std::sin(degrees * kPi / 180)}; };
+  // Ends on the arc: 15, 45 (exactly kMeshEdgeArcSteps steps) and 44 degrees apart are edges along it;
+  // 50 and 90 degrees (its middle far inside the circle) are not, nor an edge past the arc's end, nor a
+  // radius.
+  CHECK(arcs.arc_of_mesh_edge(on(10), on(25)) == 0);
+  CHECK(arcs.arc_of_mesh_edge(on(30), on(75)) == 0);
+  CHECK(arcs.arc_of_mesh_edge(on(75), on(30)) == 0);
+  CHECK(arcs.arc_of_mesh_edge(on(1), on(45)) == 0);
+  CHECK(arcs.arc_of_mesh_edge(on(20), on(70)) == -1);
+  CHECK(arcs.arc_of_mesh_edge(on(0), on(90)) == -1);
+  CHECK(arcs.arc_of_mesh_edge(on(-20), on(10)) == -1);
+  CHECK(arcs.arc_of_mesh_edge(Point2{5, 0}, on(0)) == -1);
+  // The polygon's own chords (what the engines cut) stay what arc_of_chord finds: two steps at most.
+  CHECK(arcs.arc_of_chord(on(30), on(75)) == -1);
+  // A full circle (the face outside it: a hole) keeps its chords' rule: one chord step, or two.
+  FaceArcs hole;
+  hole.arcs.push_back(CircularArc{{0, 0}, 10.0, 0.0, -2 * kPi, true});
+  hole.tolerance = 1e-6;
+  CHECK(hole.arc_of_mesh_edge(on(-5), on(10)) == 0);
+  CHECK(hole.arc_of_mesh_edge(on(-20), on(25)) == -1);
+  CHECK(hole.arc_of_mesh_edge(on(-5), on(10)) == hole.arc_of_chord(on(-5), on(10)));
+}
+
 TEST_CASE("the gap between a segment and its arc against hand values", "[geometry][arc]") {
   const CircularArc circle2{{0, 0}, 2.0, 0.0, 2 * kPi}, circle3{{0, 0}, 3.0, 0.0, 2 * kPi};
   // A diameter cuts off a half disk; a chord of 90 degrees r^2 (pi / 4 - 1 / 2), positive with the

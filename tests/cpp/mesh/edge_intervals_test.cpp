@@ -54,6 +54,30 @@ TEST_CASE("edge intervals: a trapezoid's short side takes its long side's count"
   CHECK((n == 3 || n == 4));
 }
 
+TEST_CASE("edge intervals: a target count per edge is aimed at, and traded against the opposite side", "[mesh][intervals][general]") {
+  // Bottom 6, top 2 at h = 1 (3 or 4 without a target, as above). The top edge is given a target count:
+  // 6 agrees with the bottom, so both get 6; 12 disagrees, and the largest factor max(g / n, n / g) is
+  // smallest near sqrt(6 * 12), between the two (a target is not a minimum).
+  const BlockModel m = block_model(one_block(Ring{{0, 0}, {6, 0}, {4, 2}, {2, 2}}), BlockRules{}, kQ);
+  size_t top = m.edges.size();
+  for (size_t e = 0; e < m.edges.size(); ++e) {
+    if (m.vertices[static_cast<size_t>(m.edges[e].a)].y == 2 && m.vertices[static_cast<size_t>(m.edges[e].b)].y == 2) top = e;
+  }
+  REQUIRE(top < m.edges.size());
+  IntervalOptions options;
+  options.target_size = 1.0;
+  options.edge_target.assign(m.edges.size(), 0.0);
+  options.edge_target[top] = 6.0;
+  CHECK(assign_edge_intervals(m, options).intervals[top] == 6);
+  options.edge_target[top] = 12.0;
+  const int n = assign_edge_intervals(m, options).intervals[top];
+  CHECK(n >= 8);
+  CHECK(n <= 9);
+  options.edge_target[top] = 1.0;  // below the length over h: no effect
+  const int plain = assign_edge_intervals(m, options).intervals[top];
+  CHECK((plain == 3 || plain == 4));
+}
+
 TEST_CASE("edge intervals: a minimum count per edge holds where the size would give fewer", "[mesh][intervals][general]") {
   // A 4 x 1 rectangle at h = 2: the short sides would get one interval each.
   const BlockModel m = block_model(one_block(Ring{{0, 0}, {4, 0}, {4, 1}, {0, 1}}), BlockRules{}, kQ);
