@@ -22,7 +22,8 @@ NativeTrainingRun implements it over the native module's training call:
 options is TrainingRequest.to_options(). The call releases the GIL while the core trains, so FreeCAD stays
 responsive; after every episode it takes the GIL and calls progress with {"episode", "episodes", "return",
 "blocks", "steps", "complete", "shape", "seconds", "test_return" (None when not evaluated), "earlier" (an
-episode of a resumed run's history)}; progress returns False to stop. The result is {"policy_file" (None
+episode of a resumed run's history)}, and before the first episode with {"status", "episodes"} (what the
+run computes first: the test faces' reference returns); progress returns False to stop. The result is {"policy_file" (None
 when cancelled), "checkpoint", "log", "curves", "cancelled", "episodes_done", "episodes", "reward",
 "final_test_return"}. The Progress events add the training return averaged over the last 10 episodes, as
 the paper's curves show it.
@@ -138,12 +139,14 @@ class TrainingRequest:
 class Progress:
     """One progress event: episode of episodes; episode_return (that episode's return); train_return (the
     training return averaged over the last 10 episodes); test_return (the mean deterministic return on the test
-    set, None when not evaluated at this episode); earlier (an episode of a resumed run's history); message."""
+    set, None when not evaluated at this episode); earlier (an episode of a resumed run's history); message;
+    status (not empty for an event before the first episode saying what the run computes, episode 0)."""
 
-    __slots__ = ("episode", "episodes", "episode_return", "train_return", "test_return", "earlier", "message")
+    __slots__ = ("episode", "episodes", "episode_return", "train_return", "test_return", "earlier", "message",
+                 "status")
 
     def __init__(self, episode, episodes, train_return=None, test_return=None, message="", episode_return=None,
-                 earlier=False):
+                 earlier=False, status=""):
         self.episode = episode
         self.episodes = episodes
         self.episode_return = episode_return
@@ -151,14 +154,17 @@ class Progress:
         self.test_return = test_return
         self.earlier = earlier
         self.message = message
+        self.status = status
 
     @classmethod
     def from_dict(cls, data, average=None):
         return cls(int(data.get("episode", 0)), int(data.get("episodes", 0)),
                    data.get("train_return", average), data.get("test_return"), str(data.get("message", "")),
-                   data.get("return"), bool(data.get("earlier", False)))
+                   data.get("return"), bool(data.get("earlier", False)), str(data.get("status", "")))
 
     def __repr__(self):
+        if self.status:
+            return "<Progress: {}>".format(self.status)
         text = "episode {} of {}".format(self.episode, self.episodes)
         if self.train_return is not None:
             text += ", training return {:.3f} (10-episode average)".format(self.train_return)

@@ -724,6 +724,21 @@ py::dict train_py(const py::dict& options, const py::object& progress) {
         stop = true;
       }
     };
+    // What the run does before its first episode: an event with "status" (no "episode").
+    callbacks.on_status = [&](const std::string& line) {
+      if (stop) return;
+      py::gil_scoped_acquire acquire;
+      try {
+        py::dict event;
+        event["status"] = line;
+        event["episodes"] = job.episodes;
+        const py::object answer = progress(event);
+        if (!answer.is_none() && !answer.cast<bool>()) stop = true;
+      } catch (py::error_already_set& e) {
+        callback_error = e.what();
+        stop = true;
+      }
+    };
   }
   TrainingOutcome outcome;
   {
@@ -866,6 +881,6 @@ PYBIND11_MODULE(autoblock_native, m) {
         "train_generate {count, seed, min_rects, max_rects, holes, general, arcs}, test_folder | test_generate, episodes, seed, "
         "reward, agent, threads, eval_every, max_steps}. progress(event) is called with the GIL after every "
         "episode (event: episode, episodes, return, blocks, steps, complete, shape, seconds, test_return or None, "
-        "earlier) and returns False to stop. Returns {cancelled, episodes_done, episodes, reward, policy_file (None "
+        "earlier), and before the first with {status, episodes} (what the run computes first), and returns False to stop. Returns {cancelled, episodes_done, episodes, reward, policy_file (None "
         "when cancelled), checkpoint, log, curves, final_test_return}.");
 }

@@ -1357,12 +1357,18 @@ class TestTraining(unittest.TestCase):
             events = []
 
             def progress(event):
+                if event.status:  # what the run computes before its first episode
+                    statuses.append(event.status)
+                    return True
                 events.append(event)
                 return len(events) < 3  # cancel after the third episode
+
+            statuses = []
 
             result = AutoBlock.train(request, progress)
             self.assertTrue(result["cancelled"])
             self.assertEqual(result["episodes_done"], 3)
+            self.assertEqual(len(statuses), 1)
             self.assertIsNone(result["policy_file"])
             self.assertTrue(os.path.exists(request.checkpoint))
             self.assertFalse(os.path.exists(output))
@@ -1373,6 +1379,10 @@ class TestTraining(unittest.TestCase):
             request.resume = True
             events = []
             result = AutoBlock.train(request, events.append)
+            # First a status event (the reference returns are computed again), then the episodes.
+            self.assertIn("reference returns", events[0].status)
+            self.assertEqual(events[0].episode, 0)
+            events = events[1:]
             self.assertFalse(result["cancelled"])
             self.assertEqual([(e.episode, e.earlier) for e in events],
                              [(1, True), (2, True), (3, True), (4, False), (5, False), (6, False)])
@@ -1404,7 +1414,12 @@ class TestTraining(unittest.TestCase):
             run.wait(120)
             self.assertTrue(run.done)
             self.assertIsNone(run.error)
-            self.assertEqual([e.episode for e in run.poll()], [1, 2, 3, 4])
+            events = run.poll()
+            # First what the run computes before its first episode (a status event), then the episodes.
+            self.assertIn("reference returns of the test faces", events[0].status)
+            self.assertIn("reference returns", repr(events[0]))
+            self.assertEqual([e.episode for e in events[1:]], [1, 2, 3, 4])
+            self.assertEqual([e.status for e in events[1:]], [""] * 4)
             self.assertTrue(os.path.exists(run.result["policy_file"]))
             # Bad data is a ValueError naming the problem.
             with self.assertRaisesRegex(ValueError, "holds no shape file|no .brep"):
@@ -1426,6 +1441,10 @@ class TestTraining(unittest.TestCase):
             request.validate()
             events = []
             result = AutoBlock.train(request, events.append)
+            # First a status event: the reference returns (the search on the general test faces).
+            self.assertRegex(events[0].status, "the search on [1-9][0-9]* general ones")
+            self.assertEqual(events[0].episode, 0)
+            events = events[1:]
             self.assertFalse(result["cancelled"])
             self.assertEqual([e.episode for e in events], [1, 2, 3, 4])
             self.assertTrue(all(e.test_return is not None for e in events[1::2]))

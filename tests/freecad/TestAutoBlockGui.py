@@ -10,6 +10,7 @@ hanging it).
 """
 
 import os
+import threading
 import time
 import unittest
 
@@ -873,11 +874,16 @@ class FakeTrainingRun:
     """A stand-in for the core's training, to test the panel's wiring of cancel and resume quickly: it satisfies
     the protocol of AutoBlock/training.py, reporting made-up returns."""
 
+    gate = None  # a threading.Event: the run waits for it after its status line (before the first episode)
+
     def __new__(cls, request):
         from AutoBlock import training
 
         class Run(training.TrainingRun):
             def work(self, report, cancelled):
+                report({"status": "reference returns of the test faces", "episodes": request.episodes})
+                if FakeTrainingRun.gate is not None:
+                    FakeTrainingRun.gate.wait(20)
                 for episode in range(1, request.episodes + 1):
                     test = -2.0 + episode * 0.15 if episode % 5 == 0 else None
                     if not report({"episode": episode, "episodes": request.episodes,
@@ -984,9 +990,20 @@ class TestTrainPanel(GuiTestCase):
             output = os.path.join(folder, "policy.pt")
             form.outputEdit.setText(output)
             form.episodes.setValue(40)
-            form.startButton.click()
-            self.assertTrue(form.cancelButton.isEnabled())
-            self.assertFalse(form.startButton.isEnabled())
+            FakeTrainingRun.gate = threading.Event()
+            try:
+                form.startButton.click()
+                self.assertTrue(form.cancelButton.isEnabled())
+                self.assertFalse(form.startButton.isEnabled())
+                # Before the first episode the status line says what the run computes; no point is plotted.
+                deadline = time.time() + 20
+                while "Reference returns" not in form.statusLabel.text() and time.time() < deadline:
+                    pump(0.05)
+                self.assertEqual(form.statusLabel.text(), "Reference returns of the test faces...")
+                self.assertEqual(len(panel.plot.train), 0)
+            finally:
+                FakeTrainingRun.gate.set()
+                FakeTrainingRun.gate = None
             deadline = time.time() + 20
             while panel.run is not None and time.time() < deadline:
                 pump(0.1)

@@ -194,6 +194,9 @@ class TrainPanel:
             return
         done = self.run.done  # read before draining: a finished run has queued all its events
         for event in self.run.poll():
+            if event.status:  # before the first episode: what the run computes
+                self._status(event.status[:1].upper() + event.status[1:] + "...")
+                continue
             if event.episodes:
                 self.form.progressBar.setRange(0, event.episodes)
             self.form.progressBar.setValue(event.episode)
