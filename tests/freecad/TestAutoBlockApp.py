@@ -1079,6 +1079,28 @@ class TestArcFaces(unittest.TestCase):
         self.assertGreater(area, top.Area)
         self.assertLess(area, top.Area * 1.01)
 
+    def test_the_end_of_a_tilted_tube_a_face_without_a_straight_edge(self):
+        """A washer bounded by two circles in a tilted plane has no straight edge to set its frame by: it takes its
+        plane's, and its blocks and mesh come back in the model's plane."""
+        V = FreeCAD.Vector
+        tube = Part.makeCylinder(8, 5).cut(Part.makeCylinder(3, 5))
+        tube.rotate(V(0, 0, 0), V(1, 2, 3), 37)
+        end = min(tube.Faces, key=lambda f: f.CenterOfMass.Length if f.Surface.__class__.__name__ == "Plane" else 1e9)
+        self.assertEqual(len(end.Wires), 2)
+        normal = end.normalAt(0, 0)
+        self.assertLess(abs(normal.z), 0.99)  # tilted
+        source = support.add_face(self.doc, end, "TubeEnd")
+        obj = AutoBlock.make_autoblock(source, policy="greedy")
+        self.assertIn("Up-to-date", obj.State)
+        self.assertAlmostEqual(sum(f.Area for f in obj.Shape.Faces), end.Area, delta=1e-6 * end.Area)
+        mesh = AutoBlock.mesh(end)
+        self.assertTrue(mesh.conformal)
+        centre = end.Edges[0].Curve.Center
+        for node in mesh.nodes:
+            self.assertLess(abs((node - centre).dot(normal)), 1e-6)  # in the face's plane
+            self.assertGreater((node - centre).Length, 3 - 1e-6)
+            self.assertLess((node - centre).Length, 8 + 1e-6)
+
     def test_the_workbench_meshes_an_arc_face_as_the_cli_does(self):
         """The search's tries (other widths and block rules, finer edges) reach the workbench: what decompose keeps
         is what `autoblock mesh` keeps, stored with its rules, and meshed the same from the console, from an

@@ -274,9 +274,28 @@ Placement face_frame(const TopoDS_Face& face) {
     const gp_Pnt a = BRep_Tool::Pnt(v1), b = BRep_Tool::Pnt(v2);
     if (a.Distance(b) > 0) lines.push_back(Line{a, b});
   }
-  if (lines.empty()) return Placement{};
-  const double tol = face_tolerance(face);
   const bool parallel_to_xy = std::fabs(normal.Z()) >= 1.0 - 1e-9;
+  if (lines.empty()) {
+    // No straight edge (a disk, a washer, a face bounded by arcs alone): in the XY plane it keeps the
+    // model's coordinates; in a tilted plane, origin at its first vertex (else the plane's origin), X
+    // along the plane's own X direction.
+    if (parallel_to_xy) return Placement{};
+    gp_Pln plane;
+    if (!plane_of(face, &plane)) return Placement{};
+    gp_Pnt origin = plane.Location();
+    TopExp_Explorer vertex(face, TopAbs_VERTEX);
+    if (vertex.More()) origin = BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current()));
+    gp_Vec u(plane.Position().XDirection());
+    u -= gp_Vec(normal) * u.Dot(gp_Vec(normal));
+    if (u.Magnitude() <= 1e-12) return Placement{};
+    const gp_Dir x(u);
+    const gp_Dir y = normal.Crossed(x);
+    Placement frame;
+    frame.rotation = {x.X(), y.X(), normal.X(), x.Y(), y.Y(), normal.Y(), x.Z(), y.Z(), normal.Z()};
+    frame.translation = {origin.X(), origin.Y(), origin.Z()};
+    return frame;
+  }
+  const double tol = face_tolerance(face);
   if (parallel_to_xy) {
     for (const Line& l : lines) {
       if (std::fabs(l.b.X() - l.a.X()) <= tol || std::fabs(l.b.Y() - l.a.Y()) <= tol) return Placement{};

@@ -51,8 +51,10 @@ PlanarFace planar_face_from_occt(const TopoDS_Face& face);
 //          or Y, or is not rectilinear in any frame (a general face keeps the model's coordinates);
 //          otherwise origin at the start of its longest straight edge, X along that edge, Z along the
 //          face's normal. So a face in any plane, or turned within the XY plane, is rectilinear in its
-//          frame when it is rectilinear at all. The identity for a face that is not planar or has no
-//          straight edge (its checks then say what is wrong).
+//          frame when it is rectilinear at all. A face without a straight edge (bounded by arcs and
+//          circles alone) in a tilted plane: origin at its first vertex, X along its plane's X
+//          direction; in the XY plane, the identity. The identity for a face that is not planar (its
+//          checks then say what is wrong).
 Placement face_frame(const TopoDS_Face& face);
 
 // Inputs: face. Output: the name of its surface's type: "plane", "cylinder", "B-spline surface", ...

@@ -2,6 +2,7 @@
 // face's own frame (occt_face.h, face_frame) and the general engine behind decompose_input_face.
 #include "support/catch_torch.h"
 
+#include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <Bnd_Box.hxx>
@@ -18,6 +19,7 @@
 #include "core/api/face_meshing.h"
 #include "core/baselines/min_rectangles.h"
 #include "core/common/error.h"
+#include "core/data/arc_generator.h"
 #include "core/data/general_generator.h"
 #include "core/data/shape_generator.h"
 #include "core/geometry/occt_face.h"
@@ -236,6 +238,44 @@ TEST_CASE("a poor searched mesh is searched again (other widths, other block rul
              kSearchTries[i].cut_smooth_parts != kSearchTries[j].cut_smooth_parts));
     }
     CHECK(kSearchTries[i].cut_smooth_parts == (i + 1 == std::size(kSearchTries)));
+  }
+}
+
+TEST_CASE("a face bounded by circles alone, in a tilted or an upright plane, gets its own frame and meshes",
+          "[api][frame][arc]") {
+  // A washer (radii 10 and 4) and a disk have no straight edge to set a frame by: they take their plane's.
+  BRepAlgoAPI_Cut washer_cut(disk(0, 0, 10), disk(0, 0, 4));
+  REQUIRE(washer_cut.IsDone());
+  TopExp_Explorer washer_faces(washer_cut.Shape(), TopAbs_FACE);
+  REQUIRE(washer_faces.More());
+  const TopoDS_Face washer = TopoDS::Face(washer_faces.Current());
+  gp_Trsf upright;
+  upright.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)), M_PI / 2);
+  struct Case {
+    TopoDS_Face face;
+    double area;
+    size_t arcs;
+  };
+  const std::vector<Case> cases{{washer, M_PI * (100 - 16), 2},
+                                {moved(washer, tilt()), M_PI * (100 - 16), 2},
+                                {moved(disk(1, 2, 3), upright), 9 * M_PI, 1},
+                                {moved(disk(1, 2, 3), tilt()), 9 * M_PI, 1}};
+  for (size_t k = 0; k < cases.size(); ++k) {
+    CAPTURE(k);
+    const InputFace face = check_face(cases[k].face, "round");
+    CHECK(face.frame.identity() == (k == 0));
+    REQUIRE(face.is_general());
+    CHECK(face.arcs.arcs.size() == cases[k].arcs);
+    DecomposeSettings settings;
+    settings.policy_settings.general_time_limit = 0.0;
+    const FaceMeshing m = mesh_input_face(face, settings, MeshOptions{});
+    REQUIRE(m.result.conformity.conformal);
+    // The quads and the gaps between their chords and the arcs make up the true face.
+    CHECK(m.result.conformity.quad_area + m.result.conformity.curved_gap_area == Approx(cases[k].area).epsilon(1e-6));
+    // The blocks, cut from the true face and carried back into the model, lie where the face does.
+    const FaceDecomposition d = decompose_input_face(face, settings);
+    CHECK(occt_area(d.shape) == Approx(cases[k].area).epsilon(1e-6));
+    CHECK(box_distance(d.shape, cases[k].face) < 1e-6);
   }
 }
 
