@@ -6,6 +6,7 @@ training protocol and a real (tiny) training run.
 """
 
 import json
+import math
 import os
 import subprocess
 import threading
@@ -1609,6 +1610,32 @@ class TestSolids(unittest.TestCase):
         self.assertGreater(min(volumes), 0.0)
         self.assertAlmostEqual(sum(volumes), volume, delta=1e-9 * volume)
 
+    def test_a_plate_with_drilled_holes_meshes_to_hexahedra_with_nodes_on_the_holes(self):
+        """Side faces that are cylinders along the sweep (drilled holes, a rounded end) are taken: the hexahedra's
+        side nodes lie on the cylinders, and FreeCAD's own .inp of the mesh has positive C3D8 volumes."""
+        V = FreeCAD.Vector
+        plate = Part.makeBox(30, 12, 2)
+        holes = [(V(7, 6, 0), 2.5), (V(20, 5, 0), 1.5)]
+        for centre, r in holes:
+            plate = plate.cut(Part.makeCylinder(r, 4, centre + V(0, 0, -1)))
+        plate = plate.fuse(Part.makeCylinder(6, 2, V(30, 6, 0))).removeSplitter()  # a rounded end
+        source = support.add_face(self.doc, plate, "Plate")
+        self.assertTrue(AutoBlock.is_solid(source))
+        mesh = AutoBlock.mesh(source, size=1.0)
+        self.assertIsInstance(mesh, AutoBlock.HexMeshResult)
+        self.assertTrue(mesh.conformal)
+        for centre, r in holes:
+            on = [p for p in mesh.nodes if abs(math.hypot(p.x - centre.x, p.y - centre.y) - r) < 1e-9 * r]
+            self.assertGreaterEqual(len(on), 24 * (mesh.layers + 1))
+            self.assertFalse([p for p in mesh.nodes if math.hypot(p.x - centre.x, p.y - centre.y) < r - 1e-9 * r])
+        volumes = [c3d8_volume([mesh.nodes[i] for i in h]) for h in mesh.hexes]
+        self.assertGreater(min(volumes), 0.0)
+        # The chords across the holes and the rounded end: the volumes differ from the solid's a little.
+        self.assertAlmostEqual(sum(volumes), plate.Volume, delta=0.01 * plate.Volume)
+        obj = AutoBlock.make_autoblock_solid(source, mesh_size=1.0)
+        self.assertAlmostEqual(sum(s.Volume for s in obj.Shape.Solids), plate.Volume, delta=1e-6 * plate.Volume)
+        self.assertEqual(len(AutoBlock.hex_mesh_objects_of(obj)), 1)
+
     def test_a_box_meshes_to_hexahedra(self):
         box = self.doc.addObject("Part::Box", "Box")
         box.Length, box.Width, box.Height = 10, 4, 3
@@ -1763,9 +1790,12 @@ class TestSolids(unittest.TestCase):
         self.assertIs(AutoBlock.cap_solid(body, "Pad.Face{}".format(pad_caps[0])), pad)
         side = next(n for n in range(1, 9) if n not in pad_caps)
         self.assertIsNone(AutoBlock.cap_solid(body, "Pad.Face{}".format(side)))
-        cylinder = self.doc.addObject("Part::Cylinder", "Cylinder")  # planar ends, but not a sweep AutoBlock takes
+        cylinder = self.doc.addObject("Part::Cylinder", "Cylinder")  # a sweep of its end disk
+        cone = self.doc.addObject("Part::Cone", "Cone")  # planar ends, but not a sweep AutoBlock takes
         self.doc.recompute()
-        self.assertIsNone(AutoBlock.cap_solid(cylinder, "Face2"))
+        self.assertIs(AutoBlock.cap_solid(cylinder, "Face2"), cylinder)
+        self.assertIsNone(AutoBlock.cap_solid(cylinder, "Face1"))  # its side
+        self.assertIsNone(AutoBlock.cap_solid(cone, "Face2"))
         face = support.add_face(self.doc, support.read_face())
         self.assertIsNone(AutoBlock.cap_solid(face, "Face1"))  # a face alone
         # The console keeps making a face object when asked for a cap face; make_autoblock_solid takes a cap
@@ -1989,17 +2019,17 @@ class TestSolids(unittest.TestCase):
 
     def test_a_solid_that_is_not_a_sweep_raises_value_error(self):
         sphere = self.doc.addObject("Part::Sphere", "Sphere")
-        cylinder = self.doc.addObject("Part::Cylinder", "Cylinder")
+        cone = self.doc.addObject("Part::Cone", "Cone")
         self.doc.recompute()
         names = [o.Name for o in self.doc.Objects]
-        for source in (sphere, cylinder):
-            with self.assertRaisesRegex(ValueError, r"^{}: face \d+ is curved \(a {}\): a swept solid's faces are all "
-                                                    r"planar$".format(source.Label, source.Label.lower())):
+        for source in (sphere, cone):
+            with self.assertRaisesRegex(ValueError, r"^{}: face \d+ is curved \(a {}\): a swept solid's faces are planar, "
+                                                    r"or cylinders along the sweep$".format(source.Label, source.Label.lower())):
                 AutoBlock.mesh(source)
             with self.assertRaisesRegex(ValueError, "is curved"):
                 AutoBlock.make_autoblock_solid(source)
         with self.assertRaisesRegex(ValueError, "is curved"):
-            AutoBlock.mesh_solid(Part.makeCylinder(2, 5))
+            AutoBlock.mesh_solid(Part.makeCone(2, 1, 5))
         two = Part.makeCompound([Part.makeBox(1, 1, 1), Part.makeBox(1, 1, 1, FreeCAD.Vector(3, 0, 0))])
         with self.assertRaisesRegex(ValueError, "solid"):
             AutoBlock.mesh(two)

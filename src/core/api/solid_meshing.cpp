@@ -1,5 +1,7 @@
 #include "core/api/solid_meshing.h"
 
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepGProp.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -38,9 +40,22 @@ Point3 point_of(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
 // A straight edge of the bottom cap and the side face that meets it.
 struct CapEdge {
-  Point3 a, b;
+  std::vector<Point3> points;  // the edge's ends (a line), or points along it (an arc)
   int face = 0;
 };
+
+// Points along edge: its ends when it is a line, else kEdgeSamples + 1 points evenly in its parameter.
+constexpr int kEdgeSamples = 96;
+std::vector<Point3> edge_points(const TopoDS_Edge& edge) {
+  const BRepAdaptor_Curve curve(edge);
+  const int n = curve.GetType() == GeomAbs_Line ? 1 : kEdgeSamples;
+  std::vector<Point3> points;
+  for (int i = 0; i <= n; ++i) {
+    const double u = curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n;
+    points.push_back(point_of(curve.Value(u)));
+  }
+  return points;
+}
 
 // The bottom cap's edges with their side faces.
 std::vector<CapEdge> cap_edges(const SweptSolid& s) {
@@ -54,9 +69,7 @@ std::vector<CapEdge> cap_edges(const SweptSolid& s) {
   std::vector<CapEdge> out;
   for (TopExp_Explorer it(bottom, TopAbs_EDGE); it.More(); it.Next()) {
     const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
-    TopoDS_Vertex a, b;
-    TopExp::Vertices(edge, a, b);
-    CapEdge e{point_of(BRep_Tool::Pnt(a)), point_of(BRep_Tool::Pnt(b)), 0};
+    CapEdge e{edge_points(edge), 0};
     for (const TopoDS_Shape& f : edge_faces.FindFromKey(edge)) {
       if (f.IsSame(bottom)) continue;
       for (size_t k = 0; k < s.faces.size(); ++k) {
@@ -85,12 +98,18 @@ double distance_to_segment(const Point3& p, const Point3& a, const Point3& b) {
 // The longest side of the solid's box, from its vertices.
 double longest_side(const TopoDS_Shape& solid) {
   Point3 low{1e300, 1e300, 1e300}, high{-1e300, -1e300, -1e300};
-  for (TopExp_Explorer it(solid, TopAbs_VERTEX); it.More(); it.Next()) {
-    const Point3 p = point_of(BRep_Tool::Pnt(TopoDS::Vertex(it.Current())));
+  auto add = [&](const Point3& p) {
     for (size_t k = 0; k < 3; ++k) {
       low[k] = std::min(low[k], p[k]);
       high[k] = std::max(high[k], p[k]);
     }
+  };
+  for (TopExp_Explorer it(solid, TopAbs_VERTEX); it.More(); it.Next()) add(point_of(BRep_Tool::Pnt(TopoDS::Vertex(it.Current()))));
+  // A curved edge (a circle, whose one vertex says nothing of its size): points along it too.
+  for (TopExp_Explorer it(solid, TopAbs_EDGE); it.More(); it.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+    if (BRep_Tool::Degenerated(edge) || BRepAdaptor_Curve(edge).GetType() == GeomAbs_Line) continue;
+    for (const Point3& p : edge_points(edge)) add(p);
   }
   return std::max({high[0] - low[0], high[1] - low[1], high[2] - low[2]});
 }
@@ -110,6 +129,35 @@ SolidFigures solid_figures(const SweptSolid& s) {
     BRepGProp::LinearProperties(s.faces[k], length);
     f.face_areas[k] = area.Mass();
     f.face_perimeters[k] = length.Mass();
+    const BRepAdaptor_Surface surface(s.faces[k]);
+    if (surface.GetType() == GeomAbs_Cylinder) {
+      const gp_Cylinder cylinder = surface.Cylinder();
+      if (f.face_cylinders.empty()) f.face_cylinders.resize(s.faces.size());
+      FaceCylinder& c = f.face_cylinders[k];
+      c.origin = point_of(cylinder.Axis().Location());
+      const gp_Dir axis = cylinder.Axis().Direction();
+      c.axis = {axis.X(), axis.Y(), axis.Z()};
+      c.radius = cylinder.Radius();
+      // Convex when the face's outward normal points away from the axis.
+      const double u = 0.5 * (surface.FirstUParameter() + surface.LastUParameter());
+      const double v = 0.5 * (surface.FirstVParameter() + surface.LastVParameter());
+      gp_Pnt p;
+      gp_Vec du, dv;
+      surface.D1(u, v, p, du, dv);
+      gp_Vec normal = du.Crossed(dv);
+      if (s.faces[k].Orientation() == TopAbs_REVERSED) normal.Reverse();
+      gp_Vec radial(cylinder.Axis().Location(), p);
+      radial -= gp_Vec(axis) * radial.Dot(gp_Vec(axis));
+      c.convex = normal.Dot(radial) > 0;
+    }
+  }
+  if (!f.face_cylinders.empty()) {
+    f.bottom_face = s.bottom;
+    f.top_face = s.top;
+    gp_Dir normal;
+    if (planar_face_normal(s.faces[static_cast<size_t>(s.bottom - 1)], &normal)) {
+      f.cap_height = std::fabs(s.sweep.Dot(gp_Vec(normal)));
+    }
   }
   if (s.cap.is_general()) {
     f.tolerance = std::max({s.cap.planar.tolerance, kModelToleranceQuanta * s.cap.region.quantum(),
@@ -187,10 +235,12 @@ SolidMeshing mesh_swept_solid(const SweptSolid& solid, const DecomposeSettings& 
     int best = 0;
     double nearest = std::numeric_limits<double>::infinity();
     for (const CapEdge& e : edges) {
-      const double d = distance_to_segment(m, e.a, e.b);
-      if (d < nearest) {
-        nearest = d;
-        best = e.face;
+      for (size_t i = 0; i + 1 < e.points.size(); ++i) {
+        const double d = distance_to_segment(m, e.points[i], e.points[i + 1]);
+        if (d < nearest) {
+          nearest = d;
+          best = e.face;
+        }
       }
     }
     return best;

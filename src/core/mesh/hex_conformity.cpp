@@ -43,6 +43,33 @@ bool close(double got, double want, double scale, double slack) {
   return std::fabs(got - want) <= kTolerance * scale + slack;
 }
 
+// Inputs: cylinder; the four nodes of a boundary quad on it (in order); slack, how far a node may lie
+// off it. Output: false when a node is off the cylinder, or no two opposite edges run along the axis;
+// else the strip's true area and the circular segment (between the chord and the arc) times the height.
+bool cylinder_strip(const FaceCylinder& cylinder, const std::array<Point3, 4>& p, double slack, double* area,
+                    double* segment_volume) {
+  const Point3& n = cylinder.axis;
+  for (const Point3& q : p) {
+    const Point3 d{q[0] - cylinder.origin[0], q[1] - cylinder.origin[1], q[2] - cylinder.origin[2]};
+    const double along = dot(d, n);
+    const Point3 radial{d[0] - along * n[0], d[1] - along * n[1], d[2] - along * n[2]};
+    if (std::fabs(std::sqrt(dot(radial, radial)) - cylinder.radius) > slack) return false;
+  }
+  // The chord: the edge across the axis (one of edges 0-1 and 1-2); the height: the other, along it.
+  auto edge = [&](size_t a, size_t b) {
+    return Point3{p[b][0] - p[a][0], p[b][1] - p[a][1], p[b][2] - p[a][2]};
+  };
+  Point3 chord = edge(0, 1), height = edge(1, 2);
+  if (std::fabs(dot(chord, n)) > std::fabs(dot(height, n))) std::swap(chord, height);
+  const double h = std::fabs(dot(height, n));
+  const double c = std::sqrt(dot(chord, chord) - dot(chord, n) * dot(chord, n));
+  if (!(h > 0) || c > 2 * cylinder.radius + slack) return false;
+  const double angle = 2 * std::asin(std::min(1.0, c / (2 * cylinder.radius)));
+  *area = cylinder.radius * angle * h;
+  *segment_volume = 0.5 * cylinder.radius * cylinder.radius * (angle - std::sin(angle)) * h;
+  return true;
+}
+
 }  // namespace
 
 Point3 quad_area_vector(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
@@ -103,13 +130,40 @@ HexConformity check_hex_conformity(const HexMesh& mesh, const SolidFigures& soli
     }
     k = end;
   }
-  // The tagged boundary: the same quads, and per face of the solid the face's area.
+  // The tagged boundary: the same quads, and per face of the solid the face's area (a quad on a
+  // cylinder: its strip of the cylinder, the volume corrected by the segment between chord and arc).
   std::vector<std::array<int, 4>> tagged;
   std::map<int, double> tagged_area;
+  int off_cylinder = 0;
+  double volume_gap = 0.0;  // the segments between the side quads' chords and the arcs, signed
   for (const BoundaryQuad& b : mesh.boundary) {
     const std::array<int, 4> f = hex_face_nodes(mesh.hexes[static_cast<size_t>(b.hex)], b.side);
     tagged.push_back(face_use(f).key);
-    tagged_area[b.face] += area_of(mesh, f);
+    const double flat = area_of(mesh, f);
+    const size_t k = static_cast<size_t>(b.face - 1);
+    if (b.face >= 1 && k < solid.face_cylinders.size() && solid.face_cylinders[k].radius > 0) {
+      const FaceCylinder& cylinder = solid.face_cylinders[k];
+      std::array<Point3, 4> p;
+      for (size_t i = 0; i < 4; ++i) p[i] = mesh.nodes[static_cast<size_t>(f[i])];
+      double strip = 0.0, segment = 0.0;
+      if (!cylinder_strip(cylinder, p, t + 1e-9 * cylinder.radius, &strip, &segment)) {
+        ++off_cylinder;
+        tagged_area[b.face] += flat;
+        continue;
+      }
+      tagged_area[b.face] += strip;
+      c.boundary_area += strip - flat;
+      volume_gap += cylinder.convex ? segment : -segment;
+      continue;
+    }
+    tagged_area[b.face] += flat;
+  }
+  c.hex_volume += volume_gap;
+  if (volume_gap != 0.0 && solid.cap_height > 0 && solid.bottom_face > 0 && solid.top_face > 0) {
+    const double gap = volume_gap / solid.cap_height;  // each cap's, between its chords and arcs
+    tagged_area[solid.bottom_face] += gap;
+    tagged_area[solid.top_face] += gap;
+    c.boundary_area += 2 * gap;
   }
   std::sort(tagged.begin(), tagged.end());
   const bool same_boundary = tagged == boundary;
@@ -131,6 +185,8 @@ HexConformity check_hex_conformity(const HexMesh& mesh, const SolidFigures& soli
     why << c.misoriented_faces << " interior faces run the same way by both hexahedra";
   } else if (c.inverted_hexes > 0) {
     why << c.inverted_hexes << " inverted hexahedra";
+  } else if (off_cylinder > 0) {
+    why << off_cylinder << " boundary quads tagged with a cylinder face are not chords of it (a node off it)";
   } else if (!close(c.boundary_area, solid_area, solid_area, t * perimeters)) {
     why << "the boundary quads' area " << c.boundary_area << " is not the solid's surface area " << solid_area
         << " (a hanging node or an unshared face)";

@@ -25,9 +25,16 @@ struct HexConformity {
   int misoriented_faces = 0;  // used by two running it the same way
   int inverted_hexes = 0;
   int mismatched_faces = 0;   // faces of the solid whose tagged quads' area is not the face's
-  double hex_volume = 0.0, solid_volume = 0.0;
+  double hex_volume = 0.0, solid_volume = 0.0;  // hex_volume: with the segments at cylinder faces (check_hex_conformity)
   double boundary_area = 0.0, solid_area = 0.0;
   std::string problem;        // why it is not conformal ("" when it is)
+};
+
+// A face of the solid that is a cylinder (an extruded arc or a drilled hole).
+struct FaceCylinder {
+  Point3 origin{0, 0, 0}, axis{0, 0, 1};  // a point of its axis; the axis, a unit vector
+  double radius = 0.0;                    // 0: the face is no cylinder
+  bool convex = true;  // the solid lies inside the circle (a rounded edge), not outside it (a hole)
 };
 
 // What the mesh must fill: the solid's figures.
@@ -35,6 +42,12 @@ struct SolidFigures {
   double volume = 0.0, area = 0.0;
   std::vector<double> face_areas;       // [k - 1]: the area of the solid's face k (0: no face of the solid)
   std::vector<double> face_perimeters;  // [k - 1]: its perimeter (empty: all 0)
+  std::vector<FaceCylinder> face_cylinders;  // [k - 1]: face k's cylinder (empty, or radius 0: planar)
+  // With cylinders: the caps (face numbers) and their distance apart. The caps' quads miss (or, at a
+  // hole, cover beyond) the segments between their chords and the arcs: the side quads' segments
+  // times their heights over this distance.
+  int bottom_face = 0, top_face = 0;
+  double cap_height = 0.0;
   double tolerance = 0.0;               // how far a node may lie off the solid's boundary (a general
                                         // face's nodes lie on its lattice: within its quantum)
 };
@@ -42,7 +55,11 @@ struct SolidFigures {
 // Inputs:  mesh; solid.
 // Output:  the figures above and the verdict: volumes agree within 1e-9 relative plus tolerance times
 //          the solid's area, areas within 1e-9 relative plus tolerance times the perimeters (all
-//          faces', or the face's).
+//          faces', or the face's). A boundary quad on a cylinder face must have its four nodes on the
+//          cylinder (within tolerance plus 1e-9 of the radius), two edges along the axis: it is a chord
+//          of the cylinder, and it counts as the strip of the cylinder between its nodes (area r * angle
+//          * height), the hexahedra's volume as gaining (convex) or losing (a hole) the circular
+//          segment between chord and arc times the height.
 HexConformity check_hex_conformity(const HexMesh& mesh, const SolidFigures& solid);
 
 // Inputs: corners of a quad (planar, or nearly). Output: its area vector (half the cross product of

@@ -1,5 +1,6 @@
 #include "core/solid/swept_solid.h"
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
@@ -17,6 +18,7 @@
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <TopoDS_Shell.hxx>
+#include <gp_Cylinder.hxx>
 #include <gp_Dir.hxx>
 #include <gp_Pnt.hxx>
 
@@ -121,6 +123,12 @@ CapFace cap_face(const TopoDS_Face& face, int number, const gp_Dir& normal) {
   return c;
 }
 
+// A side face that is a cylinder (an extruded arc or round hole): its number and axis direction.
+struct CylinderFace {
+  int number = 0;
+  gp_Dir axis;
+};
+
 // A pair of opposite faces tried as caps: how far it got (0 caps differ, 1 a side is not parallel,
 // 2 volume differs, 3 good) and why it stopped.
 struct CapTrial {
@@ -131,8 +139,8 @@ struct CapTrial {
   gp_Vec sweep;
 };
 
-CapTrial try_caps(const CapFace& bottom, const CapFace& top, const std::vector<CapFace>& planar, double volume,
-                  double tolerance) {
+CapTrial try_caps(const CapFace& bottom, const CapFace& top, const std::vector<CapFace>& planar,
+                  const std::vector<CylinderFace>& cylinders, double volume, double tolerance) {
   CapTrial t;
   t.bottom = &bottom;
   t.top = &top;
@@ -169,6 +177,16 @@ CapTrial try_caps(const CapFace& bottom, const CapFace& top, const std::vector<C
     if (sine > 1e-7) {
       t.why = face_name(side.number) + " is not parallel to the sweep " + vector_text(t.sweep, tolerance) + " from " +
               face_name(bottom.number) + " to " + face_name(top.number) + " (it makes " +
+              format_significant(std::asin(std::min(1.0, sine)) * 180.0 / M_PI, 3) +
+              " degrees with it): a swept solid's side faces run along the sweep";
+      return t;
+    }
+  }
+  for (const CylinderFace& side : cylinders) {
+    const double sine = gp_Vec(side.axis).Crossed(gp_Vec(direction)).Magnitude();
+    if (sine > 1e-7) {
+      t.why = face_name(side.number) + ", a cylinder, does not run along the sweep " + vector_text(t.sweep, tolerance) +
+              " from " + face_name(bottom.number) + " to " + face_name(top.number) + " (its axis makes " +
               format_significant(std::asin(std::min(1.0, sine)) * 180.0 / M_PI, 3) +
               " degrees with it): a swept solid's side faces run along the sweep";
       return t;
@@ -223,17 +241,24 @@ SweptSolid swept_solid_from_shape(const TopoDS_Shape& shape, const std::string& 
     out.faces.resize(static_cast<size_t>(numbers.Extent()));
 
     std::vector<CapFace> planar;
+    std::vector<CylinderFace> cylinders;
     for (TopExp_Explorer it(out.solid, TopAbs_FACE); it.More(); it.Next()) {
       const TopoDS_Face face = TopoDS::Face(it.Current());
       const int number = numbers.FindIndex(face);
       if (number == 0) throw std::logic_error("swept solid: a face of the solid is not in the shape's face map");
       out.faces[static_cast<size_t>(number - 1)] = face;
       gp_Dir normal;
-      if (!planar_face_normal(face, &normal)) {
-        throw InputError(face_name(number) + " is curved (" + with_article(surface_name(face)) +
-                         "): a swept solid's faces are all planar");
+      if (planar_face_normal(face, &normal)) {
+        planar.push_back(cap_face(face, number, normal));
+        continue;
       }
-      planar.push_back(cap_face(face, number, normal));
+      // A cylinder can be a side face (an extruded arc, a drilled hole), if it runs along the sweep.
+      const BRepAdaptor_Surface surface(face);
+      if (surface.GetType() != GeomAbs_Cylinder) {
+        throw InputError(face_name(number) + " is curved (" + with_article(surface_name(face)) +
+                         "): a swept solid's faces are planar, or cylinders along the sweep");
+      }
+      cylinders.push_back({number, surface.Cylinder().Axis().Direction()});
     }
     std::sort(planar.begin(), planar.end(), [](const CapFace& a, const CapFace& b) { return a.number < b.number; });
 
@@ -251,7 +276,7 @@ SweptSolid swept_solid_from_shape(const TopoDS_Shape& shape, const std::string& 
     for (size_t i = 0; i < planar.size(); ++i) {
       for (size_t j = i + 1; j < planar.size(); ++j) {
         if (planar[i].normal.Dot(planar[j].normal) > -1.0 + 1e-12) continue;
-        const CapTrial t = try_caps(planar[i], planar[j], planar, out.volume, tolerance);
+        const CapTrial t = try_caps(planar[i], planar[j], planar, cylinders, out.volume, tolerance);
         if (t.stage == 3) {
           if (!best || key(t) > key(*best)) best = t;
         } else if (!failed || std::make_pair(t.stage, t.bottom->area + t.top->area) >

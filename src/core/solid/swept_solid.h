@@ -1,6 +1,6 @@
 // A solid that is a straight sweep of a planar face: two congruent planar caps (one a translated
-// copy of the other) joined by planar side faces that all run along one direction, the sweep
-// vector (normal to the caps or oblique). Detected from any shape read from a file; anything else
+// copy of the other) joined by side faces, planar or cylinders (extruded arcs, drilled holes), that
+// all run along one direction, the sweep vector (normal to the caps or oblique). Detected from any shape read from a file; anything else
 // is an InputError that says why, naming the face (numbered as FreeCAD numbers them: face k is
 // Face k of `autoblock faces`).
 #pragma once
@@ -32,7 +32,8 @@ struct SweptSolid {
 // Outputs: the solid, its caps and sweep vector. When several face pairs qualify (a box), the caps
 //          with the most vertices, then the largest area, then the lowest face numbers.
 // Throws InputError "<source>: <why>", one line, for: no solid or shell; more than one solid; an open
-// shell (a face with a free edge); a solid with more than one shell (a cavity); a curved face; no two
+// shell (a face with a free edge); a solid with more than one shell (a cavity); a curved face other
+// than a cylinder; a cylinder whose axis is not along the sweep; no two
 // parallel opposite faces; caps that are not translated copies of each other; a face not parallel to
 // the sweep; a cap the 2-D pipeline rejects (its message, the cap named).
 SweptSolid swept_solid_from_shape(const TopoDS_Shape& shape, const std::string& source);

@@ -14,12 +14,15 @@
 #include <gp_Ax1.hxx>
 #include <gp_Trsf.hxx>
 
+#include <array>
 #include <cmath>
 #include <random>
 
 #include "core/api/solid_meshing.h"
 #include "core/common/error.h"
+#include "core/data/arc_generator.h"
 #include "core/geometry/occt_face.h"
+#include "core/mesh/hex_conformity.h"
 #include "support/test_shapes.h"
 
 using namespace autoblock;
@@ -150,6 +153,51 @@ TEST_CASE("swept solids of general faces (edges at any angle): conformal, exact 
       CHECK(m.mesh.layers == 3);
       if (k < 2) check_blocks(m, 1e-6);
       ++k;
+    }
+  }
+}
+
+TEST_CASE("swept solids with cylinder sides (drilled holes, rounded edges): conformal, nodes on the cylinders",
+          "[solid][hex][api][arc]") {
+  std::mt19937_64 rng(11);
+  const TopoDS_Face plate = plate_with_holes(12, 8, {{3, 4, 1.5}, {8.5, 3.5, 1}});
+  const TopoDS_Face rounded = filleted_polygon(RectilinearPolygon{{{0, 0}, {10, 0}, {10, 6}, {0, 6}}, {}}, 1.5);
+  struct Case {
+    TopoDS_Face face;
+    bool turn;
+    size_t cylinders;
+  };
+  const std::vector<Case> cases{{plate, false, 2}, {plate, true, 2}, {rounded, false, 4}, {disk(1, 2, 3), true, 1}};
+  for (size_t k = 0; k < cases.size(); ++k) {
+    CAPTURE(k);
+    const Extrusion e = extrude(cases[k].face, 0, 0, 2.5, cases[k].turn, rng);
+    const SweptSolid solid = swept_solid_from_shape(e.solid, "arcs " + std::to_string(k));
+    size_t cylinders = 0;
+    for (const TopoDS_Face& f : solid.faces) cylinders += !f.IsNull() && surface_name(f) == "cylinder";
+    CHECK(cylinders == cases[k].cylinders);
+    SolidMeshOptions o;
+    o.layers = 3;
+    const SolidMeshing m = mesh_swept_solid(solid, DecomposeSettings{}, o);
+    INFO(m.conformity.problem);
+    REQUIRE(m.conformity.conformal);
+    CHECK(m.mesh.layers == 3);
+    // The hexahedra alone miss (rounded edges) or cover beyond (holes) the segments between their
+    // chords and the arcs: the cap's curved gap times the height.
+    const double gap = m.cap.result.conformity.curved_gap_area;
+    double raw = 0.0;
+    for (size_t h = 0; h < m.mesh.hexes.size(); ++h) raw += hex_volume(m.mesh.corners(h));
+    CHECK(raw + gap * 2.5 == Approx(e.volume).epsilon(1e-6));
+    CHECK(m.conformity.hex_volume == Approx(e.volume).epsilon(1e-6));
+    check_blocks(m, 1e-6);
+    if (k == 0) {
+      // Every layer's nodes on the holes' circles: at least the holes' 24-chord polygons' directions.
+      int on = 0;
+      for (const Point3& p : m.mesh.nodes) {
+        for (const auto& [x, y, r] : {std::array<double, 3>{3, 4, 1.5}, std::array<double, 3>{8.5, 3.5, 1}}) {
+          on += std::fabs(std::hypot(p[0] - x, p[1] - y) - r) < 1e-9 * r;
+        }
+      }
+      CHECK(on >= 2 * 24 * 4);
     }
   }
 }

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <GProp_GProps.hxx>
@@ -131,10 +132,10 @@ TEST_CASE("autoblock decompose SOLID decomposes a cap and writes the blocks as p
 
 TEST_CASE("autoblock mesh SOLID: solids it cannot sweep and misplaced options are one-line errors", "[cli][mesh][solid][errors]") {
   const std::string folder = test::temporary_folder("cli-solid-bad");
-  const std::string cylinder = folder + "/cylinder.brep";
-  write_shape_file(cylinder, BRepPrimAPI_MakeCylinder(1, 2).Shape());
+  const std::string cone = folder + "/cone.brep";
+  write_shape_file(cone, BRepPrimAPI_MakeCone(1, 0.5, 2).Shape());
   const std::string outputs = " --out '" + folder + "/m.msh' --json '" + folder + "/r.json' --blocks '" + folder + "/b.brep'";
-  check_input_error(test::run_autoblock("mesh '" + cylinder + "'" + outputs), cylinder + ": face 1 is curved (a cylinder)");
+  check_input_error(test::run_autoblock("mesh '" + cone + "'" + outputs), cone + ": face 1 is curved (a cone)");
   const std::string part = solid_file(folder);
   check_input_error(test::run_autoblock("mesh '" + part + "' --blocks '" + folder + "/b.txt'"), "expected a .brep");
   check_input_error(test::run_autoblock("mesh '" + part + "' --layers 0"), "--layers");

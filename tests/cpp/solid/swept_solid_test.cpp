@@ -9,6 +9,7 @@
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRep_Builder.hxx>
@@ -143,8 +144,9 @@ TEST_CASE("swept solids: one clear error per class, naming the face", "[solid][e
         BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(4, 4, 4).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(1, 1, 1), 2, 2, 2).Shape()).Shape();
     check_error(hollow, "the solid has 2 shells (a cavity inside it)");
   }
-  SECTION("a curved side") {
-    check_error(BRepPrimAPI_MakeCylinder(1, 2).Shape(), "face 1 is curved (a cylinder): a swept solid's faces are all planar");
+  SECTION("a curved side other than a cylinder") {
+    check_error(BRepPrimAPI_MakeCone(1, 0.5, 2).Shape(),
+                "face 1 is curved (a cone): a swept solid's faces are planar, or cylinders along the sweep");
   }
   SECTION("caps that differ: a frustum") {
     const TopoDS_Shape frustum = prismatoid({{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}},
