@@ -2,6 +2,8 @@
 // and one clear error per class of bad solid, naming the face.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
@@ -17,6 +19,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Shell.hxx>
+#include <gp_Ax2.hxx>
 #include <gp_Trsf.hxx>
 
 #include "core/common/error.h"
@@ -143,6 +146,22 @@ TEST_CASE("swept solids: one clear error per class, naming the face", "[solid][e
     const TopoDS_Shape hollow =
         BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(4, 4, 4).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(1, 1, 1), 2, 2, 2).Shape()).Shape();
     check_error(hollow, "the solid has 2 shells (a cavity inside it)");
+  }
+  SECTION("a cylinder across the sweep") {
+    // A box drilled along Z and along X (apart): every pair of caps has a hole across its sweep.
+    TopoDS_Shape part = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(10, 6, 4).Shape(),
+                                        BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(7, 1.2, -1), gp_Dir(0, 0, 1)), 0.6, 6).Shape())
+                            .Shape();
+    part = BRepAlgoAPI_Cut(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(-1, 4.5, 2), gp_Dir(1, 0, 0)), 0.8, 12).Shape()).Shape();
+    check_error(part, ", a cylinder, does not run along the sweep ");
+    check_error(part, "a swept solid's side faces run along the sweep");
+    // Either hole alone is a sweep along its axis.
+    const TopoDS_Shape drilled = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(10, 6, 4).Shape(),
+                                                 BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(-1, 4.5, 2), gp_Dir(1, 0, 0)), 0.8, 12).Shape())
+                                     .Shape();
+    const SweptSolid solid = swept_solid_from_shape(drilled, "drilled");
+    CHECK(std::fabs(solid.sweep.X()) == Approx(10.0));
+    CHECK(solid.sweep.Y() == Approx(0.0).margin(1e-9));
   }
   SECTION("a curved side other than a cylinder") {
     check_error(BRepPrimAPI_MakeCone(1, 0.5, 2).Shape(),
