@@ -106,6 +106,14 @@ int FaceArcs::arc_of_point(Point2 p) const {
 
 namespace {
 
+// The angle between a and b as seen from the arc's centre, in [0, pi].
+double turn_between(const CircularArc& arc, Point2 a, Point2 b) {
+  const double ta = std::atan2(a.y - arc.center.y, a.x - arc.center.x);
+  const double tb = std::atan2(b.y - arc.center.y, b.x - arc.center.x);
+  const double turn = std::fabs(ta - tb);
+  return turn > kPi ? kTwoPi - turn : turn;
+}
+
 // Both ends and the middle of a -> b on the arc's polygon, the ends at most two chord steps apart (the
 // default's, or a short arc's one chord: the whole arc) as seen from the centre.
 bool chord_on_arc(const CircularArc& arc, Point2 a, Point2 b, double tolerance) {
@@ -115,11 +123,7 @@ bool chord_on_arc(const CircularArc& arc, Point2 a, Point2 b, double tolerance) 
       !point_on_arc_polygon(m, arc, tolerance)) {
     return false;
   }
-  const double ta = std::atan2(a.y - arc.center.y, a.x - arc.center.x);
-  const double tb = std::atan2(b.y - arc.center.y, b.x - arc.center.x);
-  double turn = std::fabs(ta - tb);
-  if (turn > kPi) turn = kTwoPi - turn;
-  return turn <= max_turn;
+  return turn_between(arc, a, b) <= max_turn;
 }
 
 }  // namespace
@@ -135,10 +139,7 @@ int FaceArcs::arc_of_mesh_edge(Point2 a, Point2 b) const {
     const double step = std::fabs(arc.sweep) / arc_chord_count(arc);
     const double max_turn = std::max(kMeshEdgeArcSteps * kArcStepDegrees * kPi / 180.0, 2.0 * step);
     if (!point_on_arc_polygon(a, arc, tolerance) || !point_on_arc_polygon(b, arc, tolerance)) continue;
-    const double ta = std::atan2(a.y - arc.center.y, a.x - arc.center.x);
-    const double tb = std::atan2(b.y - arc.center.y, b.x - arc.center.x);
-    double turn = std::fabs(ta - tb);
-    if (turn > kPi) turn = kTwoPi - turn;
+    const double turn = turn_between(arc, a, b);
     if (turn > max_turn + 1e-9 + tolerance / arc.radius) continue;  // (an edge of exactly max_turn, rounded)
     // The middle: no nearer the centre than the chord of that turn (less the arc's own band), not
     // outside the circle, and within the arc's directions.

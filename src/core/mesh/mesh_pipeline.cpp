@@ -90,20 +90,21 @@ int inverted_quads(const QuadMesh& mesh, std::vector<char>* parts) {
   return count;
 }
 
-// A general face's interval counts into r (r.block_model made), each model edge at least its
-// edge_minimum, arcs aiming at edge_target (IntervalOptions).
-void assign_arc_intervals(MeshResult& r, const MeshOptions& options, double h, double tolerance,
+// A general face's interval counts of model into r, each model edge at least its edge_minimum, arcs
+// aiming at edge_target (IntervalOptions).
+void assign_arc_intervals(MeshResult& r, const BlockModel& model, const MeshOptions& options, double h, double tolerance,
                           const std::vector<int>& edge_minimum, const std::vector<double>& edge_target) {
   assign_with_fixed(r, options, h, [&](const EdgeIntervals& e) {
-    return fixed_edge_intervals(r.block_model, e.a, e.b, e.intervals, tolerance);
-  }, [&](const IntervalOptions& o) { return assign_edge_intervals(r.block_model, o); }, edge_minimum, edge_target);
-  }
+    return fixed_edge_intervals(model, e.a, e.b, e.intervals, tolerance);
+  }, [&](const IntervalOptions& o) { return assign_edge_intervals(model, o); }, edge_minimum, edge_target);
+}
 
-// r's mesh and smoothing from its block model and intervals (assign_arc_intervals, with edge_minimum
-// and edge_target), twisted and folded parts made again as below.
-void mesh_blocks(MeshResult& r, const InputFace& face, const RegionDecomposition& d, const MeshOptions& options, double h,
-                 double tolerance, std::vector<int> edge_minimum, const std::vector<double>& edge_target) {
-  r.mesh = block_model_mesh(r.block_model, r.intervals.intervals, face.planar.z, &face.arcs);
+// r's mesh and smoothing from model and r's intervals (assign_arc_intervals, with edge_minimum and
+// edge_target), twisted and folded parts made again as below.
+void mesh_blocks(MeshResult& r, const BlockModel& model, const InputFace& face, const RegionDecomposition& d,
+                 const MeshOptions& options, double h, double tolerance, std::vector<int> edge_minimum,
+                 const std::vector<double>& edge_target) {
+  r.mesh = block_model_mesh(model, r.intervals.intervals, face.planar.z, &face.arcs);
   r.smoothing = smooth_quad_mesh(r.mesh, options.smoothing_sweeps, kWorstRounds, &face.arcs);
   // A thin part whose two long sides have their vertices at different places along it gets a twisted
   // (inverted) quad when those sides carry few intervals, each vertex being a node: up to three times,
@@ -112,7 +113,7 @@ void mesh_blocks(MeshResult& r, const InputFace& face, const RegionDecomposition
   for (int round = 0; round < 3; ++round) {
     std::vector<char> twisted(d.finished.size(), 0);
     if (inverted_quads(r.mesh, &twisted) == 0) break;
-    for (const ModelBlock& block : r.block_model.blocks) {
+    for (const ModelBlock& block : model.blocks) {
       if (!twisted[static_cast<size_t>(block.part)]) continue;
       for (const ModelSide& side : block.sides) {
         for (const int e : side.edges) {
@@ -122,11 +123,11 @@ void mesh_blocks(MeshResult& r, const InputFace& face, const RegionDecomposition
     }
     // assign_with_fixed changes r's intervals only when the assignment succeeds.
     try {
-      assign_arc_intervals(r, options, h, tolerance, edge_minimum, edge_target);
+      assign_arc_intervals(r, model, options, h, tolerance, edge_minimum, edge_target);
     } catch (const InputError&) {
       break;  // too many quads, or the fixed counts forbid more: the mesh stays as it is
     }
-    r.mesh = block_model_mesh(r.block_model, r.intervals.intervals, face.planar.z, &face.arcs);
+    r.mesh = block_model_mesh(model, r.intervals.intervals, face.planar.z, &face.arcs);
     r.smoothing = smooth_quad_mesh(r.mesh, options.smoothing_sweeps, kWorstRounds, &face.arcs);
   }
   // A fold that finer intervals do not undo (opposite sides spacing their nodes differently: a long
@@ -134,9 +135,9 @@ void mesh_blocks(MeshResult& r, const InputFace& face, const RegionDecomposition
   // (transfinite_grid_by_length), kept if that leaves fewer inverted quads.
   std::vector<char> folded(d.finished.size(), 0);
   if (const int before = inverted_quads(r.mesh, &folded); before > 0) {
-    std::vector<char> by_length(r.block_model.blocks.size(), 0);
-    for (size_t b = 0; b < by_length.size(); ++b) by_length[b] = folded[static_cast<size_t>(r.block_model.blocks[b].part)];
-    QuadMesh again = block_model_mesh(r.block_model, r.intervals.intervals, face.planar.z, &face.arcs, &by_length);
+    std::vector<char> by_length(model.blocks.size(), 0);
+    for (size_t b = 0; b < by_length.size(); ++b) by_length[b] = folded[static_cast<size_t>(model.blocks[b].part)];
+    QuadMesh again = block_model_mesh(model, r.intervals.intervals, face.planar.z, &face.arcs, &by_length);
     const SmoothingReport smoothing = smooth_quad_mesh(again, options.smoothing_sweeps, kWorstRounds, &face.arcs);
     if (inverted_quads(again, nullptr) < before) {
       r.mesh = std::move(again);
@@ -248,13 +249,15 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     if (edge.arc < 0) continue;
     const CircularArc& arc = face.arcs.arcs[static_cast<size_t>(edge.arc)];
     const double step = std::fabs(arc.sweep) / arc_chord_count(arc);
-    chord_minimum[e] = std::max(1, static_cast<int>(std::ceil(std::fabs(edge.arc_sweep) / step - 1e-6)));
+    // The intervals that keep every one within `steps` chord steps of the arc.
+    auto intervals = [&](int steps) { return std::max(1, static_cast<int>(std::ceil(std::fabs(edge.arc_sweep) / (steps * step) - 1e-6))); };
+    chord_minimum[e] = intervals(1);
     edge_target[e] = chord_minimum[e];
-    const int most = arc.outside ? 1 : kMeshEdgeArcSteps;
-    relaxed_minimum[e] = std::max(1, static_cast<int>(std::ceil(std::fabs(edge.arc_sweep) / (most * step) - 1e-6)));
+    relaxed_minimum[e] = intervals(arc.outside ? 1 : kMeshEdgeArcSteps);
     relaxable = relaxable || relaxed_minimum[e] < chord_minimum[e];
   }
-  assign_arc_intervals(result, options, h, tolerance, chord_minimum, {});
+  const BlockModel& model = result.block_model;
+  assign_arc_intervals(result, model, options, h, tolerance, chord_minimum, {});
   result.interval_seconds = since(start);
 
   start = std::chrono::steady_clock::now();
@@ -262,7 +265,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   result.merge_seconds = since(start);
 
   start = std::chrono::steady_clock::now();
-  mesh_blocks(result, face, d, options, h, tolerance, chord_minimum, {});
+  mesh_blocks(result, model, face, d, options, h, tolerance, chord_minimum, {});
   result.mesh_seconds = since(start);
 
   start = std::chrono::steady_clock::now();
@@ -274,11 +277,10 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     return result;
   }
   start = std::chrono::steady_clock::now();
-  MeshResult again;
-  again.block_model = result.block_model;
+  MeshResult again;  // its intervals, mesh and smoothing (of result's block model)
   try {
-    assign_arc_intervals(again, options, h, tolerance, relaxed_minimum, edge_target);
-    mesh_blocks(again, face, d, options, h, tolerance, relaxed_minimum, edge_target);
+    assign_arc_intervals(again, model, options, h, tolerance, relaxed_minimum, edge_target);
+    mesh_blocks(again, model, face, d, options, h, tolerance, relaxed_minimum, edge_target);
   } catch (const InputError&) {
     result.mesh_seconds += since(start);
     return result;  // the fixed counts or the quad limit forbid it: the first mesh stands
