@@ -26,6 +26,7 @@ Console API (freecadcmd or FreeCAD's Python console):
     AutoBlock.start_training(request)                           # the same in the background: a TrainingRun
     AutoBlock.policy_names(), AutoBlock.default_policy(), AutoBlock.policy_info("sac-mesh"),
     AutoBlock.reward_presets(), AutoBlock.capabilities()
+    AutoBlock.combine_policies("sac-mesh", "general.pt", "both.pt")  # two networks: rectilinear, general faces
 
 Importing this package is cheap: the names above load their modules (and the native module) on
 first use.
@@ -53,6 +54,7 @@ _LAZY = {
     "MeshResult": ("console", "MeshResult"),
     "default_policy": ("console", "default_policy"),
     "policy_info": ("console", "policy_info"),
+    "combine_policies": ("console", "combine_policies"),
     "train": ("console", "train"),
     "start_training": ("training", "start"),
     "Cut": ("console", "Cut"),

@@ -375,8 +375,16 @@ def default_policy():
 def policy_info(policy=None):
     """What a policy is (from the core): {"name", "learned" (a trained policy, with a value network), "reward"
     (the preset it aims at), "scores_by" (whose value network scores vertices: its own, auto's fallback's, or
-    None)}. policy: a name or a policy file; None: the default. ValueError when unknown."""
+    None), "general_network" (a second network decides on general faces)}. policy: a name or a policy file; None: the default. ValueError when unknown."""
     return dict(native.load().policy_info(policy or preferences.default_policy()))
+
+
+def combine_policies(grid, general, output):
+    """Write output, one policy file with two value networks: grid's (a shipped name or a policy file) for faces
+    whose edges run along two perpendicular directions, general's for every other face (edges at other angles,
+    arcs). The twin of `autoblock combine`. Returns the file's meta as a dict. ValueError for unreadable files,
+    networks aiming at different reward presets, or a missing folder."""
+    return json.loads(native.load().combine_policies(str(grid), str(general), str(output)))
 
 
 def reward_presets():

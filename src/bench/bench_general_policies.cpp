@@ -171,7 +171,7 @@ int main(int argc, char** argv) {
       const std::string path =
           std::filesystem::exists(name) ? name : models_folder() + "/policies/" + name + ".pt";
       LoadedPolicy loaded = load_policy_file(path, false);
-      auto agent = std::dynamic_pointer_cast<LookaheadAgent>(loaded.agent);
+      auto agent = std::dynamic_pointer_cast<LookaheadAgent>(loaded.general_agent());
       if (!agent) throw std::runtime_error(name + " is not a lookahead agent's policy");
       if (hash != std::string::npos) agent->set_deploy_top_k(std::stoi(base.substr(hash + 1)));
       if (taper) agent->set_region_taper(true);

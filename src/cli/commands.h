@@ -11,5 +11,6 @@ void add_eval_command(CLI::App& app);
 void add_train_command(CLI::App& app);
 void add_mesh_command(CLI::App& app);
 void add_faces_command(CLI::App& app);
+void add_combine_command(CLI::App& app);
 
 }  // namespace autoblock::cli

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   autoblock::cli::add_train_command(app);
   autoblock::cli::add_mesh_command(app);
   autoblock::cli::add_faces_command(app);
+  autoblock::cli::add_combine_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

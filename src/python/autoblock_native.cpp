@@ -454,7 +454,14 @@ py::dict policy_info_py(const std::string& spec) {
   // Whose value network scores the vertices (auto: its learned fallback's); None for a baseline.
   const std::string scorer = source->scoring_policy_name();
   d["scores_by"] = scorer.empty() ? py::object(py::none()) : py::object(py::str(scorer));
+  // A second network for general faces (a policy file of two networks, `autoblock combine`).
+  d["general_network"] = source->learned() && source->learned_policy()->general_network();
   return d;
+}
+
+std::string combine_policies_py(const std::string& grid, const std::string& general, const std::string& output) {
+  py::gil_scoped_release release;
+  return combine_policies(grid, general, output);
 }
 
 std::vector<double> vertex_scores_py(const std::string& brep, const py::object& cuts, int step, const std::string& policy,
@@ -842,7 +849,12 @@ PYBIND11_MODULE(autoblock_native, m) {
         "or the face is rectilinear.");
   m.def("policy_info", &policy_info_py, py::arg("policy") = "",
         "What a policy is: {'name', 'learned' (a trained policy with a value network), 'reward' (the preset it "
-        "aims at: a trained policy's own)}. policy: a name or a policy file ('' for the default).");
+        "aims at: a trained policy's own), 'scores_by', 'general_network' (a second network decides on general "
+        "faces)}. policy: a name or a policy file ('' for the default).");
+  m.def("combine_policies", &combine_policies_py, py::arg("grid"), py::arg("general"), py::arg("output"),
+        "Write output, one policy file with grid's network for rectilinear faces and general's for the others "
+        "(shipped names or policy files). Returns the file's meta (JSON text). ValueError for unreadable files, "
+        "different reward presets or a missing folder.");
   m.def("vertex_scores", &vertex_scores_py, py::arg("brep"), py::arg("cuts"), py::arg("step"), py::arg("policy") = "",
         py::arg("max_steps") = 0, py::arg("reward") = "paper", py::arg("source") = "face",
         py::arg("rules") = std::vector<double>{},

@@ -54,12 +54,12 @@ class TestNativeModule(unittest.TestCase):
         self.assertEqual(AutoBlock.capabilities(), {"learned_policies": True, "training": True, "vertex_scores": True,
                                                     "meshing": True})
         self.assertEqual(AutoBlock.policy_info(), {"name": "auto", "learned": False, "reward": "mesh",
-                                                   "scores_by": "sac-mesh"})
+                                                   "scores_by": "sac-mesh", "general_network": False})
         self.assertEqual(AutoBlock.policy_info("sac-mesh"), {"name": "sac-mesh", "learned": True, "reward": "mesh",
-                                                             "scores_by": "sac-mesh"})
+                                                             "scores_by": "sac-mesh", "general_network": False})
         self.assertEqual(AutoBlock.policy_info("sac-paper")["reward"], "paper")
         self.assertEqual(AutoBlock.policy_info("greedy"), {"name": "greedy", "learned": False, "reward": "paper",
-                                                           "scores_by": None})
+                                                           "scores_by": None, "general_network": False})
 
     def test_input_errors_are_value_errors(self):
         from AutoBlock import native
@@ -1417,7 +1417,8 @@ class TestTraining(unittest.TestCase):
                 self.assertEqual(len(f.read().splitlines()), 1 + 6)
             # The trained policy: its own reward, value scores, a parametric object.
             self.assertEqual(AutoBlock.policy_info(output), {"name": output, "learned": True, "reward": "mesh",
-                                                             "scores_by": output})
+                                                             "scores_by": output, "general_network": False})
+
             decomposition = AutoBlock.decompose(support.read_face(), policy=output)
             self.assertTrue(decomposition.complete)
             self.assertEqual(decomposition.reward, "mesh")
@@ -1478,6 +1479,23 @@ class TestTraining(unittest.TestCase):
             decomposition = AutoBlock.decompose(hexagon, policy=output)
             self.assertTrue(decomposition.complete)
             self.assertGreaterEqual(decomposition.n_blocks, 1)
+            # Beside sac-mesh's network, as the network for general faces (the twin of autoblock combine): the
+            # hexagon is decomposed as by the policy trained here, a rectilinear face as by sac-mesh.
+            both = os.path.join(folder, "both.pt")
+            meta = AutoBlock.combine_policies("sac-mesh", output, both)
+            self.assertEqual(meta["version"], 2)
+            self.assertEqual(meta["general"]["training"]["episodes"], 4)
+            self.assertTrue(AutoBlock.policy_info(both)["general_network"])
+            self.assertFalse(AutoBlock.policy_info(output)["general_network"])
+            combined = AutoBlock.decompose(hexagon, policy=both)
+            self.assertEqual([(c.local, c.direction) for c in combined.cuts],
+                             [(c.local, c.direction) for c in decomposition.cuts])
+            grid = support.read_face()
+            self.assertEqual([repr(c) for c in AutoBlock.decompose(grid, policy=both).cuts],
+                             [repr(c) for c in AutoBlock.decompose(grid, policy="sac-mesh").cuts])
+            with self.assertRaisesRegex(ValueError, "different reward presets"):
+                AutoBlock.combine_policies("sac-paper", output, os.path.join(folder, "x.pt"))
+            self.assertFalse(os.path.exists(os.path.join(folder, "x.pt")))
             paper = AutoBlock.TrainingRequest(os.path.join(folder, "paper.pt"),
                                               train_generate={"count": 1, "general": 2, "seed": 4},
                                               test_generate={"count": 0, "general": 1, "seed": 5}, episodes=3,

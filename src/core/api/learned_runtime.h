@@ -38,6 +38,8 @@ class LearnedPolicy {
   // The same as vertex_scores on a general face's episode (RegionLookaheadPolicy::vertex_scores); the
   // caller holds lock_general_engine(). Throws InputError when the agent has no policy on them.
   virtual std::vector<float> region_vertex_scores(const RegionEpisode& episode) = 0;
+  // True when the file holds a second network for general faces (policy file version 2).
+  virtual bool general_network() const = 0;
 };
 
 class LearnedRuntime {
@@ -45,6 +47,12 @@ class LearnedRuntime {
   virtual ~LearnedRuntime() = default;
   // Inputs: path, a policy file. Throws InputError for a missing, corrupt or incompatible file.
   virtual std::shared_ptr<LearnedPolicy> load_policy(const std::string& path) = 0;
+  // Writes output, a policy file with grid's network for rectilinear faces and general's for the
+  // others (sac/policy_file.h, combine_policy_files); grid and general are policy files' paths.
+  // Output: the new file's meta (JSON text). Throws InputError for unreadable files, different
+  // reward presets, a general network without a policy on general faces, or a missing folder.
+  virtual std::string combine_policies(const std::string& grid, const std::string& general,
+                                       const std::string& output) = 0;
   // See run_training_job (training_job.h).
   virtual TrainingOutcome run_training_job(const TrainingJob& job, const TrainingCallbacks& callbacks) = 0;
 };

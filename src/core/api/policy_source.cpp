@@ -59,6 +59,11 @@ std::string auto_fallback_name() {
   return "";
 }
 
+std::string combine_policies(const std::string& grid, const std::string& general, const std::string& output) {
+  if (output.empty()) throw InputError("no output file for the combined policy");
+  return learned_runtime().combine_policies(policy_file_path(grid), policy_file_path(general), output);
+}
+
 PolicySource::PolicySource(const std::string& name_or_path, BaselineOptions baseline)
     : name_(name_or_path.empty() ? default_policy_name() : name_or_path), baseline_(baseline) {
   if (name_ == "auto") {

@@ -32,6 +32,13 @@ std::string auto_fallback_name();
 // Throws InputError for a name that is neither (listing the known names).
 std::string policy_file_path(const std::string& name_or_path);
 
+// Writes output, one policy file holding grid's network for faces whose edges run along two
+// perpendicular directions and general's for every other face (edges at any angle, arcs): a network
+// trained on general faces ships without losing what the grid network knows. grid and general: a
+// shipped name or a policy file each (of a two-network file, its own network for that kind).
+// Output: the new file's meta (JSON text). Throws InputError (learned_runtime.h, combine_policies).
+std::string combine_policies(const std::string& grid, const std::string& general, const std::string& output);
+
 class PolicySource {
  public:
   // Inputs: name_or_path, "auto", a baseline name, a shipped policy name, a policy file's path, or

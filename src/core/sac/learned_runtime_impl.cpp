@@ -25,21 +25,24 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A policy file's agents: one for every face, or (version 2) one for rectilinear faces and one for
+// general faces.
 class AgentPolicy : public LearnedPolicy {
  public:
-  explicit AgentPolicy(std::shared_ptr<LearningAgent> agent) : agent_(std::move(agent)) {}
+  explicit AgentPolicy(const LoadedPolicy& loaded) : agent_(loaded.agent), general_(loaded.general_agent()) {}
   RewardPreset reward() const override { return agent_->config().reward; }
   std::unique_ptr<Policy> deployed_policy(const std::string& name) override { return agent_->deployed_policy(name); }
   std::vector<float> vertex_scores(const Episode& episode) override { return agent_->vertex_scores(episode); }
   std::unique_ptr<RegionPolicy> deployed_region_policy(const std::string& name) override {
-    return agent_->deployed_region_policy(name);
+    return general_->deployed_region_policy(name);
   }
   std::vector<float> region_vertex_scores(const RegionEpisode& episode) override {
-    return agent_->region_vertex_scores(episode);
+    return general_->region_vertex_scores(episode);
   }
+  bool general_network() const override { return general_ != agent_; }
 
  private:
-  std::shared_ptr<LearningAgent> agent_;
+  std::shared_ptr<LearningAgent> agent_, general_;
 };
 
 std::string sibling(const std::string& path, const std::string& suffix) {
@@ -164,10 +167,13 @@ TrainingOutcome train(const TrainingJob& job, const TrainingCallbacks& callbacks
   // Checked before the data loads (which can take a while).
   SacConfig config;
   if (!job.resume) config = job_config(job);
-  std::shared_ptr<LearningAgent> initial;
-  if (!job.init.empty()) initial = load_policy_file(policy_file_path(job.init), false).agent;
+  LoadedPolicy initial;
+  if (!job.init.empty()) initial = load_policy_file(policy_file_path(job.init), false);
 
   TrainingSet train_set = load_training_set(job.train_folder, job.train_generate, "training");
+  // A policy with two networks starts a run on general faces alone from its network for them.
+  const std::shared_ptr<LearningAgent> initial_agent =
+      train_set.faces.empty() && !train_set.general.empty() ? initial.general_agent() : initial.agent;
   TrainingSet test_set = load_training_set(job.test_folder, job.test_generate, "test");
   TrainerOptions options;
   options.episodes = job.episodes;
@@ -181,7 +187,7 @@ TrainingOutcome train(const TrainingJob& job, const TrainingCallbacks& callbacks
       job.resume ? std::make_unique<Trainer>(Trainer::resume(outcome.checkpoint, options, std::move(train_set),
                                                              std::move(test_set)))
                  : std::make_unique<Trainer>(config, options, std::move(train_set), std::move(test_set));
-  if (initial) trainer->agent()->copy_weights_from(*initial);
+  if (initial_agent) trainer->agent()->copy_weights_from(*initial_agent);
   if (job.resume && !job.settings.empty()) {
     const auto lookahead = std::dynamic_pointer_cast<LookaheadAgent>(trainer->agent());
     if (!lookahead) throw InputError("deploy_views and deploy_top_k apply to the lookahead agent only");
@@ -254,7 +260,12 @@ class Runtime : public LearnedRuntime {
  public:
   Runtime() { set_compute_threads(1); }  // deployment: one thread per decomposition (training sets its own)
   std::shared_ptr<LearnedPolicy> load_policy(const std::string& path) override {
-    return std::make_shared<AgentPolicy>(load_policy_file(path, false).agent);
+    return std::make_shared<AgentPolicy>(load_policy_file(path, false));
+  }
+  std::string combine_policies(const std::string& grid, const std::string& general, const std::string& output) override {
+    require_parent_folder(output, "the policy file");
+    const nlohmann::json meta = combine_policy_files(grid, general, output);
+    return meta.dump();
   }
   TrainingOutcome run_training_job(const TrainingJob& job, const TrainingCallbacks& callbacks) override {
     return train(job, callbacks);

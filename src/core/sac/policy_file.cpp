@@ -5,16 +5,32 @@
 
 #include "core/common/error.h"
 #include "core/io/atomic_file.h"
+#include "core/region/region_policy.h"
 #include <torch/torch.h>
 
 namespace autoblock {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+void write_archive(const std::string& path, torch::serialize::OutputArchive& archive) {
+  write_file_atomically(path, [&](const std::string& temporary) {
+    try {
+      archive.save_to(temporary);
+      return true;
+    } catch (const c10::Error&) {
+      return false;
+    }
+  });
+}
+
+}  // namespace
+
 void save_policy_file(const std::string& path, const LearningAgent& agent, const nlohmann::json& training,
                       bool checkpoint) {
   const nlohmann::json meta = {{"format", "autoblock-policy"},
-                               {"version", kPolicyFormatVersion},
+                               {"version", 1},
                                {"kind", checkpoint ? "checkpoint" : "policy"},
                                {"config", sac_config_json(agent.config())},
                                {"training", training}};
@@ -27,14 +43,33 @@ void save_policy_file(const std::string& path, const LearningAgent& agent, const
     std::memcpy(blob.data_ptr<uint8_t>(), bytes.data(), bytes.size());
     archive.write("replay_memory", blob);
   }
-  write_file_atomically(path, [&](const std::string& temporary) {
-    try {
-      archive.save_to(temporary);
-      return true;
-    } catch (const c10::Error&) {
-      return false;
-    }
-  });
+  write_archive(path, archive);
+}
+
+void save_two_agent_policy_file(const std::string& path, const LearningAgent& grid, const nlohmann::json& grid_training,
+                                const std::shared_ptr<LearningAgent>& general, const nlohmann::json& general_training) {
+  if (!general) throw InputError("no network for general faces");
+  if (grid.config().reward != general->config().reward) {
+    throw InputError("the two networks aim at different reward presets (" + reward_preset_name(grid.config().reward) +
+                     " for rectilinear faces, " + reward_preset_name(general->config().reward) + " for general ones)");
+  }
+  if (!general->deployed_region_policy("general")) {
+    throw InputError("the network for general faces has no policy on them (a paper's agent trained before it learned on general faces)");
+  }
+  const nlohmann::json meta = {
+      {"format", "autoblock-policy"},
+      {"version", 2},
+      {"kind", "policy"},
+      {"config", sac_config_json(grid.config())},
+      {"training", grid_training},
+      {"general", {{"config", sac_config_json(general->config())}, {"training", general_training}}}};
+  torch::serialize::OutputArchive archive;
+  archive.write("meta", c10::IValue(meta.dump()));
+  grid.save(archive, false);
+  torch::serialize::OutputArchive nested;
+  general->save(nested, false);
+  archive.write("general", nested);
+  write_archive(path, archive);
 }
 
 LoadedPolicy load_policy_file(const std::string& path, bool checkpoint) {
@@ -60,11 +95,18 @@ LoadedPolicy load_policy_file(const std::string& path, bool checkpoint) {
   if (checkpoint && meta.value("kind", "") != "checkpoint") {
     throw InputError(path + ": is a policy, not a training checkpoint (it cannot be resumed)");
   }
+  if (version >= 2 && checkpoint) throw InputError(path + ": a policy with two networks is not a training checkpoint");
   LoadedPolicy loaded;
   loaded.meta = meta;
   try {
     loaded.agent = make_learning_agent(sac_config_from_json(meta.at("config")));
     loaded.agent->load(archive, checkpoint);
+    if (meta.contains("general")) {
+      loaded.general = make_learning_agent(sac_config_from_json(meta.at("general").at("config")));
+      torch::serialize::InputArchive nested;
+      archive.read("general", nested);
+      loaded.general->load(nested, false);
+    }
     if (checkpoint) {
       torch::Tensor blob;
       archive.read("replay_memory", blob);
@@ -78,6 +120,18 @@ LoadedPolicy load_policy_file(const std::string& path, bool checkpoint) {
     throw InputError(path + ": the policy file does not match its network configuration (corrupt or incompatible)");
   }
   return loaded;
+}
+
+nlohmann::json combine_policy_files(const std::string& grid_source, const std::string& general_source,
+                                    const std::string& path) {
+  const LoadedPolicy grid = load_policy_file(grid_source, false);
+  const LoadedPolicy general = load_policy_file(general_source, false);
+  const nlohmann::json general_training =
+      general.general ? general.meta.at("general").value("training", nlohmann::json::object())
+                      : general.meta.value("training", nlohmann::json::object());
+  nlohmann::json grid_training = grid.meta.value("training", nlohmann::json::object());
+  save_two_agent_policy_file(path, *grid.agent, grid_training, general.general_agent(), general_training);
+  return load_policy_file(path, false).meta;
 }
 
 }  // namespace autoblock

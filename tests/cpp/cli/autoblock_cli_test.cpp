@@ -28,7 +28,7 @@ void check_usage_error(const test::CommandResult& r) {
 }  // namespace
 
 TEST_CASE("autoblock --help works for every command", "[cli]") {
-  for (const std::string command : {"", "generate", "decompose", "eval", "mesh", "faces"}) {
+  for (const std::string command : {"", "generate", "decompose", "eval", "mesh", "faces", "combine"}) {
     const auto r = test::run_autoblock(command + " --help");
     INFO(command);
     CHECK(r.exit_code == 0);
@@ -158,6 +158,44 @@ TEST_CASE("autoblock train: bad options and data get exit 2 and a one-line error
     check_usage_error(r);
   }
   CHECK_FALSE(std::filesystem::exists(folder + "/p.pt"));
+}
+
+TEST_CASE("autoblock combine: one policy file, one network per kind of face; bad requests write nothing",
+          "[cli][combine][train]") {
+  const std::string folder = test::temporary_folder("cli-combine");
+  const auto r = test::run_autoblock("combine --grid sac-mesh --general sac-mesh --out '" + folder + "/both.pt'");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.out, Contains("rectilinear faces by sac-mesh's network") && Contains("general faces by sac-mesh's"));
+  // Both kinds of face decompose with it, as with the network it was made of (here the same twice).
+  REQUIRE(test::run_autoblock("generate --count 1 --seed 4 --out '" + folder + "/grid'").exit_code == 0);
+  REQUIRE(test::run_autoblock("generate --kind polygon --count 1 --seed 4 --out '" + folder + "/general'").exit_code == 0);
+  for (const std::string face : {"grid", "general"}) {
+    INFO(face);
+    nlohmann::json reports[2];
+    int k = 0;
+    for (const std::string& policy : {std::string("sac-mesh"), "'" + folder + "/both.pt'"}) {
+      const auto d = test::run_autoblock("decompose '" + folder + "/" + face + "/shape_0000.brep' --policy " + policy +
+                                         " --json '" + folder + "/r.json'");
+      INFO(d.err);
+      REQUIRE(d.exit_code == 0);
+      reports[k++] = read_json(folder + "/r.json");
+    }
+    CHECK(reports[0]["n_blocks"] == reports[1]["n_blocks"]);
+    CHECK(reports[0]["return"] == reports[1]["return"]);
+  }
+  const std::vector<std::string> cases{
+      "combine --grid sac-mesh --general sac-paper --out '" + folder + "/x.pt'",  // two reward presets
+      "combine --grid sac-mesh --general '" + folder + "/none.pt' --out '" + folder + "/x.pt'",
+      "combine --grid no-such-policy --general sac-mesh --out '" + folder + "/x.pt'",
+      "combine --grid sac-mesh --general sac-mesh --out '" + folder + "/no/such/x.pt'",
+      "combine --grid sac-mesh --out '" + folder + "/x.pt'"};
+  for (const std::string& arguments : cases) {
+    const auto e = test::run_autoblock(arguments);
+    INFO(arguments << ": " << e.err);
+    check_usage_error(e);
+  }
+  CHECK_FALSE(std::filesystem::exists(folder + "/x.pt"));
 }
 
 TEST_CASE("autoblock loads LibTorch only for a learned policy, STEP only for STEP files (the loader's own record)", "[cli][startup]") {
