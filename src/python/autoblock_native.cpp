@@ -14,6 +14,7 @@
 #include <Standard_Failure.hxx>
 
 #include <atomic>
+#include <functional>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -709,13 +710,24 @@ py::dict train_py(const py::dict& options, const py::object& progress) {
   TrainingCallbacks callbacks;
   callbacks.should_stop = [&] { return stop.load(); };
   if (!progress.is_none()) {
-    callbacks.on_episode = [&](const EpisodeRecord& r, bool earlier) {
+    // Calls progress with the event fill() makes under the GIL; False back, or a failure, stops the run.
+    const auto report = [&](const std::function<void(py::dict&)>& fill) {
       if (stop) return;
       py::gil_scoped_acquire acquire;
       try {
         py::dict event;
-        event["episode"] = r.episode;
+        fill(event);
         event["episodes"] = job.episodes;
+        const py::object answer = progress(event);
+        if (!answer.is_none() && !answer.cast<bool>()) stop = true;
+      } catch (py::error_already_set& e) {
+        callback_error = e.what();
+        stop = true;
+      }
+    };
+    callbacks.on_episode = [&](const EpisodeRecord& r, bool earlier) {
+      report([&](py::dict& event) {
+        event["episode"] = r.episode;
         event["return"] = r.ret;
         event["blocks"] = r.blocks;
         event["steps"] = r.steps;
@@ -724,28 +736,10 @@ py::dict train_py(const py::dict& options, const py::object& progress) {
         event["seconds"] = r.wall_seconds;
         event["test_return"] = r.evaluated ? py::object(py::float_(r.test_return)) : py::object(py::none());
         event["earlier"] = earlier;
-        const py::object answer = progress(event);
-        if (!answer.is_none() && !answer.cast<bool>()) stop = true;
-      } catch (py::error_already_set& e) {
-        callback_error = e.what();
-        stop = true;
-      }
+      });
     };
     // What the run does before its first episode: an event with "status" (no "episode").
-    callbacks.on_status = [&](const std::string& line) {
-      if (stop) return;
-      py::gil_scoped_acquire acquire;
-      try {
-        py::dict event;
-        event["status"] = line;
-        event["episodes"] = job.episodes;
-        const py::object answer = progress(event);
-        if (!answer.is_none() && !answer.cast<bool>()) stop = true;
-      } catch (py::error_already_set& e) {
-        callback_error = e.what();
-        stop = true;
-      }
-    };
+    callbacks.on_status = [&](const std::string& line) { report([&](py::dict& event) { event["status"] = line; }); };
   }
   TrainingOutcome outcome;
   {

@@ -38,7 +38,7 @@ double since(std::chrono::steady_clock::time_point start) {
 
 Point3 point_of(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
-// A straight edge of the bottom cap and the side face that meets it.
+// An edge of the bottom cap (a line or a circular arc) and the side face that meets it.
 struct CapEdge {
   std::vector<Point3> points;  // the edge's ends (a line), or points along it (an arc)
   int face = 0;

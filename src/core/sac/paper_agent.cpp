@@ -131,46 +131,8 @@ EpisodeRecord PaperAgent::train_region_episode(const Region& face, std::mt19937_
   };
   std::map<std::string, double> metric_sums;
   int updates = 0;
-  while (episode.running()) {
-    const int id = episode.current_part_id();
-    const Region part = episode.current_part();
-    const Known& k = known(id, part);
-    const size_t vertices = k.state->observations.size();
-    const size_t choices = vertices + (std::isnan(k.template_reward) ? 0 : 1);
-    size_t choice;
-    double u;
-    if (general_steps_ < config.warmup_steps) {
-      choice = std::uniform_int_distribution<size_t>(0, choices - 1)(rng);
-      u = std::uniform_real_distribution<double>(-1.0, 1.0)(rng);
-    } else {
-      const std::vector<float> values = general_->vertex_values(*k.state);
-      std::vector<double> q(values.begin(), values.end());
-      if (choices > vertices) q.push_back(k.template_reward);
-      choice = sample_softmax(q, general_->vertex_temperature(), rng);
-      u = choice < vertices ? general_->angle_action(k.state->observations[choice], &rng) : 0.0;
-    }
-    if (choice == vertices) {  // the template: its value is its reward, nothing to learn
-      RegionAction action;
-      action.kind = RegionAction::Kind::Template;
-      episode.step(action);
-      continue;
-    }
-    RegionAction action;
-    action.cut = cut_of_angle(part, static_cast<int>(choice), u);
-    const RegionCutRecord& cut = episode.step(action);
-    Transition transition;
-    transition.state = k.state;
-    transition.vertex = static_cast<int>(choice);
-    transition.angle = static_cast<float>(u);
-    transition.reward = static_cast<float>(cut.reward);
-    for (const int child : cut.children) {
-      for (const RegionPiece& piece : episode.queue()) {
-        if (piece.id != child) continue;
-        const Known& c = known(child, piece.region);
-        transition.children.push_back(c.state);
-        transition.children_template.push_back(c.template_reward);
-      }
-    }
+  // Remembers a transition and learns (one update per update_every steps after the warm-up).
+  auto remember = [&](Transition transition) {
     general_buffer_.add(std::move(transition));
     ++general_steps_;
     if (general_steps_ > config.warmup_steps && general_buffer_.size() >= static_cast<size_t>(config.batch_size) &&
@@ -178,6 +140,71 @@ EpisodeRecord PaperAgent::train_region_episode(const Region& face, std::mt19937_
       const auto batch = general_buffer_.sample(static_cast<size_t>(config.batch_size), rng);
       for (const auto& [name, value] : general_->update(batch, rng)) metric_sums[name] += value;
       ++updates;
+    }
+  };
+  constexpr int kMaskedDraws = 8;  // region_mask: draws per step before the progress cut
+  while (episode.running()) {
+    const int id = episode.current_part_id();
+    const Region part = episode.current_part();
+    const Known& k = known(id, part);
+    const size_t vertices = k.state->observations.size();
+    const size_t choices = vertices + (std::isnan(k.template_reward) ? 0 : 1);
+    for (int draw = 1;; ++draw) {
+      size_t choice;
+      double u;
+      if (general_steps_ < config.warmup_steps) {
+        choice = std::uniform_int_distribution<size_t>(0, choices - 1)(rng);
+        u = std::uniform_real_distribution<double>(-1.0, 1.0)(rng);
+      } else {
+        const std::vector<float> values = general_->vertex_values(*k.state);
+        std::vector<double> q(values.begin(), values.end());
+        if (choices > vertices) q.push_back(k.template_reward);
+        choice = sample_softmax(q, general_->vertex_temperature(), rng);
+        u = choice < vertices ? general_->angle_action(k.state->observations[choice], &rng) : 0.0;
+      }
+      if (choice == vertices) {  // the template: its value is its reward, nothing to learn
+        RegionAction action;
+        action.kind = RegionAction::Kind::Template;
+        episode.step(action);
+        break;
+      }
+      RegionAction action;
+      action.cut = cut_of_angle(part, static_cast<int>(choice), u);
+      Transition transition;
+      transition.state = k.state;
+      transition.vertex = static_cast<int>(choice);
+      transition.angle = static_cast<float>(u);
+      CutOutcome outcome = episode.outcome_of(action);
+      if (config.region_mask && !makes_progress(part, outcome.pieces, rules)) {
+        // Remembered with its reward and what it would leave, not made.
+        transition.reward = static_cast<float>(episode.reward_of(action, outcome));
+        if (outcome.pieces.size() < 2) {
+          transition.children.push_back(k.state);
+          transition.children_template.push_back(k.template_reward);
+        } else {
+          for (const Region& piece : outcome.pieces) {
+            if (block_corners(piece, rules)) continue;
+            transition.children.push_back(general_state(piece, config.graph));
+            transition.children_template.push_back(template_choice_reward(piece, config.reward, face_size, rules));
+          }
+        }
+        remember(std::move(transition));
+        if (draw < kMaskedDraws) continue;
+        episode.step(progress_action(part, rules));  // as deployed: not the actor's, nothing to learn
+        break;
+      }
+      const RegionCutRecord& cut = episode.step(action, std::move(outcome));
+      transition.reward = static_cast<float>(cut.reward);
+      for (const int child : cut.children) {
+        for (const RegionPiece& piece : episode.queue()) {
+          if (piece.id != child) continue;
+          const Known& c = known(child, piece.region);
+          transition.children.push_back(c.state);
+          transition.children_template.push_back(c.template_reward);
+        }
+      }
+      remember(std::move(transition));
+      break;
     }
   }
   EpisodeRecord record = region_episode_record_of(episode, metric_sums, updates);

@@ -78,6 +78,7 @@ nlohmann::json sac_config_json(const SacConfig& c) {
           {"deploy_top_k", c.deploy_top_k},
           {"train_top_k", c.train_top_k},
           {"region_taper", c.region_taper},
+          {"region_mask", c.region_mask},
           {"polyak", c.polyak},
           {"target_update_every", c.target_update_every},
           {"direction_target_entropy", c.direction_target_entropy},
@@ -122,6 +123,7 @@ SacConfig sac_config_from_json(const nlohmann::json& j) {
     c.train_top_k = j.value("train_top_k", 12);  // files written before it learned on grid faces only
     if (c.train_top_k < 0) throw InputError("train_top_k must be >= 0");
     c.region_taper = j.value("region_taper", false);
+    c.region_mask = j.value("region_mask", false);
     c.polyak = j.at("polyak").get<double>();
     c.target_update_every = j.at("target_update_every").get<int>();
     c.direction_target_entropy = j.at("direction_target_entropy").get<double>();

@@ -50,6 +50,11 @@ struct SacConfig {
   bool region_taper = false;            // lookahead, general faces, mesh preset: candidates' rewards
                                         // less the search's taper charge (region_reward.h), trained
                                         // and deployed (false: the reward itself; files without it)
+  bool region_mask = false;             // paper, trained on general faces: a drawn cut that makes no
+                                        // progress is remembered (its reward, its pieces) but not
+                                        // made; the agent draws again (up to 8 times), then the
+                                        // progress cut is made, as deployed (false: every drawn cut
+                                        // is made; files without it)
   double polyak = 0.01;                 // paper: target networks move this fraction per update
   int target_update_every = 25;         // lookahead: the target network is copied every so many updates
   double direction_target_entropy = 0.3;     // nats; ln 2 = 0.69 is the maximum for 2 directions

@@ -258,3 +258,27 @@ TEST_CASE("a paper agent warm-started from a policy without general networks kee
   Episode episode(face);
   CHECK((agent->vertex_scores(episode) == faithful.agent->vertex_scores(episode)));
 }
+
+TEST_CASE("region_mask: the paper agent's training draws again instead of making a cut without progress",
+          "[sac][continuous]") {
+  // Uniform draws (the warm-up): most vertices and angles leave a piece no simpler than the part. Made,
+  // they fill the episode; masked, they are remembered and drawn again, and every step made progresses.
+  int steps[2] = {0, 0};
+  for (const bool mask : {false, true}) {
+    torch::manual_seed(23);
+    SacConfig config = default_sac_config("paper");
+    config.reward = RewardPreset::Mesh;
+    config.warmup_steps = 100000;
+    config.region_mask = mask;
+    PaperAgent agent(config);
+    std::mt19937_64 rng(5);
+    for (int i = 0; i < 4; ++i) {
+      const EpisodeRecord r =
+          agent.train_region_episode(test::region_of(test::general_polygon(80 + i, GeneralKind::Polygon, i == 3)), rng, 200);
+      if (mask) CHECK(r.complete);
+      steps[mask] += r.steps;
+    }
+  }
+  INFO("steps made " << steps[0] << " unmasked, " << steps[1] << " masked");
+  CHECK(steps[1] < steps[0]);
+}
