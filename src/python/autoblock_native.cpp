@@ -709,22 +709,23 @@ py::dict train_py(const py::dict& options, const py::object& progress) {
   std::string callback_error;
   TrainingCallbacks callbacks;
   callbacks.should_stop = [&] { return stop.load(); };
+  // Calls progress with the event fill() makes under the GIL; False back, or a failure, stops the run.
+  // (Declared here: the callbacks below hold it by reference until the run ends.)
+  const auto report = [&](const std::function<void(py::dict&)>& fill) {
+    if (stop) return;
+    py::gil_scoped_acquire acquire;
+    try {
+      py::dict event;
+      fill(event);
+      event["episodes"] = job.episodes;
+      const py::object answer = progress(event);
+      if (!answer.is_none() && !answer.cast<bool>()) stop = true;
+    } catch (py::error_already_set& e) {
+      callback_error = e.what();
+      stop = true;
+    }
+  };
   if (!progress.is_none()) {
-    // Calls progress with the event fill() makes under the GIL; False back, or a failure, stops the run.
-    const auto report = [&](const std::function<void(py::dict&)>& fill) {
-      if (stop) return;
-      py::gil_scoped_acquire acquire;
-      try {
-        py::dict event;
-        fill(event);
-        event["episodes"] = job.episodes;
-        const py::object answer = progress(event);
-        if (!answer.is_none() && !answer.cast<bool>()) stop = true;
-      } catch (py::error_already_set& e) {
-        callback_error = e.what();
-        stop = true;
-      }
-    };
     callbacks.on_episode = [&](const EpisodeRecord& r, bool earlier) {
       report([&](py::dict& event) {
         event["episode"] = r.episode;
