@@ -232,6 +232,10 @@ void add_mesh_command(CLI::App& app) {
     if (!args->out.empty()) write_text_file(args->out, mesh_text);
     if (!args->picture.empty()) write_picture(args->picture, picture);
     if (!args->json.empty()) write_text_file(args->json, report);
+    if (!meshing.fallback_from.empty()) {
+      std::cout << face.source << ": the blocks of " << meshing.fallback_from << " could not be meshed ("
+                << meshing.fallback_reason << "); meshed the search's blocks instead\n";
+    }
     std::cout << face.source << ": " << meshing.policy() << ": " << mesh_summary(meshing) << "\n";
     if (!args->out.empty()) std::cout << "  mesh:    " << args->out << "\n";
     if (!args->json.empty()) std::cout << "  report:  " << args->json << "\n";

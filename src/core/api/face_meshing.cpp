@@ -68,10 +68,21 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
     FaceDecomposition again = decompose_input_face(face, decompose);
     ++out.attempts;
     if (again.region.policy != "search") {
-      // Another policy: its one decomposition, meshed (its failure is the answer).
+      // Another policy: its one decomposition, meshed. When its blocks do not mesh (a reason of ours:
+      // no interval counts for them), the search's tries mesh the face instead, and say so.
       options.general.reward = again.region.reward;
+      try {
+        out.result = mesh_region_decomposition(face, again.region, options);
+      } catch (const InputError&) {
+        throw;
+      } catch (const std::exception& e) {
+        out.fallback_from = again.region.policy;
+        out.fallback_reason = e.what();
+        decompose.policy = "search";
+        k = static_cast<size_t>(-1);  // the loop's ++k starts the tries from the first
+        continue;
+      }
       out.decomposition = std::move(again);
-      out.result = mesh_region_decomposition(face, out.decomposition.region, options);
       out.corner_fraction = settings.corner_fraction;
       finish();
       return out;
@@ -153,6 +164,7 @@ nlohmann::json face_meshing_json(const std::string& input, const FaceMeshing& m)
   report["cut_smooth_parts"] = m.cut_smooth_parts;
   report["min_edge_intervals"] = m.min_edge_intervals;
   report["search_width"] = m.search_width;
+  if (!m.fallback_from.empty()) report["policy_fallback"] = {{"policy", m.fallback_from}, {"reason", m.fallback_reason}};
   return report;
 }
 

@@ -345,6 +345,42 @@ TEST_CASE("a rounded acute tip: the arcs' chord steps as targets, not minima, ke
   CHECK(face_meshing_json("tip", m)["intervals"]["arc_targets"] == m.result.arc_targets);
 }
 
+TEST_CASE("a policy whose blocks do not mesh: mesh makes the search's tries instead, and says so",
+          "[api][general][mesh][arc]") {
+  // Face 78 of `autoblock generate --kind arcs --seed 20261263` (a rounded plate with 3 holes): greedy's
+  // blocks do not mesh (a block with two coinciding corners).
+  const InputFace face = load_input_face(std::string(AUTOBLOCK_SOURCE_DIR) + "/tests/data/arcs/greedy-unmeshable.brep");
+  REQUIRE(face.is_general());
+  DecomposeSettings settings;
+  settings.policy = "greedy";
+  settings.occt_blocks = false;
+  const FaceDecomposition greedy = decompose_input_face(face, settings);
+  REQUIRE(greedy.region.complete());
+  MeshOptions options;
+  options.occt_model = false;
+  options.general.reward = greedy.region.reward;
+  std::string why;
+  try {
+    mesh_region_decomposition(face, greedy.region, options);
+  } catch (const std::exception& e) {
+    why = e.what();
+  }
+  REQUIRE_FALSE(why.empty());
+  const FaceMeshing m = mesh_input_face(face, settings, MeshOptions{});
+  CHECK(m.fallback_from == "greedy");
+  CHECK(m.fallback_reason == why);
+  CHECK(m.policy() == "search");
+  CHECK(m.attempts >= 2);
+  REQUIRE(m.result.conformity.conformal);
+  const nlohmann::json report = face_meshing_json("plate", m);
+  CHECK(report["policy"] == "search");
+  CHECK(report["policy_fallback"]["policy"] == "greedy");
+  // A policy whose blocks mesh has no fallback.
+  settings.policy = "search";
+  CHECK(mesh_input_face(face, settings, MeshOptions{}).fallback_from.empty());
+  CHECK_FALSE(face_meshing_json("plate", mesh_input_face(face, DecomposeSettings{}, MeshOptions{})).contains("policy_fallback"));
+}
+
 TEST_CASE("decompose keeps the decomposition mesh keeps; its cuts, replayed under its rules, mesh the same",
           "[api][general][mesh]") {
   // The hexagon above, whose first try is poor: the tries keep another width, other rules or finer
