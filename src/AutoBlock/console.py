@@ -109,6 +109,8 @@ class DecompositionResult:
     and templates (n_templates: convex parts finished as quads around an interior point; blocks holds both,
     n_blocks counts the quadrilaterals), cuts are GeneralCut, min_blocks is None (no known minimum), and
     report is the core's JSON report (as `autoblock decompose --json` writes it, in the face's frame).
+    policy_fallback: None, or {"policy", "reason"} when the policy asked for gave blocks that do not mesh and
+    these are the search's (policy is then "search").
     """
 
     def __init__(self, data, face, local_face, frame, label):
@@ -128,6 +130,7 @@ class DecompositionResult:
         self.time_capped = data["time_capped"]
         self.seconds = data["seconds"]
         self.max_steps = data["max_steps"]
+        self.policy_fallback = data.get("policy_fallback")
         # A general face's block rules and its mesh's minimum intervals per edge (what a replay and a mesh
         # of its cuts need: the search tries several, see the README's "Tries").
         self.rules = sequence_rules(data)

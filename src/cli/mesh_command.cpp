@@ -232,9 +232,10 @@ void add_mesh_command(CLI::App& app) {
     if (!args->out.empty()) write_text_file(args->out, mesh_text);
     if (!args->picture.empty()) write_picture(args->picture, picture);
     if (!args->json.empty()) write_text_file(args->json, report);
-    if (!meshing.fallback_from.empty()) {
-      std::cout << face.source << ": the blocks of " << meshing.fallback_from << " could not be meshed ("
-                << meshing.fallback_reason << "); meshed the search's blocks instead\n";
+    if (meshing.general() && !meshing.decomposition.region.fallback_from.empty()) {
+      const RegionDecomposition& d = meshing.decomposition.region;
+      std::cout << face.source << ": the blocks of " << d.fallback_from << " could not be meshed (" << d.fallback_reason
+                << "); meshed the search's blocks instead\n";
     }
     std::cout << face.source << ": " << meshing.policy() << ": " << mesh_summary(meshing) << "\n";
     if (!args->out.empty()) std::cout << "  mesh:    " << args->out << "\n";

@@ -764,6 +764,18 @@ class TestGeneralFaces(unittest.TestCase):
         self.assertEqual(len(direct.blocks), len(again.blocks))
         self.assertAlmostEqual(direct.ret, again.ret, places=9)
 
+    def test_a_policy_whose_blocks_do_not_mesh(self):
+        """Greedy's blocks of this plate do not mesh: decompose and mesh take the search's instead and say so."""
+        path = os.path.join(AutoBlock.paths.ROOT, "tests", "data", "arcs", "greedy-unmeshable.brep")
+        face = Part.read(path).Faces[0]
+        result = AutoBlock.decompose(face, policy="greedy")
+        self.assertEqual(result.policy, "search")
+        self.assertEqual(result.policy_fallback["policy"], "greedy")
+        self.assertTrue(result.policy_fallback["reason"])
+        mesh = AutoBlock.mesh(face, policy="greedy")
+        self.assertTrue(mesh.conformal)
+        self.assertIsNone(AutoBlock.decompose(face).policy_fallback)
+
     def test_same_blocks_as_the_cli(self):
         # The workbench and the CLI put a face in the same frame (the core's rule), so they make the same cuts.
         cli = os.environ.get("AUTOBLOCK_CLI")

@@ -121,11 +121,12 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
     std::optional<RewardPreset> own_reward;
     std::unique_ptr<RegionPolicy> policy = general_policy(settings.policy, settings.policy_settings, &own_reward);
     std::optional<FaceMeshing> meshed;
-    if (settings.mesh_tries && policy->name() == "search") {
-      // The decomposition `autoblock mesh` keeps (face_meshing.h): its tries, each meshed. When none
+    if (settings.mesh_tries) {
+      // The decomposition `autoblock mesh` keeps (face_meshing.h): the search's tries, each meshed; another
+      // policy's one decomposition, or the search's tries when its blocks do not mesh. When none
       // meshes (a reason of ours: blocks that admit no interval counts, a part left unfinished), the
-      // one search below, as it is: a decomposition can be shown even when it cannot be meshed.
-      // (mesh_input_face searches with mesh_tries and occt_blocks off itself.)
+      // policy's decomposition below, as it is: a decomposition can be shown even when it cannot be
+      // meshed. (mesh_input_face decomposes with mesh_tries and occt_blocks off itself.)
       MeshOptions mesh;
       mesh.occt_model = false;
       try {

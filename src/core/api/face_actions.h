@@ -33,7 +33,9 @@ struct DecomposeSettings {
   // A general face searched (auto, search): the decomposition `autoblock mesh` keeps, by the tries of
   // mesh_input_face (api/face_meshing.h), each meshed at the default size: the one whose mesh is best
   // (its block rules, RegionDecomposition::rules, and min_edge_intervals say how to replay and mesh it).
-  // false: one search with the settings as they are (what eval measures).
+  // Another policy on a general face: its decomposition, meshed once; when its blocks do not mesh, the
+  // search's tries (RegionDecomposition::fallback_from says so). false: one decomposition by the
+  // policy with the settings as they are (what eval measures).
   bool mesh_tries = true;
 };
 

@@ -57,6 +57,7 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
     return r.conformity.conformal ? r.quality.min_scaled_jacobian / r.topology_bound : -1e300;
   };
   bool have = false;  // a try has meshed (out.result is its mesh)
+  std::string fallback_from, fallback_reason;  // another policy's blocks that did not mesh
   std::exception_ptr first_error;
   out.attempts = 0;
   for (size_t k = 0; k < tries.size(); ++k) {
@@ -76,8 +77,8 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
       } catch (const InputError&) {
         throw;
       } catch (const std::exception& e) {
-        out.fallback_from = again.region.policy;
-        out.fallback_reason = e.what();
+        fallback_from = again.region.policy;
+        fallback_reason = e.what();
         decompose.policy = "search";
         k = static_cast<size_t>(-1);  // the loop's ++k starts the tries from the first
         continue;
@@ -138,6 +139,8 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
     throw std::logic_error("mesh_input_face: no try meshed and none failed");
   }
   out.decomposition.region.min_edge_intervals = out.min_edge_intervals;
+  out.decomposition.region.fallback_from = fallback_from;
+  out.decomposition.region.fallback_reason = fallback_reason;
   finish();
   return out;
 }
@@ -164,7 +167,8 @@ nlohmann::json face_meshing_json(const std::string& input, const FaceMeshing& m)
   report["cut_smooth_parts"] = m.cut_smooth_parts;
   report["min_edge_intervals"] = m.min_edge_intervals;
   report["search_width"] = m.search_width;
-  if (!m.fallback_from.empty()) report["policy_fallback"] = {{"policy", m.fallback_from}, {"reason", m.fallback_reason}};
+  const RegionDecomposition& d = m.decomposition.region;
+  if (!d.fallback_from.empty()) report["policy_fallback"] = {{"policy", d.fallback_from}, {"reason", d.fallback_reason}};
   return report;
 }
 

@@ -21,9 +21,6 @@ struct FaceMeshing {
   int min_edge_intervals = 1;       // the intervals every model edge has at least (MeshOptions)
   int search_width = 4;             // the kept search's width (candidates expanded per part)
   bool cut_smooth_parts = false;    // the kept search's progress rule (SearchTry)
-  // A general face whose policy (not the search) gave blocks that do not mesh: that policy and why;
-  // the search's tries meshed it instead (empty: no fallback).
-  std::string fallback_from, fallback_reason;
   bool general() const { return decomposition.general(); }
   const std::string& policy() const {
     return general() ? decomposition.region.policy : decomposition.decomposition.policy;
@@ -47,7 +44,8 @@ struct FaceMeshing {
 //          rare web of templates whose sides' counts contradict), or that leaves a part unfinished,
 //          is skipped; the first failure is thrown when every try fails. Another policy makes one
 //          decomposition; when its blocks do not mesh, the search's tries are made instead
-//          (fallback_from, fallback_reason; the report's "policy_fallback"). A width set in settings
+//          (RegionDecomposition::fallback_from, fallback_reason; the report's "policy_fallback"). A
+//          width set in settings
 //          makes the first try (the others follow, those of that width and rules left out).
 //          A general face's OpenCASCADE model (options.occt_model) is made of the kept blocks only.
 // Throws InputError for a bad policy, reward or request (see decompose_input_face, mesh_decomposition).

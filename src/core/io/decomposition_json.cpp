@@ -122,6 +122,7 @@ nlohmann::json region_decomposition_json(const std::string& input, const InputFa
   report["steps"] = d.cuts.size();
   report["policy_steps"] = d.policy_steps;
   report["seconds"] = d.seconds;
+  if (!d.fallback_from.empty()) report["policy_fallback"] = {{"policy", d.fallback_from}, {"reason", d.fallback_reason}};
   // What a replay needs besides the cuts: the block rules they were made under, and the mesh's edges.
   report["rules"] = {{"min_corner_degrees", d.rules.min_corner_degrees},
                      {"max_corner_degrees", d.rules.max_corner_degrees},

@@ -29,7 +29,9 @@ nlohmann::json decomposition_json(const std::string& input, const PlanarFace& fa
 //          "n_templates", "complete", "truncated", "status", "time_capped", "steps", "policy_steps",
 //          "seconds", "rules" ({"min_corner_degrees", "max_corner_degrees", "flat_tolerance_degrees"}: the
 //          block rules the cuts were made under, which a replay needs), "min_edge_intervals" (what its
-//          mesh was judged with, RegionDecomposition), "unfinished" (loops of parts left), "face"}.
+//          mesh was judged with, RegionDecomposition), "unfinished" (loops of parts left), "face",
+//          and "policy_fallback": {"policy", "reason"} when the policy asked for gave blocks that do
+//          not mesh and these are the search's (RegionDecomposition::fallback_from)}.
 //          Coordinates are the face's frame's (see "frame").
 nlohmann::json region_decomposition_json(const std::string& input, const InputFace& face,
                                          const RegionDecomposition& decomposition);

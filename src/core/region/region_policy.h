@@ -105,6 +105,9 @@ struct RegionDecomposition {
   // Kept by mesh_input_face's tries (api/face_meshing.h) for its mesh: at least this many intervals per
   // model edge (MeshOptions::min_edge_intervals) meshes it as well as it was judged. 1 otherwise.
   int min_edge_intervals = 1;
+  // Set by mesh_input_face when the policy asked for (not the search) gave blocks that do not mesh:
+  // that policy and why; these are the search's blocks (empty: no fallback).
+  std::string fallback_from, fallback_reason;
   bool complete() const { return status == EpisodeStatus::Complete; }
 };
 

@@ -354,8 +354,10 @@ TEST_CASE("a policy whose blocks do not mesh: mesh makes the search's tries inst
   DecomposeSettings settings;
   settings.policy = "greedy";
   settings.occt_blocks = false;
+  settings.mesh_tries = false;  // greedy's own decomposition
   const FaceDecomposition greedy = decompose_input_face(face, settings);
   REQUIRE(greedy.region.complete());
+  CHECK(greedy.region.fallback_from.empty());
   MeshOptions options;
   options.occt_model = false;
   options.general.reward = greedy.region.reward;
@@ -366,18 +368,25 @@ TEST_CASE("a policy whose blocks do not mesh: mesh makes the search's tries inst
     why = e.what();
   }
   REQUIRE_FALSE(why.empty());
+  settings.mesh_tries = true;
   const FaceMeshing m = mesh_input_face(face, settings, MeshOptions{});
-  CHECK(m.fallback_from == "greedy");
-  CHECK(m.fallback_reason == why);
+  CHECK(m.decomposition.region.fallback_from == "greedy");
+  CHECK(m.decomposition.region.fallback_reason == why);
   CHECK(m.policy() == "search");
   CHECK(m.attempts >= 2);
   REQUIRE(m.result.conformity.conformal);
   const nlohmann::json report = face_meshing_json("plate", m);
   CHECK(report["policy"] == "search");
   CHECK(report["policy_fallback"]["policy"] == "greedy");
+  // decompose keeps the blocks mesh keeps, and says so too.
+  const FaceDecomposition kept = decompose_input_face(face, settings);
+  CHECK(kept.region.policy == "search");
+  CHECK(kept.region.fallback_from == "greedy");
+  CHECK(kept.region.finished.size() == m.decomposition.region.finished.size());
+  CHECK(region_decomposition_json("plate", face, kept.region)["policy_fallback"]["reason"] == why);
   // A policy whose blocks mesh has no fallback.
   settings.policy = "search";
-  CHECK(mesh_input_face(face, settings, MeshOptions{}).fallback_from.empty());
+  CHECK(mesh_input_face(face, settings, MeshOptions{}).decomposition.region.fallback_from.empty());
   CHECK_FALSE(face_meshing_json("plate", mesh_input_face(face, DecomposeSettings{}, MeshOptions{})).contains("policy_fallback"));
 }
 

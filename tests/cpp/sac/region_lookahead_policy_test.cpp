@@ -53,7 +53,7 @@ TEST_CASE("the lookahead agent on general faces: Q by hand, every face finished,
         if (!batch.empty()) {
           for (const double w : agent->deployed_values(batch)) expected += config.gamma * w;
         }
-        CHECK(q[k] == Approx(expected).epsilon(1e-4));
+        CHECK(q[k] == Approx(expected).epsilon(1e-4).margin(1e-5));  // one float rounding apart: batched and not
         ++checked;
       }
       // Deployed with top k: the k best candidates by reward, in the candidates' order.
