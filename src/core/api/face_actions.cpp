@@ -118,8 +118,6 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
   result.face = face;
   std::vector<TopoDS_Face> blocks;
   if (face.is_general()) {
-    std::optional<RewardPreset> own_reward;
-    std::unique_ptr<RegionPolicy> policy = general_policy(settings.policy, settings.policy_settings, &own_reward);
     std::optional<FaceMeshing> meshed;
     if (settings.mesh_tries) {
       // The decomposition `autoblock mesh` keeps (face_meshing.h): the search's tries, each meshed; another
@@ -149,6 +147,8 @@ FaceDecomposition decompose_input_face(const InputFace& face, const DecomposeSet
       }
       return result;
     }
+    std::optional<RewardPreset> own_reward;
+    std::unique_ptr<RegionPolicy> policy = general_policy(settings.policy, settings.policy_settings, &own_reward);
     RegionEpisodeOptions options;
     options.max_steps = settings.max_steps;
     options.corner_fraction = settings.corner_fraction;

@@ -46,7 +46,7 @@ void save_policy_file(const std::string& path, const LearningAgent& agent, const
   write_archive(path, archive);
 }
 
-void save_two_agent_policy_file(const std::string& path, const LearningAgent& grid, const nlohmann::json& grid_training,
+nlohmann::json save_two_agent_policy_file(const std::string& path, const LearningAgent& grid, const nlohmann::json& grid_training,
                                 const std::shared_ptr<LearningAgent>& general, const nlohmann::json& general_training) {
   if (!general) throw InputError("no network for general faces");
   if (grid.config().reward != general->config().reward) {
@@ -70,6 +70,7 @@ void save_two_agent_policy_file(const std::string& path, const LearningAgent& gr
   general->save(nested, false);
   archive.write("general", nested);
   write_archive(path, archive);
+  return meta;
 }
 
 LoadedPolicy load_policy_file(const std::string& path, bool checkpoint) {
@@ -130,8 +131,7 @@ nlohmann::json combine_policy_files(const std::string& grid_source, const std::s
       general.general ? general.meta.at("general").value("training", nlohmann::json::object())
                       : general.meta.value("training", nlohmann::json::object());
   nlohmann::json grid_training = grid.meta.value("training", nlohmann::json::object());
-  save_two_agent_policy_file(path, *grid.agent, grid_training, general.general_agent(), general_training);
-  return load_policy_file(path, false).meta;
+  return save_two_agent_policy_file(path, *grid.agent, grid_training, general.general_agent(), general_training);
 }
 
 }  // namespace autoblock

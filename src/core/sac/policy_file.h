@@ -37,9 +37,9 @@ void save_policy_file(const std::string& path, const LearningAgent& agent, const
                       bool checkpoint);
 
 // A policy file with two agents (version 2): grid's for rectilinear faces, general's for the others.
-// Inputs: path; grid and general with the meta "training" each recorded. Throws InputError when the
-// two aim at different reward presets or general has no policy on general faces.
-void save_two_agent_policy_file(const std::string& path, const LearningAgent& grid, const nlohmann::json& grid_training,
+// Inputs: path; grid and general with the meta "training" each recorded. Output: the meta written.
+// Throws InputError when the two aim at different reward presets or general has no policy on general faces.
+nlohmann::json save_two_agent_policy_file(const std::string& path, const LearningAgent& grid, const nlohmann::json& grid_training,
                                 const std::shared_ptr<LearningAgent>& general, const nlohmann::json& general_training);
 
 // Inputs: grid_source, general_source, policy files (the first's rectilinear agent, the second's agent
