@@ -27,6 +27,7 @@
 #include "core/mesh/mesh_pipeline.h"
 #include "core/region/region_search.h"
 #include "core/sac/compute_threads.h"
+#include "core/sac/deploy_profile.h"
 #include "core/sac/policy_file.h"
 #include "core/sac/region_lookahead_policy.h"
 
@@ -43,6 +44,7 @@ struct Row {
   std::vector<double> ratio, seconds, blocks;
   int unmeshed = 0;  // decompositions the mesher refused
   int capped = 0;    // decompositions that ran out of time
+  long proposals = 0, proposals_progress = 0, proposals_chosen = 0;  // the actor's (cut_proposer.h)
 };
 
 std::unique_ptr<RegionPolicy> make_policy(const Row& row) {
@@ -62,11 +64,15 @@ void table(const std::string& title, const std::vector<InputFace>& faces, std::v
     for (Row& row : rows) {
       std::unique_ptr<RegionPolicy> policy = make_policy(row);
       RegionDecomposition d;
+      const DeployProfile before = deploy_profile();
       const auto start = std::chrono::steady_clock::now();
       {
         const auto lock = lock_general_engine();
         d = decompose_region(face.region, *policy, episode);
       }
+      row.proposals += deploy_profile().proposals - before.proposals;
+      row.proposals_progress += deploy_profile().proposals_progress - before.proposals_progress;
+      row.proposals_chosen += deploy_profile().proposals_chosen - before.proposals_chosen;
       row.seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       if (policy->time_capped()) ++row.capped;
       MeshOptions options;
@@ -104,6 +110,11 @@ void table(const std::string& title, const std::vector<InputFace>& faces, std::v
     std::printf("| %s | %zu/%zu | %.4f | %.2f | %.1f | %.1f | %d |\n", row.name.c_str(), row.ratio.size() - row.unmeshed,
                 row.ratio.size(), mean(row.ratio), mean(row.blocks),
                 1e3 * bench::quantile(row.seconds, 0.5), 1e3 * mean(row.seconds), row.capped);
+  }
+  for (const Row& row : rows) {
+    if (row.proposals == 0) continue;
+    std::printf("\n%s: the actor proposed %ld cuts, %ld made progress, %ld were taken\n", row.name.c_str(), row.proposals,
+                row.proposals_progress, row.proposals_chosen);
   }
   std::fflush(stdout);
 }

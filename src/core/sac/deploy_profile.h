@@ -16,6 +16,9 @@ struct DeployProfile {
   long forwards = 0;               // forward passes (batches)
   long graphs_evaluated = 0;       // graphs through the network (batch members)
   long values_reused = 0;          // piece values taken from the policy's cache instead of the network
+  long proposals = 0;              // general faces: the actor's proposals made (cut_proposer.h)
+  long proposals_progress = 0;     // of them, those that made progress (candidates)
+  long proposals_chosen = 0;       // of them, those the policy took
   std::vector<int> graph_nodes;    // node count of every graph built (the first 4 M)
 };
 

@@ -38,6 +38,10 @@ class LearningAgent : public std::enable_shared_from_this<LearningAgent> {
   // Where the run stands, told before every training episode: episodes done over the run's total,
   // in [0, 1]. Agents with a learning-rate schedule follow it; the default ignores it.
   virtual void set_training_progress(double fraction) { (void)fraction; }
+  // Called before a checkpoint is written: drops what the agent keeps that a resumed run cannot have
+  // (values computed in batches that a resumed run composes differently: a batch's forward pass rounds
+  // a graph's value differently from another's), so that a resumed run repeats the run exactly.
+  virtual void prepare_checkpoint() {}
 
   // The deterministic deployed policy, sharing this agent (which it does not change).
   virtual std::unique_ptr<Policy> deployed_policy(const std::string& name) = 0;

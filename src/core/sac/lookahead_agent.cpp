@@ -16,6 +16,7 @@
 #include "core/nn/module_blend.h"
 #include "core/region/region_candidates.h"
 #include "core/region/region_symmetry.h"
+#include "core/sac/continuous_sac_agent.h"
 #include "core/sac/deploy_profile.h"
 #include "core/sac/region_lookahead_policy.h"
 #include "core/sac/softmax_draw.h"
@@ -173,6 +174,8 @@ LookaheadAgent::LookaheadAgent(const SacConfig& config)
   value_optimizer_ = std::make_unique<torch::optim::Adam>(value_->parameters(), torch::optim::AdamOptions(config.lr_value));
   temperature_optimizer_ = std::make_unique<torch::optim::Adam>(std::vector<torch::Tensor>{log_alpha_},
                                                                 torch::optim::AdamOptions(config.lr_temperature));
+  // Made last: a configuration without proposals draws the same initial weights as before them.
+  if (config.actor_candidates > 0) proposer_ = std::make_unique<CutProposer>(config);
 }
 
 void LookaheadAgent::set_training_progress(double fraction) {
@@ -184,6 +187,11 @@ void LookaheadAgent::set_training_progress(double fraction) {
   for (auto& group : value_optimizer_->param_groups()) {
     static_cast<torch::optim::AdamOptions&>(group.options()).lr(lr);
   }
+}
+
+void LookaheadAgent::prepare_checkpoint() {
+  target_values_.clear();
+  region_target_values_.clear();
 }
 
 double LookaheadAgent::learning_rate() const {
@@ -231,10 +239,17 @@ std::shared_ptr<const RegionPartState> LookaheadAgent::cached_region_state(const
 
 std::vector<double> LookaheadAgent::region_action_values(const RegionPartState& state, const std::vector<size_t>& which,
                                                          double face_size, const BlockRules& rules) {
+  std::vector<const RegionCandidate*> candidates;
+  for (const size_t k : which) candidates.push_back(&state.candidates[k]);
+  return candidate_values(candidates, face_size, rules);
+}
+
+std::vector<double> LookaheadAgent::candidate_values(const std::vector<const RegionCandidate*>& candidates,
+                                                     double face_size, const BlockRules& rules) {
   std::vector<const PartState*> children;
   std::vector<std::shared_ptr<const RegionPartState>> keep;
-  for (const size_t k : which) {
-    for (const Region& piece : state.candidates[k].to_cut) {
+  for (const RegionCandidate* candidate : candidates) {
+    for (const Region& piece : candidate->to_cut) {
       keep.push_back(cached_region_state(piece, face_size, rules));
       children.push_back(keep.back().get());
     }
@@ -242,12 +257,54 @@ std::vector<double> LookaheadAgent::region_action_values(const RegionPartState& 
   const std::vector<double> w = children.empty() ? std::vector<double>{} : state_values(children);
   std::vector<double> q;
   size_t c = 0;
-  for (const size_t k : which) {
-    double value = state.candidates[k].reward;
-    for (size_t p = 0; p < state.candidates[k].to_cut.size(); ++p) value += config_.gamma * w[c++];
+  for (const RegionCandidate* candidate : candidates) {
+    double value = candidate->reward;
+    for (size_t p = 0; p < candidate->to_cut.size(); ++p) value += config_.gamma * w[c++];
     q.push_back(value);
   }
   return q;
+}
+
+std::vector<LookaheadAgent::ProposedCut> LookaheadAgent::propose_cuts(const Region& part, const RegionPartState& state,
+                                                                      double face_size, const BlockRules& rules,
+                                                                      std::mt19937_64* rng) {
+  std::vector<ProposedCut> proposals;
+  if (!proposer_) return proposals;
+  // The next vertex along its loop of every vertex (loops flattened, Region::loops order).
+  std::vector<Point2> vertex, next;
+  for (const Ring& loop : part.loops()) {
+    for (size_t i = 0; i < loop.size(); ++i) {
+      vertex.push_back(loop[i]);
+      next.push_back(loop[(i + 1) % loop.size()]);
+    }
+  }
+  for (const int v : best_candidate_vertices(state.candidates, static_cast<size_t>(config_.actor_candidates))) {
+    ProposedCut proposal;
+    proposal.vertex = v;
+    bool found = false;
+    for (size_t k = 0; k < state.candidates.size(); ++k) {
+      if (state.candidates[k].vertex != v) continue;
+      if (!found || state.candidates[k].reward > state.candidates[proposal.base].reward) proposal.base = k;
+      found = true;
+    }
+    const size_t i = static_cast<size_t>(v);
+    proposal.input = proposal_input(state.observations.at(i), Point2{next[i].x - vertex[i].x, next[i].y - vertex[i].y},
+                                    state.candidates[proposal.base].action.cut.direction);
+    proposals.push_back(std::move(proposal));
+  }
+  std::vector<const ProposalInput*> inputs;
+  for (const ProposedCut& proposal : proposals) inputs.push_back(&proposal.input);
+  const std::vector<CutProposer::Draw> draws = proposer_->draw(inputs, rng);
+  const RegionStateOptions options = region_state_options(face_size, rules);
+  for (size_t k = 0; k < proposals.size(); ++k) {
+    ProposedCut& proposal = proposals[k];
+    proposal.draw = draws[k];
+    RegionAction action;
+    action.cut = turned_cut(state.candidates[proposal.base].action.cut, draws[k].u);
+    proposal.candidate = region_candidate(part, action, face_size, options.episode, options.taper);
+    if (proposal.candidate) proposal.candidate->vertex = proposal.vertex;
+  }
+  return proposals;
 }
 
 double LookaheadAgent::temperature() const { return std::exp(log_alpha_.item<double>()); }
@@ -359,6 +416,7 @@ EpisodeRecord LookaheadAgent::train_region_episode(const Region& face, std::mt19
   const BlockRules rules = episode.options().rules;
   std::map<std::string, double> metric_sums;
   int updates = 0;
+  std::vector<CutProposer::Sample> proposal_samples;  // this episode's (cut_proposer.h)
   while (episode.running()) {
     const Region part = episode.current_part();
     const auto state = cached_region_state(part, face_size, rules);
@@ -367,18 +425,38 @@ EpisodeRecord LookaheadAgent::train_region_episode(const Region& face, std::mt19
       continue;
     }
     const std::vector<size_t> actions = best_candidates(state->candidates, static_cast<size_t>(config_.train_top_k));
-    size_t chosen;
+    RegionAction chosen;
     if (steps_ < config_.warmup_steps) {
-      chosen = actions[std::uniform_int_distribution<size_t>(0, actions.size() - 1)(rng)];
+      chosen = state->candidates[actions[std::uniform_int_distribution<size_t>(0, actions.size() - 1)(rng)]].action;
     } else {
-      chosen = actions[sample_softmax(region_action_values(*state, actions, face_size, rules), temperature(), rng)];
+      std::vector<const RegionCandidate*> listed;
+      for (const size_t a : actions) listed.push_back(&state->candidates[a]);
+      const std::vector<ProposedCut> proposals = propose_cuts(part, *state, face_size, rules, &rng);
+      std::vector<const RegionCandidate*> all = listed;
+      for (const ProposedCut& proposal : proposals) {
+        if (proposal.candidate) all.push_back(&*proposal.candidate);
+      }
+      const size_t contenders = all.size();
+      for (const ProposedCut& proposal : proposals) all.push_back(&state->candidates[proposal.base]);  // the baselines
+      const std::vector<double> q = candidate_values(all, face_size, rules);
+      const size_t pick = sample_softmax(std::vector<double>(q.begin(), q.begin() + static_cast<std::ptrdiff_t>(contenders)),
+                                         temperature(), rng);
+      chosen = all[pick]->action;
+      // The actor's samples: each proposal's exact Q against the Q of the listed cut it turns.
+      const double worst = *std::min_element(q.begin(), q.begin() + static_cast<std::ptrdiff_t>(listed.size()));
+      size_t next = listed.size();
+      for (size_t k = 0; k < proposals.size(); ++k) {
+        const double value = proposals[k].candidate ? q[next++] : worst;
+        proposal_samples.push_back(
+            CutProposer::Sample{proposals[k].input, proposals[k].draw.z, (value - q[contenders + k]) / scale_});
+      }
     }
     const double angle = std::uniform_real_distribution<double>(0.0, 2.0 * M_PI)(rng);
     const bool mirror = std::uniform_int_distribution<int>(0, 1)(rng) == 1;
     remember_region(part, face_size, rules, angle, mirror);
-    episode.step(state->candidates[chosen].action);
+    episode.step(chosen);
     ++steps_;
-    if (steps_ > config_.warmup_steps && memory_.size() >= static_cast<size_t>(config_.batch_size) &&
+    if (config_.learn_value && steps_ > config_.warmup_steps && memory_.size() >= static_cast<size_t>(config_.batch_size) &&
         steps_ % config_.update_every == 0) {
       lock.unlock();  // update takes it
       for (const auto& [name, value] : update(static_cast<size_t>(config_.batch_size), rng)) metric_sums[name] += value;
@@ -388,6 +466,13 @@ EpisodeRecord LookaheadAgent::train_region_episode(const Region& face, std::mt19
   }
   EpisodeRecord record = region_episode_record_of(episode, metric_sums, updates);
   record.alpha = temperature();
+  if (proposer_ && !proposal_samples.empty()) {
+    lock.unlock();
+    for (const auto& [name, value] : proposer_->update(proposal_samples)) record.metrics[name] = value;
+    int better = 0;  // proposals that beat the listed cut they turn
+    for (const CutProposer::Sample& sample : proposal_samples) better += sample.advantage > 0.0;
+    record.metrics["proposal_better"] = static_cast<double>(better) / static_cast<double>(proposal_samples.size());
+  }
   return record;
 }
 
@@ -418,7 +503,7 @@ EpisodeRecord LookaheadAgent::train_episode(const GridFace& face, std::mt19937_6
     const LineCandidate& line = state->lines[chosen];
     episode.step(Action{line.vertex, line.line.direction});
     ++steps_;
-    if (steps_ > config_.warmup_steps && memory_.size() >= static_cast<size_t>(config_.batch_size) &&
+    if (config_.learn_value && steps_ > config_.warmup_steps && memory_.size() >= static_cast<size_t>(config_.batch_size) &&
         steps_ % config_.update_every == 0) {
       for (const auto& [name, value] : update(static_cast<size_t>(config_.batch_size), rng)) metric_sums[name] += value;
       ++updates;
@@ -588,6 +673,7 @@ void LookaheadAgent::save(torch::serialize::OutputArchive& archive, bool trainin
   (averaging() ? average_ : value_)->save(value);
   archive.write("value", value);
   archive.write("log_alpha", log_alpha_.detach());
+  if (proposer_) proposer_->save(archive, training);
   if (!training) return;
   if (averaging()) {
     torch::serialize::OutputArchive trained;
@@ -618,6 +704,11 @@ void LookaheadAgent::load(torch::serialize::InputArchive& archive, bool training
   }
   target_values_.clear();
   region_target_values_.clear();
+  // A file trained without proposals (an initial policy for a run that trains them) leaves the
+  // actor as it is; a checkpoint of this run always holds it.
+  if (proposer_ && !proposer_->load(archive, training) && training) {
+    throw InputError("the checkpoint holds no proposal actor (actor_candidates)");
+  }
   if (!training) {
     blend_module(*target_, *value_, 1.0);
     return;

@@ -69,6 +69,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <random>
 #include <string>
 #include <unordered_map>
@@ -77,6 +78,7 @@
 #include <torch/torch.h>
 
 #include "core/nn/value_network.h"
+#include "core/sac/cut_proposer.h"
 #include "core/sac/learning_agent.h"
 #include "core/sac/part_state.h"
 #include "core/sac/region_state.h"
@@ -126,6 +128,7 @@ class LookaheadAgent : public LearningAgent {
   std::unique_ptr<RegionPolicy> deployed_region_policy(const std::string& name) override;
   std::vector<float> region_vertex_scores(const RegionEpisode& episode) override;
   void set_training_progress(double fraction) override;
+  void prepare_checkpoint() override;  // the target values' caches
   std::unique_ptr<Policy> deployed_policy(const std::string& name) override;
   std::vector<float> vertex_scores(const Episode& episode) override;
   void save(torch::serialize::OutputArchive& archive, bool training) const override;
@@ -142,6 +145,27 @@ class LookaheadAgent : public LearningAgent {
   //         lock_general_engine() (region_policy.h).
   std::vector<double> region_action_values(const RegionPartState& state, const std::vector<size_t>& which,
                                            double face_size, const BlockRules& rules);
+  // The same for any candidates of a part (listed or proposed).
+  std::vector<double> candidate_values(const std::vector<const RegionCandidate*>& candidates, double face_size,
+                                       const BlockRules& rules);
+
+  // Actor-proposed candidates (cut_proposer.h; SacConfig::actor_candidates > 0).
+  struct ProposedCut {
+    int vertex = -1;
+    size_t base = 0;        // the listed candidate it turns (index into the state's candidates)
+    ProposalInput input{};  // what the actor saw
+    CutProposer::Draw draw;
+    std::optional<RegionCandidate> candidate;  // nothing: no progress (dropped)
+  };
+  // Inputs:  part, not a block; state, its (region_state_options); face_size; rules; rng: drawn
+  //          (training) or null: the actor's mean (deployed). The caller holds lock_general_engine().
+  // Outputs: one proposal per vertex of best_candidate_vertices(state.candidates, actor_candidates):
+  //          the best listed cut from it by reward (the earlier among equals), turned by the actor's
+  //          angle; none without a proposer.
+  std::vector<ProposedCut> propose_cuts(const Region& part, const RegionPartState& state, double face_size,
+                                        const BlockRules& rules, std::mt19937_64* rng);
+  bool proposes() const { return proposer_ != nullptr; }
+  CutProposer* proposer() { return proposer_.get(); }
   // Q(P, L) for every candidate cut of the state (online network, evaluation mode, no gradient).
   std::vector<double> cut_values(const PartState& state, double face_size);
   // W of the given states (online network, evaluation mode, no gradient), in return units.
@@ -207,6 +231,7 @@ class LookaheadAgent : public LearningAgent {
   void update_average();
 
   ValueNetwork value_{nullptr}, target_{nullptr}, average_{nullptr};  // average_: only when averaging()
+  std::unique_ptr<CutProposer> proposer_;  // only with actor_candidates > 0
   torch::Tensor log_alpha_;
   std::unique_ptr<torch::optim::Adam> value_optimizer_, temperature_optimizer_;
   std::vector<Memory> memory_;

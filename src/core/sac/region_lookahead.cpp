@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <map>
 #include <utility>
 
 #include "core/region/block.h"
+#include "core/region/region_candidates.h"
 #include "core/region/region_reward.h"
 
 namespace autoblock {
@@ -95,6 +97,51 @@ std::vector<size_t> best_candidates(const std::vector<RegionCandidate>& candidat
   }
   std::sort(kept.begin(), kept.end());
   return kept;
+}
+
+std::optional<RegionCandidate> region_candidate(const Region& part, const RegionAction& action, double face_size,
+                                                const RegionEpisodeOptions& options, bool taper) {
+  if (action.kind != RegionAction::Kind::Cut) return std::nullopt;
+  CutOutcome outcome;
+  try {
+    outcome = cut_region(part, action.cut);
+  } catch (const std::exception&) {
+    return std::nullopt;  // a cut the engine refuses (grazing a vertex, outside the part) is no candidate
+  }
+  if (outcome.pieces.size() < 2 || !makes_progress(part, outcome.pieces, options.rules)) return std::nullopt;
+  RegionCandidate c;
+  c.action = action;
+  c.reward = region_cut_reward(options.reward, outcome, face_size, options.rules);
+  if (taper) c.reward -= pieces_taper_cost(outcome.pieces, options.rules);
+  c.pieces = static_cast<int>(outcome.pieces.size());
+  for (Region& piece : outcome.pieces) {
+    if (is_block(piece, options.rules)) {
+      ++c.blocks;
+    } else {
+      c.to_cut.push_back(std::move(piece));
+    }
+  }
+  int index = 0;
+  for (const Ring& loop : part.loops()) {
+    for (const Point2& p : loop) {
+      if (p.x == action.cut.origin.x && p.y == action.cut.origin.y && c.vertex < 0) c.vertex = index;
+      ++index;
+    }
+  }
+  return c;
+}
+
+std::vector<int> best_candidate_vertices(const std::vector<RegionCandidate>& candidates, size_t count) {
+  std::vector<size_t> order(candidates.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return candidates[a].reward > candidates[b].reward; });
+  std::vector<int> vertices;
+  for (const size_t k : order) {
+    if (vertices.size() >= count) break;
+    const int v = candidates[k].vertex;
+    if (v >= 0 && std::find(vertices.begin(), vertices.end(), v) == vertices.end()) vertices.push_back(v);
+  }
+  return vertices;
 }
 
 }  // namespace autoblock

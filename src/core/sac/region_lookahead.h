@@ -17,6 +17,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "core/region/region_policy.h"
@@ -58,5 +59,16 @@ RegionLookahead region_look_ahead(const Region& part, double face_size, const Re
 //          count. The actions a lookahead agent values on a general part (deployed: deploy_top_k;
 //          trained: train_top_k).
 std::vector<size_t> best_candidates(const std::vector<RegionCandidate>& candidates, size_t keep);
+
+// Inputs:  part, not a block; action, a cut of it (any angle: a proposal, cut_proposer.h); face_size;
+//          options and taper as region_look_ahead's. The caller holds lock_general_engine().
+// Outputs: the candidate it makes (reward, pieces, blocks; vertex: the part's vertex at its origin,
+//          or -1), or nothing when it makes no progress (region_candidates.h) or cannot be made.
+std::optional<RegionCandidate> region_candidate(const Region& part, const RegionAction& action, double face_size,
+                                                const RegionEpisodeOptions& options, bool taper = false);
+
+// Inputs:  candidates (a part's); count. Output: up to count distinct vertices (>= 0), those the best
+//          candidates by reward start at, best first (the earlier candidate among equals).
+std::vector<int> best_candidate_vertices(const std::vector<RegionCandidate>& candidates, size_t count);
 
 }  // namespace autoblock

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "core/region/region_candidates.h"
+#include "core/sac/deploy_profile.h"
 
 namespace autoblock {
 
@@ -17,23 +18,23 @@ RegionStateOptions RegionLookaheadPolicy::state_options(const RegionEpisodeOptio
 
 std::vector<double> RegionLookaheadPolicy::action_values(const RegionPartState& state, const RegionEpisodeOptions& episode,
                                                          double face_size) {
-  std::vector<size_t> all(state.candidates.size());
-  for (size_t k = 0; k < all.size(); ++k) all[k] = k;
-  return values_of(state, all, episode, face_size);
+  std::vector<const RegionCandidate*> all;
+  for (const RegionCandidate& c : state.candidates) all.push_back(&c);
+  return values_of(all, episode, face_size);
 }
 
 std::vector<size_t> RegionLookaheadPolicy::shortlist(const RegionPartState& state) const {
   return best_candidates(state.candidates, static_cast<size_t>(std::max(0, agent_->config().deploy_top_k)));
 }
 
-std::vector<double> RegionLookaheadPolicy::values_of(const RegionPartState& state, const std::vector<size_t>& which,
+std::vector<double> RegionLookaheadPolicy::values_of(const std::vector<const RegionCandidate*>& candidates,
                                                      const RegionEpisodeOptions& episode, double face_size) {
   // The pieces not valued yet, as one batch.
   std::vector<Region> fresh;
   std::vector<std::shared_ptr<const RegionPartState>> keep;
   std::vector<const PartState*> batch;
-  for (const size_t k : which) {
-    for (const Region& piece : state.candidates[k].to_cut) {
+  for (const RegionCandidate* candidate : candidates) {
+    for (const Region& piece : candidate->to_cut) {
       if (values_.count(piece)) continue;
       values_.emplace(piece, 0.0);
       fresh.push_back(piece);
@@ -48,13 +49,28 @@ std::vector<double> RegionLookaheadPolicy::values_of(const RegionPartState& stat
     for (size_t k = 0; k < fresh.size(); ++k) values_[fresh[k]] = w[k];
   }
   std::vector<double> q;
-  q.reserve(which.size());
-  for (const size_t k : which) {
-    double value = state.candidates[k].reward;
-    for (const Region& piece : state.candidates[k].to_cut) value += agent_->config().gamma * values_.at(piece);
+  q.reserve(candidates.size());
+  for (const RegionCandidate* candidate : candidates) {
+    double value = candidate->reward;
+    for (const Region& piece : candidate->to_cut) value += agent_->config().gamma * values_.at(piece);
     q.push_back(value);
   }
   return q;
+}
+
+std::vector<const RegionCandidate*> RegionLookaheadPolicy::contenders(const Region& part, const RegionPartState& state,
+                                                                      const RegionEpisodeOptions& episode, double face_size,
+                                                                      std::vector<RegionCandidate>& proposed) {
+  std::vector<const RegionCandidate*> result;
+  for (const size_t k : shortlist(state)) result.push_back(&state.candidates[k]);
+  proposed.clear();
+  for (auto& proposal : agent_->propose_cuts(part, state, face_size, episode.rules, nullptr)) {
+    ++deploy_profile().proposals;
+    if (proposal.candidate) proposed.push_back(std::move(*proposal.candidate));
+  }
+  deploy_profile().proposals_progress += static_cast<long>(proposed.size());
+  for (const RegionCandidate& c : proposed) result.push_back(&c);
+  return result;
 }
 
 RegionAction RegionLookaheadPolicy::choose(const RegionEpisode& episode) {
@@ -65,23 +81,26 @@ RegionAction RegionLookaheadPolicy::choose(const RegionEpisode& episode) {
   const Region& part = episode.current_part();
   const auto state = make_region_state(part, state_options(episode.options(), episode.face_size()));
   if (state->candidates.empty()) return progress_action(part, episode.options().rules);
-  const std::vector<size_t> which = shortlist(*state);
-  const std::vector<double> q = values_of(*state, which, episode.options(), episode.face_size());
+  std::vector<RegionCandidate> proposed;
+  const std::vector<const RegionCandidate*> which = contenders(part, *state, episode.options(), episode.face_size(), proposed);
+  const std::vector<double> q = values_of(which, episode.options(), episode.face_size());
   size_t best = 0;
   for (size_t k = 1; k < q.size(); ++k) {
     if (q[k] > q[best]) best = k;
   }
-  return state->candidates[which[best]].action;
+  if (best + proposed.size() >= which.size()) ++deploy_profile().proposals_chosen;
+  return which[best]->action;
 }
 
 std::vector<float> RegionLookaheadPolicy::vertex_scores(const RegionEpisode& episode) {
   const Region& part = episode.current_part();
   std::vector<float> scores(static_cast<size_t>(part.vertex_count()), -std::numeric_limits<float>::infinity());
   const auto state = make_region_state(part, state_options(episode.options(), episode.face_size()));
-  const std::vector<size_t> which = shortlist(*state);
-  const std::vector<double> q = values_of(*state, which, episode.options(), episode.face_size());
+  std::vector<RegionCandidate> proposed;
+  const std::vector<const RegionCandidate*> which = contenders(part, *state, episode.options(), episode.face_size(), proposed);
+  const std::vector<double> q = values_of(which, episode.options(), episode.face_size());
   for (size_t k = 0; k < which.size(); ++k) {
-    const int v = state->candidates[which[k]].vertex;
+    const int v = which[k]->vertex;
     if (v < 0 || static_cast<size_t>(v) >= scores.size()) continue;  // from an edge's midpoint, or a template
     float& score = scores[static_cast<size_t>(v)];
     score = std::max(score, static_cast<float>(q[k]));

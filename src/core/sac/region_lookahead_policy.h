@@ -10,7 +10,8 @@
 // region_lookahead.h). The template and an O-grid finish the part: their Q is their
 // reward. A part with no candidate that makes progress gets progress_action, so every face ends in
 // blocks. Within a decomposition a piece's value is computed once (kept by the part, which is a
-// canonical value). What lookahead_agent.h says of the grid holds (gamma, the reward scale inside
+// canonical value). With the agent's actor_candidates > 0, the actor's proposals (cut_proposer.h, at
+// its mean angle) join the shortlist as candidates valued the same way. What lookahead_agent.h says of the grid holds (gamma, the reward scale inside
 // W); the agent learns on grid and general faces alike (lookahead_agent.h, issue 12).
 #pragma once
 
@@ -46,8 +47,12 @@ class RegionLookaheadPolicy : public RegionPolicy {
   std::vector<float> vertex_scores(const RegionEpisode& episode);
 
  private:
-  std::vector<double> values_of(const RegionPartState& state, const std::vector<size_t>& which,
-                                const RegionEpisodeOptions& episode, double face_size);
+  std::vector<double> values_of(const std::vector<const RegionCandidate*>& candidates, const RegionEpisodeOptions& episode,
+                                double face_size);
+  // The shortlist of the part's state and the actor's proposals that make progress, as candidates.
+  std::vector<const RegionCandidate*> contenders(const Region& part, const RegionPartState& state,
+                                                 const RegionEpisodeOptions& episode, double face_size,
+                                                 std::vector<RegionCandidate>& proposed);
   std::shared_ptr<LookaheadAgent> agent_;
   std::string name_;
   size_t face_hash_ = 0;

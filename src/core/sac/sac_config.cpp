@@ -79,6 +79,8 @@ nlohmann::json sac_config_json(const SacConfig& c) {
           {"train_top_k", c.train_top_k},
           {"region_taper", c.region_taper},
           {"region_mask", c.region_mask},
+          {"actor_candidates", c.actor_candidates},
+          {"learn_value", c.learn_value},
           {"polyak", c.polyak},
           {"target_update_every", c.target_update_every},
           {"direction_target_entropy", c.direction_target_entropy},
@@ -124,6 +126,9 @@ SacConfig sac_config_from_json(const nlohmann::json& j) {
     if (c.train_top_k < 0) throw InputError("train_top_k must be >= 0");
     c.region_taper = j.value("region_taper", false);
     c.region_mask = j.value("region_mask", false);
+    c.actor_candidates = j.value("actor_candidates", 0);  // files before the proposals: none
+    if (c.actor_candidates < 0 || c.actor_candidates > 8) throw InputError("actor_candidates must be in 0..8");
+    c.learn_value = j.value("learn_value", true);
     c.polyak = j.at("polyak").get<double>();
     c.target_update_every = j.at("target_update_every").get<int>();
     c.direction_target_entropy = j.at("direction_target_entropy").get<double>();

@@ -55,6 +55,13 @@ struct SacConfig {
                                         // made; the agent draws again (up to 8 times), then the
                                         // progress cut is made, as deployed (false: every drawn cut
                                         // is made; files without it)
+  int actor_candidates = 0;             // lookahead, general faces: at the vertices of the k best
+                                        // candidates by reward (k distinct vertices), an actor on the
+                                        // vertex's 9 numbers proposes one more cut each, at an angle
+                                        // no fixed list holds (cut_proposer.h); 0: none (files
+                                        // without it)
+  bool learn_value = true;              // lookahead: false keeps the value network as loaded (no
+                                        // value updates), so that a run trains the actor alone
   double polyak = 0.01;                 // paper: target networks move this fraction per update
   int target_update_every = 25;         // lookahead: the target network is copied every so many updates
   double direction_target_entropy = 0.3;     // nats; ln 2 = 0.69 is the maximum for 2 directions

@@ -111,12 +111,18 @@ void Trainer::run(const std::function<void(const EpisodeRecord&)>& on_episode, c
     record.wall_seconds = before + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     history_.push_back(record);
     if (on_episode) on_episode(record);
-    if (!options_.checkpoint_path.empty() &&
-        (episodes_done_ % options_.checkpoint_every == 0 || episodes_done_ == options_.episodes)) {
-      save_checkpoint(options_.checkpoint_path);
+    // At every checkpoint's place, written or not, so that a run and the same run resumed from a
+    // checkpoint hold the same state from there on.
+    if ((options_.checkpoint_every > 0 && episodes_done_ % options_.checkpoint_every == 0) ||
+        episodes_done_ == options_.episodes) {
+      agent_->prepare_checkpoint();
+      if (!options_.checkpoint_path.empty()) save_checkpoint(options_.checkpoint_path);
     }
   }
-  if (!options_.checkpoint_path.empty() && episodes_done_ < options_.episodes) save_checkpoint(options_.checkpoint_path);
+  if (!options_.checkpoint_path.empty() && episodes_done_ < options_.episodes) {
+    agent_->prepare_checkpoint();
+    save_checkpoint(options_.checkpoint_path);
+  }
 }
 
 }  // namespace autoblock
