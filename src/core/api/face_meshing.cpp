@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -60,34 +61,37 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
   std::string fallback_from, fallback_reason;  // another policy's blocks that did not mesh
   std::exception_ptr first_error;
   out.attempts = 0;
-  for (size_t k = 0; k < tries.size(); ++k) {
-    if (have && ratio(out.result) >= kRetryBelow) break;
+  auto decompose_try = [&](size_t k) {
     decompose.corner_fraction = tries[k].corner_fraction;
     decompose.cut_smooth_parts = tries[k].cut_smooth_parts;
     decompose.policy_settings.general_search_width = tries[k].width;
     // (The replay takes its block rules from the decomposition: no options to change for it.)
-    FaceDecomposition again = decompose_input_face(face, decompose);
     ++out.attempts;
-    if (again.region.policy != "search") {
-      // Another policy: its one decomposition, meshed. When its blocks do not mesh (a reason of ours:
-      // no interval counts for them), the search's tries mesh the face instead, and say so.
-      options.general.reward = again.region.reward;
-      try {
-        out.result = mesh_region_decomposition(face, again.region, options);
-      } catch (const InputError&) {
-        throw;
-      } catch (const std::exception& e) {
-        fallback_from = again.region.policy;
-        fallback_reason = e.what();
-        decompose.policy = "search";
-        k = static_cast<size_t>(-1);  // the loop's ++k starts the tries from the first
-        continue;
-      }
-      out.decomposition = std::move(again);
+    return decompose_input_face(face, decompose);
+  };
+  std::optional<FaceDecomposition> first = decompose_try(0);
+  if (first->region.policy != "search") {
+    // Another policy: its one decomposition, meshed. When its blocks do not mesh (a reason of ours:
+    // no interval counts for them), the search's tries mesh the face instead, and say so.
+    options.general.reward = first->region.reward;
+    try {
+      out.result = mesh_region_decomposition(face, first->region, options);
+      out.decomposition = std::move(*first);
       out.corner_fraction = settings.corner_fraction;
       finish();
       return out;
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::exception& e) {
+      fallback_from = first->region.policy;
+      fallback_reason = e.what();
+      decompose.policy = "search";
+      first.reset();
     }
+  }
+  for (size_t k = 0; k < tries.size(); ++k) {
+    if (have && ratio(out.result) >= kRetryBelow) break;
+    FaceDecomposition again = k == 0 && first ? std::move(*first) : decompose_try(k);
     options.general.reward = again.region.reward;
     if (!again.region.complete() && (have || k + 1 < tries.size() || first_error)) {
       // A try that leaves a part unfinished (under other block rules the fallback may find no cut

@@ -25,15 +25,21 @@ void write_archive(const std::string& path, torch::serialize::OutputArchive& arc
   });
 }
 
+// The header every policy file starts with: format, version, kind, the agent's configuration (so the
+// file rebuilds its networks) and the training summary.
+nlohmann::json policy_meta(int version, bool checkpoint, const LearningAgent& agent, const nlohmann::json& training) {
+  return {{"format", "autoblock-policy"},
+          {"version", version},
+          {"kind", checkpoint ? "checkpoint" : "policy"},
+          {"config", sac_config_json(agent.config())},
+          {"training", training}};
+}
+
 }  // namespace
 
 void save_policy_file(const std::string& path, const LearningAgent& agent, const nlohmann::json& training,
                       bool checkpoint) {
-  const nlohmann::json meta = {{"format", "autoblock-policy"},
-                               {"version", 1},
-                               {"kind", checkpoint ? "checkpoint" : "policy"},
-                               {"config", sac_config_json(agent.config())},
-                               {"training", training}};
+  const nlohmann::json meta = policy_meta(1, checkpoint, agent, training);
   torch::serialize::OutputArchive archive;
   archive.write("meta", c10::IValue(meta.dump()));
   agent.save(archive, checkpoint);
@@ -56,13 +62,8 @@ nlohmann::json save_two_agent_policy_file(const std::string& path, const Learnin
   if (!general->deployed_region_policy("general")) {
     throw InputError("the network for general faces has no policy on them (a paper's agent trained before it learned on general faces)");
   }
-  const nlohmann::json meta = {
-      {"format", "autoblock-policy"},
-      {"version", 2},
-      {"kind", "policy"},
-      {"config", sac_config_json(grid.config())},
-      {"training", grid_training},
-      {"general", {{"config", sac_config_json(general->config())}, {"training", general_training}}}};
+  nlohmann::json meta = policy_meta(2, false, grid, grid_training);
+  meta["general"] = {{"config", sac_config_json(general->config())}, {"training", general_training}};
   torch::serialize::OutputArchive archive;
   archive.write("meta", c10::IValue(meta.dump()));
   grid.save(archive, false);
