@@ -373,7 +373,7 @@ std::vector<double> LookaheadAgent::cut_values(const PartState& state, double fa
 
 std::shared_ptr<const PartState> LookaheadAgent::cached_state(const Part& part, double face_size) {
   if (states_.size() > 200000) states_.clear();  // a memory bound; states are rebuilt on demand
-  auto& slot = states_[part];
+  auto& slot = states_[GridKey{part, face_size}];
   if (!slot) slot = make_part_state(part, state_options(face_size));
   return slot;
 }
@@ -530,7 +530,7 @@ std::map<std::string, double> LookaheadAgent::update(size_t count, std::mt19937_
   };
   std::vector<Parent> parents;
   std::vector<const PartState*> missing;
-  std::vector<Part> missing_parts;
+  std::vector<GridKey> missing_parts;
   std::vector<RegionKey> missing_regions;
   std::vector<std::shared_ptr<const PartState>> keep;
   for (const Memory* m : batch) {
@@ -539,11 +539,12 @@ std::map<std::string, double> LookaheadAgent::update(size_t count, std::mt19937_
       parent.state = cached_state(m->part, m->face_size);
       for (const LineCandidate& line : parent.state->lines) {
         for (const Part& piece : line.to_cut) {
-          if (target_values_.count(piece)) continue;
+          GridKey key{piece, m->face_size};
+          if (target_values_.count(key)) continue;
           keep.push_back(cached_state(piece, m->face_size));
           missing.push_back(keep.back().get());
-          missing_parts.push_back(piece);
-          target_values_[piece] = 0.0;  // placeholder, filled below (also dedupes)
+          target_values_[key] = 0.0;  // placeholder, filled below (also dedupes)
+          missing_parts.push_back(std::move(key));
         }
       }
     } else {
@@ -569,7 +570,7 @@ std::map<std::string, double> LookaheadAgent::update(size_t count, std::mt19937_
     const torch::Tensor w = forward_values(target_, missing).contiguous();
     const float* values = w.data_ptr<float>();
     size_t k = 0;
-    for (const Part& part : missing_parts) target_values_[part] = values[k++];
+    for (const GridKey& key : missing_parts) target_values_[key] = values[k++];
     for (const RegionKey& key : missing_regions) region_target_values_[key] = values[k++];
   }
   const double alpha = temperature();
@@ -581,7 +582,7 @@ std::map<std::string, double> LookaheadAgent::update(size_t count, std::mt19937_
     if (!parent.general) {
       for (const LineCandidate& line : parent.state->lines) {
         double value = line.reward;
-        for (const Part& piece : line.to_cut) value += config_.gamma * target_values_.at(piece);
+        for (const Part& piece : line.to_cut) value += config_.gamma * target_values_.at(GridKey{piece, batch[b]->face_size});
         q.push_back(value);
       }
     } else {

@@ -208,6 +208,18 @@ class LookaheadAgent : public LearningAgent {
     bool mirror = false;
     bool general() const { return !region.is_empty(); }
   };
+  // A grid part as the training caches key it: its state (the lookahead's rewards and the scale
+  // features) and value depend on its face's size too, and parts of different faces can share cells.
+  struct GridKey {
+    Part part;
+    double face_size = 1.0;
+    bool operator==(const GridKey& other) const { return face_size == other.face_size && part == other.part; }
+  };
+  struct GridKeyHash {
+    size_t operator()(const GridKey& key) const {
+      return key.part.hash() ^ (std::hash<double>()(key.face_size) * 0x9e3779b97f4a7c15ULL);
+    }
+  };
   // A general part as the caches key it: states and values depend on the face's size and rules too.
   struct RegionKey {
     Region region;
@@ -237,8 +249,8 @@ class LookaheadAgent : public LearningAgent {
   std::vector<Memory> memory_;
   size_t next_ = 0;
   long steps_ = 0, updates_ = 0;
-  std::unordered_map<Part, std::shared_ptr<const PartState>, PartHash> states_;
-  std::unordered_map<Part, double, PartHash> target_values_;  // W' of parts, valid until the next refresh
+  std::unordered_map<GridKey, std::shared_ptr<const PartState>, GridKeyHash> states_;
+  std::unordered_map<GridKey, double, GridKeyHash> target_values_;  // W' of parts, valid until the next refresh
   std::unordered_map<RegionKey, std::shared_ptr<const RegionPartState>, RegionKeyHash> region_states_;
   std::unordered_map<RegionKey, double, RegionKeyHash> region_target_values_;  // W' of general parts
 };

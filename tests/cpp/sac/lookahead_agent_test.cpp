@@ -290,3 +290,21 @@ TEST_CASE("a pruned policy values the k best cuts by the two-step score and pick
   CHECK(steps > 8);
   CHECK(pruned_steps > 4);
 }
+
+TEST_CASE("the training caches keep a grid part's state apart per face size", "[sac][lookahead]") {
+  // The same cells in faces of two sizes: the pieces' states (lookahead rewards, scale features)
+  // differ, so an agent that met the part in the small face first must value it in the large one as
+  // an agent that never met it does.
+  const GridFace u = test::grid_face_of({{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}});
+  const double small = u.size, large = 4.0 * u.size;
+  torch::manual_seed(5);
+  auto seen = std::make_shared<LookaheadAgent>(default_sac_config("lookahead"));
+  torch::manual_seed(5);
+  auto fresh = std::make_shared<LookaheadAgent>(default_sac_config("lookahead"));
+  const auto at_small = make_part_state(u.whole, seen->state_options(small));
+  const auto at_large = make_part_state(u.whole, seen->state_options(large));
+  const std::vector<double> q_small = seen->cut_values(*at_small, small);
+  const std::vector<double> q_large = seen->cut_values(*at_large, large);
+  CHECK((q_large == fresh->cut_values(*at_large, large)));
+  CHECK(q_large != q_small);
+}
