@@ -55,7 +55,8 @@ std::string training_curves_svg(const std::vector<EpisodeRecord>& history, const
 }
 
 std::string training_csv_header() {
-  return "episode,shape,return,blocks,steps,complete,value_loss,critic_loss,actor_loss,alpha,tau,test_return,wall_seconds\n";
+  return "episode,shape,return,blocks,steps,complete,value_loss,critic_loss,actor_loss,alpha,tau,test_return,wall_seconds,"
+         "proposal_better\n";
 }
 
 std::string training_csv_row(const EpisodeRecord& r) {
@@ -79,8 +80,12 @@ std::string training_csv_row(const EpisodeRecord& r) {
   }
   char wall[32];
   std::snprintf(wall, sizeof wall, "%.3f", r.wall_seconds);
-  return std::string(head) + metric("value_loss") + "," + metric("critic_loss") + "," + metric("actor_loss") + "," + tail +
-         test + "," + wall + "\n";
+  // The lookahead agent has no actor of its own: with actor-proposed cuts (cut_proposer.h) the actor
+  // column holds its proposal actor's loss, and the last column the share of turned cuts that beat
+  // the listed ones.
+  const std::string actor = r.metrics.count("actor_loss") ? metric("actor_loss") : metric("proposal_loss");
+  return std::string(head) + metric("value_loss") + "," + metric("critic_loss") + "," + actor + "," + tail + test + "," +
+         wall + "," + metric("proposal_better") + "\n";
 }
 
 }  // namespace autoblock

@@ -28,7 +28,9 @@ std::string training_curves_svg(const std::vector<EpisodeRecord>& history, const
                                 const std::string& title);
 
 // One CSV line per episode: episode, shape, return, blocks, steps, complete, value_loss,
-// critic_loss, actor_loss, alpha, tau, test_return (empty when not evaluated), wall_seconds.
+// critic_loss, actor_loss (the lookahead agent's: its proposal actor's, cut_proposer.h), alpha, tau,
+// test_return (empty when not evaluated), wall_seconds, proposal_better (the share of the episode's
+// turned cuts that beat the listed ones; empty without proposals).
 std::string training_csv_header();
 std::string training_csv_row(const EpisodeRecord& record);
 

@@ -1,5 +1,6 @@
 #include "support/catch_torch.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include "core/sac/region_lookahead.h"
 #include "core/sac/region_lookahead_policy.h"
 #include "core/sac/sac_config.h"
+#include "core/sac/training_curves.h"
 #include "support/test_shapes.h"
 
 using namespace autoblock;
@@ -276,4 +278,25 @@ TEST_CASE("a policy file with proposals rebuilds them; the same decisions after 
     CHECK(da.total_return == db.total_return);
     CHECK(da.finished.size() == db.finished.size());
   }
+}
+
+TEST_CASE("the training log shows the proposal actor's loss and how often its cuts beat the list", "[sac][proposals]") {
+  const std::string header = training_csv_header();
+  CHECK(header.rfind("episode,", 0) == 0);
+  CHECK(header.find(",wall_seconds,proposal_better\n") != std::string::npos);
+  EpisodeRecord r;
+  r.episode = 3;
+  r.shape = "s";
+  r.metrics = {{"value_loss", 1.5}, {"proposal_loss", -0.25}, {"proposal_better", 0.125}};
+  const std::string row = training_csv_row(r);
+  CHECK(row.find(",1.5,,-0.25,") != std::string::npos);  // value, critic (none), actor: the proposal actor's
+  CHECK(row.substr(row.size() - 7) == ",0.125\n");
+  r.metrics = {{"value_loss", 1.5}};
+  const std::string plain = training_csv_row(r);
+  CHECK(plain.find(",1.5,,,") != std::string::npos);
+  CHECK(plain.substr(plain.size() - 2) == ",\n");
+  // Every row has as many columns as the header.
+  auto columns = [](const std::string& line) { return std::count(line.begin(), line.end(), ','); };
+  CHECK(columns(row) == columns(header));
+  CHECK(columns(plain) == columns(header));
 }
