@@ -11,12 +11,10 @@
 #include "core/region/region_observation.h"
 #include "core/region/region_reward.h"
 #include "core/sac/region_state.h"
+#include "core/sac/squashed_gaussian.h"
 
 namespace autoblock {
 namespace {
-
-constexpr double kLogStdMin = -5.0, kLogStdMax = 2.0;
-constexpr double kSquashEpsilon = 1e-6;
 
 struct Squashed {
   torch::Tensor u, logp;  // the action in [-1, 1] and its log density
@@ -25,12 +23,10 @@ struct Squashed {
 // The actor's output (mean, log std) per row; eps the standard normal draws. Reparameterised.
 Squashed squash(const torch::Tensor& out, const torch::Tensor& eps) {
   const torch::Tensor mu = out.select(1, 0);
-  const torch::Tensor log_std = out.select(1, 1).clamp(kLogStdMin, kLogStdMax);
+  const torch::Tensor log_std = clamped_log_std(out);
   const torch::Tensor pre = mu + log_std.exp() * eps;
   const torch::Tensor u = torch::tanh(pre);
-  const torch::Tensor logp =
-      -0.5 * eps.pow(2) - log_std - 0.5 * std::log(2.0 * M_PI) - torch::log(1.0 - u.pow(2) + kSquashEpsilon);
-  return {u, logp};
+  return {u, squashed_log_density(eps, log_std, u)};
 }
 
 // count standard normal draws from rng (not torch's generator: a resumed run repeats exactly).

@@ -3,23 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/sac/squashed_gaussian.h"
 
 namespace autoblock {
-namespace {
-
-constexpr double kLogStdMin = -5.0, kLogStdMax = 2.0;  // as the paper's agent's angle
-constexpr double kSquashEpsilon = 1e-6;
-
-torch::Tensor stack_inputs(const std::vector<const ProposalInput*>& inputs) {
-  torch::Tensor t = torch::empty({static_cast<int64_t>(inputs.size()), kProposalInputs}, torch::kFloat32);
-  float* data = t.data_ptr<float>();
-  for (size_t b = 0; b < inputs.size(); ++b) {
-    for (size_t k = 0; k < static_cast<size_t>(kProposalInputs); ++k) data[b * kProposalInputs + k] = (*inputs[b])[k];
-  }
-  return t;
-}
-
-}  // namespace
 
 ProposalInput proposal_input(const Observation& observation, Point2 next_edge, Point2 direction) {
   ProposalInput input{};
@@ -58,7 +44,7 @@ std::vector<CutProposer::Draw> CutProposer::draw(const std::vector<const Proposa
   if (inputs.empty()) return draws;
   torch::NoGradGuard no_grad;
   actor_->eval();
-  const torch::Tensor out = actor_->forward(stack_inputs(inputs)).contiguous();
+  const torch::Tensor out = actor_->forward(stack_rows(inputs)).contiguous();
   const float* data = out.data_ptr<float>();
   for (size_t k = 0; k < inputs.size(); ++k) {
     Draw d;
@@ -83,14 +69,12 @@ std::map<std::string, double> CutProposer::update(const std::vector<Sample>& sam
     advantage.push_back(static_cast<float>(s.advantage));
   }
   actor_->train();
-  const torch::Tensor out = actor_->forward(stack_inputs(inputs));
+  const torch::Tensor out = actor_->forward(stack_rows(inputs));
   const torch::Tensor mu = out.select(1, 0);
-  const torch::Tensor log_std = out.select(1, 1).clamp(kLogStdMin, kLogStdMax);
+  const torch::Tensor log_std = clamped_log_std(out);
   const torch::Tensor zt = torch::tensor(z);
   const torch::Tensor u = torch::tanh(zt);
-  const torch::Tensor eps = (zt - mu) / log_std.exp();
-  const torch::Tensor logp =
-      -0.5 * eps.pow(2) - log_std - 0.5 * std::log(2.0 * M_PI) - torch::log(1.0 - u.pow(2) + kSquashEpsilon);
+  const torch::Tensor logp = squashed_log_density((zt - mu) / log_std.exp(), log_std, u);
   const double alpha = temperature();
   const torch::Tensor weight = (torch::tensor(advantage) - alpha * logp).detach();
   const torch::Tensor loss = -(weight * logp).mean();

@@ -4,6 +4,7 @@
 
 #include "core/nn/graph_batch.h"
 #include "core/nn/module_blend.h"
+#include "core/sac/squashed_gaussian.h"
 
 namespace autoblock {
 namespace {
@@ -11,14 +12,7 @@ const std::vector<int64_t> kHidden{256, 128, 64};
 }  // namespace
 
 torch::Tensor stack_observations(const std::vector<const Observation*>& observations) {
-  torch::Tensor t = torch::empty({static_cast<int64_t>(observations.size()), kObservationSize}, torch::kFloat32);
-  float* data = t.data_ptr<float>();
-  for (size_t b = 0; b < observations.size(); ++b) {
-    for (int k = 0; k < kObservationSize; ++k) {
-      data[b * kObservationSize + static_cast<size_t>(k)] = (*observations[b])[static_cast<size_t>(k)];
-    }
-  }
-  return t;
+  return stack_rows(observations);
 }
 
 SacNetworks::SacNetworks(const SacConfig& config, int64_t actor_outputs, bool actor_output_relu, int64_t critic_inputs,
