@@ -4,7 +4,7 @@
 // The lookahead agent chooses among a part's candidate actions (region_candidates.h: edge
 // extensions, bisectors, normals, the minimum rectangle's axes, diagonals): a few exact directions
 // per vertex. With SacConfig::actor_candidates = k > 0 an actor refines the best of them: at each
-// of the k distinct vertices the best candidates by reward start at (best_candidate_vertices,
+// of the k distinct vertices the best candidates by reward start at (best_at_vertices,
 // region_lookahead.h), it takes the best listed cut from that vertex and proposes the same cut
 // (kind and origin) turned by u * kProposalTilt radians, u in [-1, 1]: a direction between the
 // listed ones, which no fixed list holds. A proposal that makes progress is a candidate like the

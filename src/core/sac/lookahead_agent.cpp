@@ -278,16 +278,11 @@ std::vector<LookaheadAgent::ProposedCut> LookaheadAgent::propose_cuts(const Regi
       next.push_back(loop[(i + 1) % loop.size()]);
     }
   }
-  for (const int v : best_candidate_vertices(state.candidates, static_cast<size_t>(config_.actor_candidates))) {
+  for (const size_t base : best_at_vertices(state.candidates, static_cast<size_t>(config_.actor_candidates))) {
     ProposedCut proposal;
-    proposal.vertex = v;
-    bool found = false;
-    for (size_t k = 0; k < state.candidates.size(); ++k) {
-      if (state.candidates[k].vertex != v) continue;
-      if (!found || state.candidates[k].reward > state.candidates[proposal.base].reward) proposal.base = k;
-      found = true;
-    }
-    const size_t i = static_cast<size_t>(v);
+    proposal.base = base;
+    proposal.vertex = state.candidates[base].vertex;
+    const size_t i = static_cast<size_t>(proposal.vertex);
     proposal.input = proposal_input(state.observations.at(i), Point2{next[i].x - vertex[i].x, next[i].y - vertex[i].y},
                                     state.candidates[proposal.base].action.cut.direction);
     proposals.push_back(std::move(proposal));

@@ -159,9 +159,8 @@ class LookaheadAgent : public LearningAgent {
   };
   // Inputs:  part, not a block; state, its (region_state_options); face_size; rules; rng: drawn
   //          (training) or null: the actor's mean (deployed). The caller holds lock_general_engine().
-  // Outputs: one proposal per vertex of best_candidate_vertices(state.candidates, actor_candidates):
-  //          the best listed cut from it by reward (the earlier among equals), turned by the actor's
-  //          angle; none without a proposer.
+  // Outputs: one proposal per candidate of best_at_vertices(state.candidates, actor_candidates): the
+  //          best listed cut from its vertex, turned by the actor's angle; none without a proposer.
   std::vector<ProposedCut> propose_cuts(const Region& part, const RegionPartState& state, double face_size,
                                         const BlockRules& rules, std::mt19937_64* rng);
   bool proposes() const { return proposer_ != nullptr; }

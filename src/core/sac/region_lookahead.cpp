@@ -131,17 +131,19 @@ std::optional<RegionCandidate> region_candidate(const Region& part, const Region
   return c;
 }
 
-std::vector<int> best_candidate_vertices(const std::vector<RegionCandidate>& candidates, size_t count) {
+std::vector<size_t> best_at_vertices(const std::vector<RegionCandidate>& candidates, size_t count) {
   std::vector<size_t> order(candidates.size());
   for (size_t k = 0; k < order.size(); ++k) order[k] = k;
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return candidates[a].reward > candidates[b].reward; });
-  std::vector<int> vertices;
+  std::vector<size_t> best;
   for (const size_t k : order) {
-    if (vertices.size() >= count) break;
+    if (best.size() >= count) break;
     const int v = candidates[k].vertex;
-    if (v >= 0 && std::find(vertices.begin(), vertices.end(), v) == vertices.end()) vertices.push_back(v);
+    if (v >= 0 && std::none_of(best.begin(), best.end(), [&](size_t b) { return candidates[b].vertex == v; })) {
+      best.push_back(k);
+    }
   }
-  return vertices;
+  return best;
 }
 
 }  // namespace autoblock

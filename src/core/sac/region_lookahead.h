@@ -67,8 +67,9 @@ std::vector<size_t> best_candidates(const std::vector<RegionCandidate>& candidat
 std::optional<RegionCandidate> region_candidate(const Region& part, const RegionAction& action, double face_size,
                                                 const RegionEpisodeOptions& options, bool taper = false);
 
-// Inputs:  candidates (a part's); count. Output: up to count distinct vertices (>= 0), those the best
-//          candidates by reward start at, best first (the earlier candidate among equals).
-std::vector<int> best_candidate_vertices(const std::vector<RegionCandidate>& candidates, size_t count);
+// Inputs:  candidates (a part's); count. Output: the indices of the best candidate by reward from each
+//          of up to count distinct vertices (>= 0), best first: the vertices the best candidates start
+//          at, each with its best cut (the earlier candidate among equals).
+std::vector<size_t> best_at_vertices(const std::vector<RegionCandidate>& candidates, size_t count);
 
 }  // namespace autoblock

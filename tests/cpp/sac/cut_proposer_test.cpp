@@ -129,8 +129,15 @@ TEST_CASE("region_candidate: a listed cut made again gives the listed candidate;
   RegionAction finish;
   finish.kind = RegionAction::Kind::Template;
   CHECK_FALSE(region_candidate(part, finish, face_size, options));
-  // The vertices of the best candidates, distinct, best first.
-  const std::vector<int> vertices = best_candidate_vertices(look.candidates, 3);
+  // The vertices of the best candidates, distinct, best first, each with its best cut.
+  const std::vector<size_t> at = best_at_vertices(look.candidates, 3);
+  std::vector<int> vertices;
+  for (const size_t k : at) {
+    vertices.push_back(look.candidates[k].vertex);
+    for (const RegionCandidate& c : look.candidates) {
+      if (c.vertex == look.candidates[k].vertex) CHECK(c.reward <= look.candidates[k].reward);
+    }
+  }
   REQUIRE(vertices.size() == 3);
   CHECK(vertices[0] != vertices[1]);
   CHECK(vertices[1] != vertices[2]);
@@ -156,7 +163,9 @@ TEST_CASE("a lookahead agent with proposals: they are the actor's cuts at the be
     const auto lock = lock_general_engine();
     const auto state = make_region_state(face, agent->region_state_options(face_size, rules));
     const auto proposals = agent->propose_cuts(face, *state, face_size, rules, nullptr);
-    const std::vector<int> vertices = best_candidate_vertices(state->candidates, 2);
+    const std::vector<size_t> at = best_at_vertices(state->candidates, 2);
+    std::vector<int> vertices;
+    for (const size_t k : at) vertices.push_back(state->candidates[k].vertex);
     REQUIRE(proposals.size() == vertices.size());
     for (size_t k = 0; k < proposals.size(); ++k) {
       CHECK(proposals[k].vertex == vertices[k]);
