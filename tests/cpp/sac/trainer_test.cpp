@@ -39,6 +39,26 @@ TrainingSet general_set(int count, std::uint64_t seed) {
   return set;
 }
 
+// grid_count rectangle unions (grid_seed) and general_count general polygons (general_seed), one set.
+TrainingSet mixed_set(int grid_count, std::uint64_t grid_seed, int general_count, std::uint64_t general_seed) {
+  TrainingSet set = generated_set(grid_count, grid_seed);
+  const TrainingSet general = general_set(general_count, general_seed);
+  set.general = general.general;
+  set.general_names = general.general_names;
+  return set;
+}
+
+// A resume test's run: one thread (seeded runs repeat exactly), a test evaluation and a checkpoint
+// every `every` episodes.
+TrainerOptions resume_options(std::uint64_t seed, int every) {
+  TrainerOptions options;
+  options.seed = seed;
+  options.eval_every = every;
+  options.checkpoint_every = every;
+  options.threads = 1;
+  return options;
+}
+
 SacConfig small_config(const std::string& agent) {
   SacConfig config = default_sac_config(agent);
   config.batch_size = 16;
@@ -99,12 +119,7 @@ TEST_CASE("a seeded short training run improves its test return", "[sac][trainin
 TEST_CASE("a run resumed from its checkpoint repeats the uninterrupted run exactly", "[sac][training]") {
   for (const std::string kind : {"paper", "lookahead"}) {
     INFO(kind);
-    TrainerOptions options;
-    options.seed = 9;
-    options.eval_every = 3;
-    options.checkpoint_every = 3;
-    options.threads = 1;
-    check_resume_repeats(small_config(kind), options, 6, [](std::uint64_t k) { return generated_set(k ? 3 : 5, 60 + k); },
+    check_resume_repeats(small_config(kind), resume_options(9, 3), 6, [](std::uint64_t k) { return generated_set(k ? 3 : 5, 60 + k); },
                          test::temporary_folder("resume"));
   }
 }
@@ -145,23 +160,12 @@ TEST_CASE("a seeded short training run on general faces improves its test return
 }
 
 TEST_CASE("a run on mixed faces resumed from its checkpoint repeats the uninterrupted run exactly", "[sac][training][region]") {
-  auto mixed = [](std::uint64_t seed) {
-    TrainingSet set = generated_set(3, seed);
-    TrainingSet general = general_set(3, seed + 100);
-    set.general = general.general;
-    set.general_names = general.general_names;
-    return set;
-  };
-  TrainerOptions options;
-  options.seed = 11;
-  options.eval_every = 4;
-  options.checkpoint_every = 4;
-  options.threads = 1;
   SacConfig config = small_config("lookahead");
   config.warmup_steps = 10;
   config.batch_size = 8;
   const std::vector<EpisodeRecord> history = check_resume_repeats(
-      config, options, 8, [&](std::uint64_t k) { return mixed(80 + k); }, test::temporary_folder("resume-general"));
+      config, resume_options(11, 4), 8, [](std::uint64_t k) { return mixed_set(3, 80 + k, 3, 180 + k); },
+      test::temporary_folder("resume-general"));
   int general = 0;
   for (const EpisodeRecord& r : history) general += r.shape.rfind("general ", 0) == 0;
   CHECK(general > 0);
@@ -189,21 +193,12 @@ TEST_CASE("the paper agent learns a continuous angle on general faces: a seeded 
   CHECK(late > early + 5.0);
   CHECK(std::isfinite(h.back().test_return));
 
-  TrainerOptions resumed;
-  resumed.seed = 22;
-  resumed.eval_every = 3;
-  resumed.checkpoint_every = 3;
-  resumed.threads = 1;
+  TrainerOptions resumed = resume_options(22, 3);
   resumed.max_steps = 25;
   config.warmup_steps = 10;
   config.batch_size = 8;
-  check_resume_repeats(config, resumed, 6, [](std::uint64_t k) {
-    TrainingSet set = generated_set(2, 94 + k);
-    const TrainingSet general = general_set(3, 96 + k);
-    set.general = general.general;
-    set.general_names = general.general_names;
-    return set;
-  }, test::temporary_folder("resume-paper-general"));
+  check_resume_repeats(config, resumed, 6, [](std::uint64_t k) { return mixed_set(2, 94 + k, 3, 96 + k); },
+                       test::temporary_folder("resume-paper-general"));
 }
 
 TEST_CASE("a run with actor-proposed cuts resumed from its checkpoint repeats the uninterrupted run exactly",
@@ -213,21 +208,15 @@ TEST_CASE("a run with actor-proposed cuts resumed from its checkpoint repeats th
   // angles are continuous, so equal returns need equal weights to the last bit: the target values'
   // caches are dropped at every checkpoint's place (Trainer::run, prepare_checkpoint), and the
   // training metrics are equal too.
-  TrainerOptions options;
-  options.seed = 13;
-  options.eval_every = 3;
-  options.checkpoint_every = 3;
-  options.threads = 1;
   SacConfig config = small_config("lookahead");
   config.reward = RewardPreset::Mesh;
   config.warmup_steps = 5;
   config.batch_size = 8;
   config.actor_candidates = 2;
   const std::vector<EpisodeRecord> history = check_resume_repeats(
-      config, options, 6, [](std::uint64_t k) { return general_set(3, 120 + k); }, test::temporary_folder("resume-proposals"),
-      true);
+      config, resume_options(13, 3), 6, [](std::uint64_t k) { return general_set(3, 120 + k); },
+      test::temporary_folder("resume-proposals"), true);
   int stepped = 0;
   for (const EpisodeRecord& r : history) stepped += r.metrics.count("proposal_loss") > 0;
-
   CHECK(stepped > 0);
 }
