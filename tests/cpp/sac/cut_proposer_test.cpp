@@ -99,6 +99,32 @@ TEST_CASE("the cut proposer's weights survive a save and load; an archive withou
   CHECK(mean_angle(first, o) == mean_angle(second, o));  // unchanged
 }
 
+TEST_CASE("a checkpoint without the proposal actor is refused by an agent with proposals; as an initial policy it is not",
+          "[sac][proposals]") {
+  torch::manual_seed(39);
+  LookaheadAgent plain(proposing_config(0));
+  REQUIRE_FALSE(plain.proposes());
+  std::stringstream bytes;
+  {
+    torch::serialize::OutputArchive out;
+    plain.save(out, true);
+    out.save_to(bytes);
+  }
+  torch::manual_seed(40);
+  LookaheadAgent proposing(proposing_config(2));
+  REQUIRE(proposing.proposes());
+  {
+    torch::serialize::InputArchive in;
+    in.load_from(bytes);
+    CHECK_THROWS_WITH(proposing.load(in, true), Catch::Matchers::Contains("holds no proposal actor"));
+  }
+  bytes.clear();
+  bytes.seekg(0);
+  torch::serialize::InputArchive in;
+  in.load_from(bytes);
+  CHECK_NOTHROW(proposing.load(in, false));  // --init: the value network loads, the actor stays as it was
+}
+
 TEST_CASE("region_candidate: a listed cut made again gives the listed candidate; no progress gives nothing",
           "[sac][proposals][region]") {
   const auto lock = lock_general_engine();
