@@ -132,6 +132,23 @@ bool template_applies(const Region& region);
 // Inputs: region; rules. Output: true when the smooth template applies (template_pieces makes it).
 bool smooth_template(const Region& region, const BlockRules& rules = {});
 
+// A part with exactly two corners P and Q (the rounded end of a wedge or a finger cut across, a
+// D-shape, the cap a cut leaves over a rounded top) may get the *two-corner template* instead: every
+// quad mesh of such a part needs two irregular interior vertices (its corners kept whole, as the
+// smooth template does not keep them), so it has two, I1 and I2, joined to each other and each to a
+// point on each side: M1, M2 on the side from P to Q, X2, X1 on the side from Q back to P. Four pieces:
+// P's (P, M1, I1, X1), the first side's (M1, M2, I2, I1), Q's (M2, Q, X2, I2) and the second side's (X2,
+// X1, I1, I2). The side points stand at a fraction f and 1 - f of their side's length (the side vertex
+// nearest, within a tenth of the side, where there is one: an arc's sample stays on its circle; else
+// a point on the straight side); I1 and I2 lie between the sides' points and are drawn towards each
+// other. Of a few such placements (f, how far across, how far drawn) the one whose pieces' Coons
+// patches have the best least scaled Jacobian is made, when every piece is a convex quadrilateral of
+// corners with angles in [20, 160] degrees and the spokes keep clear of the boundary. template_pieces
+// makes it where the smooth template does not apply and it beats the usual template's fallback
+// corners by that same measure.
+// Inputs: region; rules. Output: true when the two-corner template applies.
+bool two_corner_template(const Region& region, const BlockRules& rules = {});
+
 // A part with one round hole (issue 13: a circle reaches the engine as a ring of side vertices,
 // circular_arc.h), or any smooth convex one (a slot), and four convex corners of 60-120 degrees joined
 // by straight sides gets the O-grid template: a box around the hole, its side k parallel to the part's

@@ -23,6 +23,7 @@
 #include "core/data/general_generator.h"
 #include "core/data/shape_generator.h"
 #include "core/geometry/occt_face.h"
+#include "core/region/block.h"
 #include "core/geometry/occt_properties.h"
 #include "core/io/decomposition_json.h"
 #include "core/io/input_face.h"
@@ -62,6 +63,20 @@ double box_distance(const TopoDS_Shape& a, const TopoDS_Shape& b) {
 
 TopoDS_Face general_face(std::uint64_t seed, GeneralKind kind, bool holes) {
   return occt_face_from_polygon(test::general_polygon(seed, kind, holes), 0.0, true);
+}
+
+// A face of tests/data/arcs (a general face, checked).
+InputFace arc_test_face(const std::string& name) {
+  InputFace face = load_input_face(std::string(AUTOBLOCK_SOURCE_DIR) + "/tests/data/arcs/" + name + ".brep");
+  REQUIRE(face.is_general());
+  return face;
+}
+
+// The search's settings without its time limit: the same searches on a loaded machine.
+DecomposeSettings untimed_settings() {
+  DecomposeSettings settings;
+  settings.policy_settings.general_time_limit = 0.0;
+  return settings;
 }
 
 }  // namespace
@@ -284,10 +299,8 @@ TEST_CASE("a wedge rounded at both ends: the last try cuts it, and its mesh is k
   // rounded tip's), which no cut reduces, so every try but the last finishes the whole face with the
   // usual template's fallback, whose mesh fans into the tip (min scaled Jacobian 0.067). The last try
   // counts such a part as complex (BlockRules::cut_smooth_parts) and cuts it into blocks.
-  const InputFace face = load_input_face(std::string(AUTOBLOCK_SOURCE_DIR) + "/tests/data/arcs/rounded-wedge.brep");
-  REQUIRE(face.is_general());
-  DecomposeSettings settings;
-  settings.policy_settings.general_time_limit = 0.0;  // the same searches on a loaded machine
+  const InputFace face = arc_test_face("rounded-wedge");
+  DecomposeSettings settings = untimed_settings();
   const FaceMeshing m = mesh_input_face(face, settings, MeshOptions{});
   REQUIRE(m.result.conformity.conformal);
   CHECK(m.attempts == static_cast<int>(std::size(kSearchTries)));
@@ -302,15 +315,35 @@ TEST_CASE("a wedge rounded at both ends: the last try cuts it, and its mesh is k
   CHECK(d.region.rules.cut_smooth_parts);
 }
 
+TEST_CASE("a cap with two corners over a rounded top: the two-corner template, not a corner on the arc",
+          "[api][general][mesh][arc]") {
+  // Face 159 of the arc benchmark (`autoblock generate --kind arcs --seed 20261202`): the search cuts
+  // across it and leaves a cap whose only corners are the cut's ends, its top a chain of arcs and
+  // edges. The smooth template folds on it; the usual template's fallback put a third corner on the
+  // top where the boundary turns by 12 degrees, and a quad there had an angle of 168 degrees (min
+  // scaled Jacobian 0.21). The two-corner template keeps the cut's ends whole and puts its two
+  // three-valent vertices inside.
+  const InputFace face = arc_test_face("rounded-cap");
+  DecomposeSettings settings = untimed_settings();
+  const FaceMeshing m = mesh_input_face(face, settings, MeshOptions{});
+  REQUIRE(m.result.conformity.conformal);
+  int caps = 0;
+  for (const FinishedRegion& part : m.decomposition.region.finished) {
+    if (!part.is_template || !two_corner_template(part.region, m.decomposition.region.rules)) continue;
+    ++caps;
+    CHECK(template_pieces(part.region, m.decomposition.region.rules).size() == 4);
+  }
+  CHECK(caps >= 1);
+  CHECK(m.result.quality.min_scaled_jacobian > 0.8 * m.result.topology_bound);
+}
+
 TEST_CASE("a rounded acute tip: the arcs' chord steps as targets, not minima, keep its quads from fanning",
           "[api][general][mesh][arc]") {
   // Face 92 of the arc benchmark (`autoblock generate --kind arcs --seed 20261202`): a polygon whose acute
   // tip is rounded by an arc of several chords. The block holding the tip has the arc on one side and a
   // short side opposite; one interval per chord as a minimum makes that short side carry them all.
-  const InputFace face = load_input_face(std::string(AUTOBLOCK_SOURCE_DIR) + "/tests/data/arcs/rounded-tip.brep");
-  REQUIRE(face.is_general());
-  DecomposeSettings settings;
-  settings.policy_settings.general_time_limit = 0.0;
+  const InputFace face = arc_test_face("rounded-tip");
+  DecomposeSettings settings = untimed_settings();
   settings.occt_blocks = false;
   const FaceDecomposition d = decompose_input_face(face, settings);
   REQUIRE(d.region.complete());
@@ -349,8 +382,7 @@ TEST_CASE("a policy whose blocks do not mesh: mesh makes the search's tries inst
           "[api][general][mesh][arc]") {
   // Face 78 of `autoblock generate --kind arcs --seed 20261263` (a rounded plate with 3 holes): greedy's
   // blocks do not mesh (a block with two coinciding corners).
-  const InputFace face = load_input_face(std::string(AUTOBLOCK_SOURCE_DIR) + "/tests/data/arcs/greedy-unmeshable.brep");
-  REQUIRE(face.is_general());
+  const InputFace face = arc_test_face("greedy-unmeshable");
   DecomposeSettings settings;
   settings.policy = "greedy";
   settings.occt_blocks = false;

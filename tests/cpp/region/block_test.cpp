@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include <catch2/catch.hpp>
 
@@ -11,7 +12,18 @@ using namespace autoblock;
 
 namespace {
 constexpr double kQ = 1e-7;
+
+// Every corner of the piece's quadrilateral of corners within [20, 160] degrees.
+void check_corner_angles(const QuadPiece& piece) {
+  for (int k = 0; k < 4; ++k) {
+    const CornerAngle a = piece_corner_angle(piece, k);
+    const double degrees = std::atan2(a.sine, a.cosine) * 180.0 / M_PI;
+    CHECK(degrees >= 20.0);
+    CHECK(degrees <= 160.0);
+  }
 }
+
+}  // namespace
 
 TEST_CASE("blocks: four corners within the angle range, side vertices allowed", "[region][block]") {
   CHECK(is_block(Region(Ring{{0, 0}, {3, 0}, {3, 1}, {0, 1}}, {}, kQ)));
@@ -290,6 +302,52 @@ TEST_CASE("smooth parts: the disk's template, and no template on a part with a c
   for (const Point2& p : pieces.back().ring) CHECK(std::hypot(p.x - 5, p.y - 2) == Approx(1.5).epsilon(1e-6));
 }
 
+TEST_CASE("a part with two corners: the two-corner template keeps them whole, two three-valent vertices inside",
+          "[region][block][arc]") {
+  // A circular segment: a chord 10 long under an arc of 120 degrees in 10-degree samples (radius
+  // 10 / sqrt 3, centre below the chord): two corners of 60 degrees, the rest smooth. The smooth
+  // template does not take it (its pieces at the corners fold); the usual template's fallback would
+  // put a third corner on the arc (180 degrees). The two-corner template keeps each corner in one
+  // piece, and its two interior points are where three pieces meet.
+  const double radius = 10 / std::sqrt(3.0), below = radius / 2;
+  Ring cap{{0, 0}, {10, 0}};
+  for (int k = 1; k < 12; ++k) {
+    const double t = (30 + 10 * k) * M_PI / 180;
+    cap.push_back({5 + radius * std::cos(t), -below + radius * std::sin(t)});
+  }
+  const Region part(cap, {}, kQ);
+  CHECK_FALSE(smooth_template(part));
+  REQUIRE(template_applies(part));
+  REQUIRE(two_corner_template(part));
+  const std::vector<QuadPiece> pieces = template_pieces(part);
+  REQUIRE(pieces.size() == 4);
+  double area = 0;
+  std::map<std::pair<double, double>, int> interior;  // a corner off the boundary, and how many pieces hold it
+  int holding_p = 0, holding_q = 0;
+  for (const QuadPiece& piece : pieces) {
+    area += signed_area(piece.ring);
+    check_corner_angles(piece);
+    for (int k = 0; k < 4; ++k) {
+      const Point2 v = piece.ring[static_cast<size_t>(piece.corners[static_cast<size_t>(k)])];
+      holding_p += v == Point2{0, 0};
+      holding_q += v == Point2{10, 0};
+      const double r = std::hypot(v.x - 5, v.y + below);
+      const bool on_boundary = std::fabs(v.y) < 1e-12 || std::fabs(r - radius) < 1e-6;  // (samples on the lattice)
+      if (!on_boundary) ++interior[{v.x, v.y}];
+    }
+    // Every vertex of a piece on the boundary lies on the line or on the circle (arc samples kept).
+    for (const Point2& v : piece.ring) {
+      const double r = std::hypot(v.x - 5, v.y + below);
+      CHECK((std::fabs(v.y) < 1e-12 || std::fabs(r - radius) < 1e-6 || r < radius - 1e-3));
+    }
+  }
+  CHECK(area == Approx(part.area()).epsilon(1e-9));
+  CHECK(holding_p == 1);  // each corner kept whole: a corner of one piece only
+  CHECK(holding_q == 1);
+  REQUIRE(interior.size() == 2);
+  for (const auto& [point, count] : interior) CHECK(count == 3);
+}
+
 TEST_CASE("a long part with a rounded end gets the smooth template, its inner corners inset from the sides",
           "[region][block][arc]") {
   // A finger 2 wide and 7 long whose end is two quarter-round fillets (radius 0.8) and a short flat:
@@ -311,11 +369,8 @@ TEST_CASE("a long part with a rounded end gets the smooth template, its inner co
   double area = 0;
   for (const QuadPiece& piece : pieces) {
     area += signed_area(piece.ring);
+    check_corner_angles(piece);
     for (int k = 0; k < 4; ++k) {
-      const CornerAngle a = piece_corner_angle(piece, k);
-      const double degrees = std::atan2(a.sine, a.cosine) * 180.0 / M_PI;
-      CHECK(degrees >= 20.0);
-      CHECK(degrees <= 160.0);
       const Point2 v = piece.ring[static_cast<size_t>(piece.corners[static_cast<size_t>(k)])];
       for (const Point2 join : {Point2{0, 0.8}, Point2{0.8, 0}, Point2{1.2, 0}, Point2{2, 0.8}}) {
         CHECK(std::hypot(v.x - join.x, v.y - join.y) > 0.1);
