@@ -213,6 +213,36 @@ ConformalBlocks region_occt_model(const InputFace& face, const RegionDecompositi
   return conformal_merge(parts, face.region.quantum());
 }
 
+namespace {
+
+// The interval counts a block model's edges along arcs take at least: one per chord step of the arc
+// (chord); one per kMeshEdgeArcSteps of them on a convex arc (relaxed); the chord steps as targets
+// (target; 0 off arcs); relaxable when some relaxed count is below its chord count.
+struct ArcMinima {
+  std::vector<int> chord, relaxed;
+  std::vector<double> target;
+  bool relaxable = false;
+};
+ArcMinima arc_minima(const BlockModel& model, const FaceArcs& arcs) {
+  const size_t n_edges = model.edges.size();
+  ArcMinima m{std::vector<int>(n_edges, 0), std::vector<int>(n_edges, 0), std::vector<double>(n_edges, 0.0), false};
+  for (size_t e = 0; e < n_edges; ++e) {
+    const ModelEdge& edge = model.edges[e];
+    if (edge.arc < 0) continue;
+    const CircularArc& arc = arcs.arcs[static_cast<size_t>(edge.arc)];
+    const double step = std::fabs(arc.sweep) / arc_chord_count(arc);
+    // The intervals that keep every one within `steps` chord steps of the arc.
+    auto intervals = [&](int steps) { return std::max(1, static_cast<int>(std::ceil(std::fabs(edge.arc_sweep) / (steps * step) - 1e-6))); };
+    m.chord[e] = intervals(1);
+    m.target[e] = m.chord[e];
+    m.relaxed[e] = intervals(arc.outside ? 1 : kMeshEdgeArcSteps);
+    m.relaxable = m.relaxable || m.relaxed[e] < m.chord[e];
+  }
+  return m;
+}
+
+}  // namespace
+
 MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecomposition& d, const MeshOptions& options) {
   if (!face.is_general()) throw std::logic_error("mesh_region_decomposition: the face is rectilinear");
   if (!d.complete()) {
@@ -240,24 +270,9 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   // chord steps as the program's targets instead (IntervalOptions::edge_target), a convex arc's edge
   // turning by up to kMeshEdgeArcSteps chord steps, a hole's or a concave fillet's one as before; the
   // better mesh is kept (MeshResult::arc_targets).
-  const size_t n_edges = result.block_model.edges.size();
-  std::vector<int> chord_minimum(n_edges, 0), relaxed_minimum(n_edges, 0);
-  std::vector<double> edge_target(n_edges, 0.0);
-  bool relaxable = false;
-  for (size_t e = 0; e < n_edges; ++e) {
-    const ModelEdge& edge = result.block_model.edges[e];
-    if (edge.arc < 0) continue;
-    const CircularArc& arc = face.arcs.arcs[static_cast<size_t>(edge.arc)];
-    const double step = std::fabs(arc.sweep) / arc_chord_count(arc);
-    // The intervals that keep every one within `steps` chord steps of the arc.
-    auto intervals = [&](int steps) { return std::max(1, static_cast<int>(std::ceil(std::fabs(edge.arc_sweep) / (steps * step) - 1e-6))); };
-    chord_minimum[e] = intervals(1);
-    edge_target[e] = chord_minimum[e];
-    relaxed_minimum[e] = intervals(arc.outside ? 1 : kMeshEdgeArcSteps);
-    relaxable = relaxable || relaxed_minimum[e] < chord_minimum[e];
-  }
+  const ArcMinima minima = arc_minima(result.block_model, face.arcs);
   const BlockModel& model = result.block_model;
-  assign_arc_intervals(result, model, options, h, tolerance, chord_minimum, {});
+  assign_arc_intervals(result, model, options, h, tolerance, minima.chord, {});
   result.interval_seconds = since(start);
 
   start = std::chrono::steady_clock::now();
@@ -265,40 +280,67 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   result.merge_seconds = since(start);
 
   start = std::chrono::steady_clock::now();
-  mesh_blocks(result, model, face, d, options, h, tolerance, chord_minimum, {});
+  mesh_blocks(result, model, face, d, options, h, tolerance, minima.chord, {});
   result.mesh_seconds = since(start);
 
   start = std::chrono::steady_clock::now();
   result.quality = mesh_quality(result.mesh);
   result.conformity = check_conformity(result.mesh, loops, tolerance, face.arcs);
   result.check_seconds = since(start);
-  if (!options.arc_targets || !relaxable || !result.conformity.conformal ||
-      result.quality.min_scaled_jacobian >= kArcTargetsBelow * result.topology_bound) {
-    return result;
-  }
-  start = std::chrono::steady_clock::now();
-  MeshResult again;  // its intervals, mesh and smoothing (of result's block model)
-  try {
-    assign_arc_intervals(again, model, options, h, tolerance, relaxed_minimum, edge_target);
-    mesh_blocks(again, model, face, d, options, h, tolerance, relaxed_minimum, edge_target);
-  } catch (const InputError&) {
-    result.mesh_seconds += since(start);
-    return result;  // the fixed counts or the quad limit forbid it: the first mesh stands
-  }
-  const MeshQuality quality = mesh_quality(again.mesh);
-  if (quality.min_scaled_jacobian > result.quality.min_scaled_jacobian) {
+  auto poor = [&] {
+    return result.conformity.conformal && result.quality.min_scaled_jacobian < kArcTargetsBelow * result.topology_bound;
+  };
+  // Keeps again's mesh (of its own block model when it has one) when it is better and conformal.
+  auto keep_if_better = [&](MeshResult& again) {
+    const MeshQuality quality = mesh_quality(again.mesh);
+    if (!(quality.min_scaled_jacobian > result.quality.min_scaled_jacobian)) return false;
     Conformity conformity = check_conformity(again.mesh, loops, tolerance, face.arcs);
-    if (conformity.conformal) {
-      result.fixed = std::move(again.fixed);
-      result.intervals = std::move(again.intervals);
-      result.mesh = std::move(again.mesh);
-      result.smoothing = again.smoothing;
-      result.quality = quality;
-      result.conformity = std::move(conformity);
-      result.arc_targets = true;
+    if (!conformity.conformal) return false;
+    if (!again.block_model.blocks.empty()) result.block_model = std::move(again.block_model);
+    result.fixed = std::move(again.fixed);
+    result.intervals = std::move(again.intervals);
+    result.mesh = std::move(again.mesh);
+    result.smoothing = again.smoothing;
+    result.quality = quality;
+    result.conformity = std::move(conformity);
+    return true;
+  };
+  if (options.arc_targets && minima.relaxable && poor()) {
+    start = std::chrono::steady_clock::now();
+    MeshResult again;  // its intervals, mesh and smoothing (of result's block model)
+    try {
+      assign_arc_intervals(again, model, options, h, tolerance, minima.relaxed, minima.target);
+      mesh_blocks(again, model, face, d, options, h, tolerance, minima.relaxed, minima.target);
+      result.arc_targets = keep_if_better(again);
+    } catch (const InputError&) {
+      // the fixed counts or the quad limit forbid it: the first mesh stands
     }
+    result.mesh_seconds += since(start);
   }
-  result.mesh_seconds += since(start);
+  // A poor mesh with a part that the smooth template finished and the two-corner template would
+  // finish better (block.h, two_corner_beats_smooth) is made again with that template there (its
+  // own block model, the chord steps as minima); the better mesh is kept (MeshResult::two_corner).
+  if (options.arc_targets && poor() &&
+      std::any_of(d.finished.begin(), d.finished.end(), [&](const FinishedRegion& f) {
+        return f.is_template && two_corner_beats_smooth(f.region, d.rules);
+      })) {
+    start = std::chrono::steady_clock::now();
+    MeshResult again;
+    again.block_model = block_model(d, d.rules, q, true);
+    merge_arc_chains(again.block_model, face.arcs);
+    const ArcMinima again_minima = arc_minima(again.block_model, face.arcs);
+    try {
+      assign_arc_intervals(again, again.block_model, options, h, tolerance, again_minima.chord, {});
+      mesh_blocks(again, again.block_model, face, d, options, h, tolerance, again_minima.chord, {});
+      if (keep_if_better(again)) {
+        result.two_corner = true;
+        result.arc_targets = false;
+      }
+    } catch (const InputError&) {
+      // as above
+    }
+    result.mesh_seconds += since(start);
+  }
   return result;
 }
 

@@ -75,6 +75,7 @@ nlohmann::json mesh_report_json(const std::string& input, const RegionDecomposit
                                         r.block_model.edges.size(), d.seconds);
   report["templates"] = d.templates;
   report["intervals"]["arc_targets"] = r.arc_targets;
+  report["two_corner_templates"] = r.two_corner;
   report["smoothing"] = {{"sweeps", r.smoothing.sweeps},
                          {"moves", r.smoothing.moves},
                          {"min_scaled_jacobian_before", r.smoothing.min_before}};

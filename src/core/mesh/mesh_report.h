@@ -33,6 +33,8 @@ nlohmann::json mesh_report_json(const std::string& input, const Decomposition& d
 //          "quality" adding "bound" (scaled_jacobian_bound), "min_scaled_jacobian_over_bound",
 //          "topology_bound" (topology_jacobian_bound) and "min_scaled_jacobian_over_topology_bound",
 //          "blocks" counting the finished parts and "templates" those finished by a template,
+//          "two_corner_templates" (true when the mesh kept was made with the two-corner template
+//          where it beats the smooth one: MeshResult::two_corner), "intervals" adding "arc_targets",
 //          "smoothing": {"sweeps", "moves", "min_scaled_jacobian_before"} (mesh_smoothing.h), and
 //          "decomposition": {"complete", "cuts", "return", "time_capped", "policy_steps"}.
 nlohmann::json mesh_report_json(const std::string& input, const RegionDecomposition& decomposition,
