@@ -118,6 +118,28 @@ HexMeshQuality hex_mesh_quality(const HexMesh& mesh) {
   out.mean_scaled_jacobian /= static_cast<double>(mesh.hexes.size());
   out.mean_aspect_ratio /= static_cast<double>(mesh.hexes.size());
   std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) { return x.key < y.key; });
+  // The solid's faces that the boundary quads at each boundary edge lie on.
+  std::vector<std::pair<std::uint64_t, int>> edge_faces;
+  edge_faces.reserve(mesh.boundary.size() * 4);
+  for (const BoundaryQuad& b : mesh.boundary) {
+    const std::array<int, 4> n = hex_face_nodes(mesh.hexes[static_cast<size_t>(b.hex)], b.side);
+    for (size_t i = 0; i < 4; ++i) {
+      const auto na = static_cast<std::uint64_t>(static_cast<std::uint32_t>(n[i]));
+      const auto nb = static_cast<std::uint64_t>(static_cast<std::uint32_t>(n[(i + 1) % 4]));
+      edge_faces.emplace_back(std::min(na, nb) << 32 | std::max(na, nb), b.face);
+    }
+  }
+  std::sort(edge_faces.begin(), edge_faces.end());
+  // True when the boundary quads at the edge all lie on one face of the solid (a cylinder's chords too).
+  auto inside_one_face = [&](std::uint64_t key) {
+    auto it = std::lower_bound(edge_faces.begin(), edge_faces.end(), std::make_pair(key, std::numeric_limits<int>::min()));
+    if (it == edge_faces.end() || it->first != key) return false;
+    const int face = it->second;
+    for (; it != edge_faces.end() && it->first == key; ++it) {
+      if (it->second != face) return false;
+    }
+    return true;
+  };
   constexpr double kFlat = 1e-6;  // radians
   for (size_t k = 0; k < uses.size();) {
     int count = 0;
@@ -129,7 +151,8 @@ HexMeshQuality hex_mesh_quality(const HexMesh& mesh) {
     }
     ++out.edges;
     const bool interior = std::fabs(angle - 2 * M_PI) < kFlat;
-    const int structured = interior ? 4 : angle < M_PI - kFlat ? 1 : angle <= M_PI + kFlat ? 2 : 3;
+    const bool flat = std::fabs(angle - M_PI) <= kSmoothJoin || inside_one_face(key);
+    const int structured = interior ? 4 : flat ? 2 : angle < M_PI ? 1 : 3;
     out.interior_edges += interior;
     if (count != structured) {
       ++out.irregular_edges;

@@ -9,16 +9,23 @@
 //   skew             the largest |cos| between two normalised principal axes (Verdict): 0 for a box.
 // An edge of the mesh is irregular when the number of hexahedra around it differs from the
 // structured one: 4 inside the solid (the hexahedra's angles at the edge add up to 360 degrees); on its
-// boundary, by the solid's dihedral angle there (those angles summed), 1 at a convex edge (below 180
-// degrees: a box's edge, or an oblique sweep's 60 and 120 degree edges), 2 on a flat face, 3 at a
-// re-entrant edge (above 180 degrees).
+// boundary 2 where the surface is smooth: inside one face of the solid (the mesh's boundary quads on
+// both sides of the edge lie on the same face, HexMesh::boundary: a cylinder's chords meet at 165 or
+// 195 degrees there) or where the angle is within kSmoothJoin of 180 degrees (a cylinder's tangent
+// join with a plane); else, by the solid's dihedral angle there (the hexahedra's angles summed), 1 at a
+// convex edge (a box's edge, or an oblique sweep's 60 and 120 degree edges) and 3 at a re-entrant one.
 #pragma once
 
 #include <array>
+#include <cmath>
 
 #include "core/mesh/hex_mesh.h"
 
 namespace autoblock {
+
+// A boundary edge whose dihedral angle is within this of 180 degrees is smooth (radians): more than
+// half the turn of a mesh edge along a convex arc (kMeshEdgeArcSteps chord steps of 15 degrees).
+constexpr double kSmoothJoin = 25.0 * M_PI / 180.0;
 
 struct HexQuality {
   double scaled_jacobian = 0.0, aspect_ratio = 0.0, skew = 0.0;

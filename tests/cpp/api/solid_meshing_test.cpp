@@ -189,6 +189,10 @@ TEST_CASE("swept solids with cylinder sides (drilled holes, rounded edges): conf
     CHECK(raw + gap * 2.5 == Approx(e.volume).epsilon(1e-6));
     CHECK(m.conformity.hex_volume == Approx(e.volume).epsilon(1e-6));
     check_blocks(m, 1e-6);
+    // A cylinder is smooth: two hexahedra along the edge between two of its chords (at 165 or 195
+    // degrees) and at its tangent joins with planes are structured, so the irregular edges are the
+    // cap's irregular vertices swept, all inside.
+    CHECK(m.quality.irregular_edges == m.quality.irregular_interior_edges);
     if (k == 0) {
       // Every layer's nodes on the holes' circles: at least the holes' 24-chord polygons' directions.
       int on = 0;
