@@ -64,7 +64,7 @@ double BlockModel::side_length(const ModelSide& side) const {
   return total;
 }
 
-BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, double quantum, bool two_corner_over_smooth) {
+BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, double quantum, bool two_corner) {
   if (!d.complete()) throw std::logic_error("block_model: the decomposition is incomplete");
   if (!(quantum > 0.0)) throw std::logic_error("block_model: the quantum must be positive");
   BlockModel model;
@@ -84,7 +84,7 @@ BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, do
     const FinishedRegion& part = d.finished[f];
     std::vector<QuadPiece> quads;
     if (part.is_template) {
-      quads = template_pieces(part.region, rules, two_corner_over_smooth);
+      quads = template_pieces(part.region, rules, two_corner);
     } else {
       quads.push_back(QuadPiece{part.region.outer(), part.corners});
     }

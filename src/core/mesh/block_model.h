@@ -60,14 +60,14 @@ struct BlockModel {
 };
 
 // Inputs:  decomposition, complete; rules, the block rules it was made with (side vertices);
-//          quantum, the face's lattice spacing (Region::quantum); two_corner_over_smooth, as
-//          template_pieces takes it (block.h).
+//          quantum, the face's lattice spacing (Region::quantum); two_corner, as template_pieces
+//          takes it (block.h).
 // Outputs: the model above, blocks part by part in the decomposition's order (a template's pieces
 //          in template_pieces's order).
 // Throws std::logic_error when the pieces do not fit together (an edge used by more than two
 // pieces, a corner lost).
 BlockModel block_model(const RegionDecomposition& decomposition, const BlockRules& rules, double quantum,
-                       bool two_corner_over_smooth = false);
+                       bool two_corner = false);
 
 // Along an arc of the face's boundary every sample of its polygon is a model vertex, so each chord
 // would get its own whole number of intervals and the nodes would bunch where chords round up. This

@@ -317,12 +317,12 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     }
     result.mesh_seconds += since(start);
   }
-  // A poor mesh with a part that the smooth template finished and the two-corner template would
-  // finish better (block.h, two_corner_beats_smooth) is made again with that template there (its
-  // own block model, the chord steps as minima); the better mesh is kept (MeshResult::two_corner).
-  if (options.arc_targets && poor() &&
+  // A poor mesh with a template part that the two-corner template would finish better (block.h,
+  // two_corner_improves) is made again with that template there (its own block model, the chord
+  // steps as minima); the better mesh is kept (MeshResult::two_corner).
+  if (options.two_corner && poor() &&
       std::any_of(d.finished.begin(), d.finished.end(), [&](const FinishedRegion& f) {
-        return f.is_template && two_corner_beats_smooth(f.region, d.rules);
+        return f.is_template && two_corner_improves(f.region, d.rules);
       })) {
     start = std::chrono::steady_clock::now();
     MeshResult again;

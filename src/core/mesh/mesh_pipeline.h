@@ -47,9 +47,11 @@ struct MeshOptions {
   // conformity check against the face's loops), so meshing a face alone can leave this off.
   bool occt_model = true;
   // A general face's poor mesh with a convex arc is made again with the arcs' chord steps as targets
-  // (kArcTargetsBelow, MeshResult::arc_targets), and one with a part the two-corner template finishes
-  // better than the smooth one again with it (MeshResult::two_corner); false: the first mesh only.
+  // (kArcTargetsBelow, MeshResult::arc_targets); false: not.
   bool arc_targets = true;
+  // A general face's poor mesh with a template part that the two-corner template finishes better is
+  // made again with it there (MeshResult::two_corner); false: not.
+  bool two_corner = true;
 };
 
 struct MeshResult {
@@ -73,7 +75,7 @@ struct MeshResult {
   // targets rather than its minima (mesh_region_decomposition).
   bool arc_targets = false;
   // A general face's: the mesh kept was made with the two-corner template on the parts where it beats
-  // the smooth template (block.h, two_corner_beats_smooth; mesh_region_decomposition).
+  // the template's default pieces (block.h, two_corner_improves; mesh_region_decomposition).
   bool two_corner = false;
 };
 

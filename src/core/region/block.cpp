@@ -829,14 +829,6 @@ bool two_corner_template(const Region& region, const BlockRules& rules) {
   return applicable_two_corner_template(region, rules).has_value();
 }
 
-bool two_corner_beats_smooth(const Region& region, const BlockRules& rules) {
-  if (!region.holes().empty()) return false;
-  const std::optional<std::vector<QuadPiece>> smooth = applicable_smooth_template(region, rules);
-  if (!smooth) return false;
-  const std::optional<ScoredPieces> two = applicable_two_corner_template(region, rules);
-  return two && two->score > pieces_patch_jacobian(*smooth);
-}
-
 bool ogrid_template(const Region& region, const BlockRules& rules) {
   return applicable_ogrid_template(region, rules).has_value();
 }
@@ -918,25 +910,29 @@ std::vector<QuadPiece> usual_template_pieces(const Region& region, const BlockRu
 
 }  // namespace
 
-std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& rules, bool two_corner_over_smooth) {
+std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& rules, bool two_corner) {
   if (!region.holes().empty()) {
     if (std::optional<std::vector<QuadPiece>> ogrid = applicable_ogrid_template(region, rules)) return std::move(*ogrid);
     throw std::logic_error("template_pieces: a part with holes takes only the O-grid template");
   }
-  if (std::optional<std::vector<QuadPiece>> smooth = applicable_smooth_template(region, rules)) {
-    if (two_corner_over_smooth) {
-      std::optional<ScoredPieces> two = applicable_two_corner_template(region, rules);
-      if (two && two->score > pieces_patch_jacobian(*smooth)) return std::move(two->pieces);
-    }
-    return std::move(*smooth);
+  std::optional<std::vector<QuadPiece>> pieces = applicable_smooth_template(region, rules);
+  if (!pieces) pieces = usual_template_pieces(region, rules);
+  // A part with two corners, asked to: the two-corner template where it beats the smooth template or
+  // the usual template's fallback corners.
+  if (two_corner) {
+    std::optional<ScoredPieces> two = applicable_two_corner_template(region, rules);
+    if (two && two->score > pieces_patch_jacobian(*pieces)) return std::move(two->pieces);
   }
-  std::vector<QuadPiece> usual = usual_template_pieces(region, rules);
-  // A part with two corners: the two-corner template where it beats the usual template's fallback
-  // corners.
-  if (std::optional<ScoredPieces> two = applicable_two_corner_template(region, rules)) {
-    if (two->score > pieces_patch_jacobian(usual)) return std::move(two->pieces);
-  }
-  return usual;
+  return std::move(*pieces);
+}
+
+bool two_corner_improves(const Region& region, const BlockRules& rules) {
+  if (!region.holes().empty()) return false;
+  const std::optional<ScoredPieces> two = applicable_two_corner_template(region, rules);
+  if (!two) return false;
+  std::optional<std::vector<QuadPiece>> pieces = applicable_smooth_template(region, rules);
+  if (!pieces) pieces = usual_template_pieces(region, rules);
+  return two->score > pieces_patch_jacobian(*pieces);
 }
 
 std::vector<std::array<Point2, 4>> template_quads(const Region& region, const BlockRules& rules) {

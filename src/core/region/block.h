@@ -144,15 +144,15 @@ bool smooth_template(const Region& region, const BlockRules& rules = {});
 // other. Of a few such placements (f, how far across, how far drawn) the one whose pieces' Coons
 // patches have the best least scaled Jacobian is made, when every piece is a convex quadrilateral of
 // corners with angles in [20, 160] degrees and the spokes keep clear of the boundary. template_pieces
-// makes it where the smooth template does not apply and it beats the usual template's fallback
-// corners by that same measure; asked to (two_corner_over_smooth), also where the smooth template
-// applies and it beats that: what a poor mesh is made again with (mesh_region_decomposition). (Made
-// so by default it changed the search's rewards, and the searches' other paths lost badly on some faces.)
+// makes it, asked to (two_corner), where it beats the smooth template or the usual template's
+// fallback corners by that same measure: a poor mesh is made again so (mesh_region_decomposition).
+// It is not the template's default, which the search's rewards value: made so, it raised the mean
+// over the benchmark's faces, but the searches took other paths and lost badly on a few faces.
 // Inputs: region; rules. Output: true when the two-corner template applies.
 bool two_corner_template(const Region& region, const BlockRules& rules = {});
-// Inputs: region; rules. Output: true when the smooth template applies and the two-corner template's
-//         pieces score better (template_pieces with two_corner_over_smooth makes the two-corner one).
-bool two_corner_beats_smooth(const Region& region, const BlockRules& rules = {});
+// Inputs: region; rules. Output: true when the two-corner template applies and its pieces score better
+//         than the template's default pieces (template_pieces with two_corner makes it).
+bool two_corner_improves(const Region& region, const BlockRules& rules = {});
 
 // A part with one round hole (issue 13: a circle reaches the engine as a ring of side vertices,
 // circular_arc.h), or any smooth convex one (a slot), and four convex corners of 60-120 degrees joined
@@ -198,11 +198,11 @@ CornerAngle piece_corner_angle(const QuadPiece& piece, int k);
 //          foot on that side, to the centre, to the foot on the side that ends at corner k, and back
 //          along the boundary. A foot within the region's quantum of a side vertex is that vertex.
 //          The pieces' loops share their spokes (foot to centre) exactly. A smooth part's template
-//          (smooth_template), a part with two corners (two_corner_template) and the O-grid
-//          (ogrid_template) give their own pieces instead; two_corner_over_smooth: the two-corner
-//          template's also where it beats the smooth template's. Throws std::logic_error for a part with
-//          holes that the O-grid does not take.
-std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& rules = {}, bool two_corner_over_smooth = false);
+//          (smooth_template) and the O-grid (ogrid_template) give their own pieces instead;
+//          two_corner: a part with two corners the two-corner template's where it scores better
+//          (two_corner_improves). Throws std::logic_error for a part with holes that the O-grid does
+//          not take.
+std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& rules = {}, bool two_corner = false);
 
 // The best minimum scaled Jacobian any all-quad mesh of a face can have, set by its corners: k quads
 // meeting at a boundary corner of interior angle t split it into angles summing to t, the best being

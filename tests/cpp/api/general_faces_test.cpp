@@ -315,29 +315,31 @@ TEST_CASE("a wedge rounded at both ends: the last try cuts it, and its mesh is k
   CHECK(d.region.rules.cut_smooth_parts);
 }
 
-TEST_CASE("a cap with two corners over a rounded top: the two-corner template, not a corner on the arc",
+TEST_CASE("a cap with two corners over a rounded top: its poor mesh made again with the two-corner template",
           "[api][general][mesh][arc]") {
   // Face 159 of the arc benchmark (`autoblock generate --kind arcs --seed 20261202`): the search cuts
   // across it and leaves a cap whose only corners are the cut's ends, its top a chain of arcs and
-  // edges. The smooth template folds on it; the usual template's fallback put a third corner on the
-  // top where the boundary turns by 12 degrees, and a quad there had an angle of 168 degrees (min
+  // edges. The smooth template folds on it; the usual template's fallback puts a third corner on the
+  // top where the boundary turns by 12 degrees, and a quad there has an angle of 168 degrees (min
   // scaled Jacobian 0.21). The two-corner template keeps the cut's ends whole and puts its two
   // three-valent vertices inside.
   const InputFace face = arc_test_face("rounded-cap");
-  DecomposeSettings settings = untimed_settings();
-  const FaceMeshing m = mesh_input_face(face, settings, MeshOptions{});
+  const FaceMeshing m = mesh_input_face(face, untimed_settings(), MeshOptions{});
   REQUIRE(m.result.conformity.conformal);
+  CHECK(m.result.two_corner);
+  const RegionDecomposition& d = m.decomposition.region;
   int caps = 0;
-  for (const FinishedRegion& part : m.decomposition.region.finished) {
-    if (!part.is_template || !two_corner_template(part.region, m.decomposition.region.rules)) continue;
+  for (const FinishedRegion& part : d.finished) {
+    if (!part.is_template || !two_corner_improves(part.region, d.rules)) continue;
     ++caps;
-    CHECK(template_pieces(part.region, m.decomposition.region.rules).size() == 4);
+    CHECK(template_pieces(part.region, d.rules, true).size() == 4);
+    CHECK(template_pieces(part.region, d.rules).size() == 3);  // the usual template, a fallback corner
   }
   CHECK(caps >= 1);
   CHECK(m.result.quality.min_scaled_jacobian > 0.8 * m.result.topology_bound);
 }
 
-TEST_CASE("a poor mesh is made again with the two-corner template where it beats the disk's", "[api][general][mesh][arc]") {
+TEST_CASE("a poor mesh is made again with the two-corner template where it beats the disk's too", "[api][general][mesh][arc]") {
   // Face 1 of the arc benchmark (`autoblock generate --kind arcs --seed 20261202`): a part with two
   // corners holds a rounded acute tip, and the disk's template takes it (its spokes split both
   // corners); its mesh was 0.51 of the bound, gmsh's 0.61. The two-corner template's pieces score
@@ -349,13 +351,14 @@ TEST_CASE("a poor mesh is made again with the two-corner template where it beats
   CHECK(face_meshing_json("tip", m)["two_corner_templates"] == true);
   const RegionDecomposition& d = m.decomposition.region;
   CHECK(std::any_of(d.finished.begin(), d.finished.end(),
-                    [&](const FinishedRegion& f) { return f.is_template && two_corner_beats_smooth(f.region, d.rules); }));
+                    [&](const FinishedRegion& f) { return f.is_template && two_corner_improves(f.region, d.rules); }));
   // The same blocks, meshed once without the second meshes: the disk's template, worse.
   MeshOptions options;
   options.occt_model = false;
   options.min_edge_intervals = d.min_edge_intervals;
   options.general.reward = d.reward;
   options.arc_targets = false;
+  options.two_corner = false;
   const MeshResult first = mesh_region_decomposition(face, d, options);
   REQUIRE(first.conformity.conformal);
   CHECK_FALSE(first.two_corner);
@@ -378,6 +381,7 @@ TEST_CASE("a rounded acute tip: the arcs' chord steps as targets, not minima, ke
   options.min_edge_intervals = d.region.min_edge_intervals;
   options.general.reward = d.region.reward;
   options.arc_targets = false;
+  options.two_corner = false;  // the same block model in both meshes
   const MeshResult minima = mesh_region_decomposition(face, d.region, options);
   REQUIRE(minima.conformity.conformal);
   CHECK_FALSE(minima.arc_targets);

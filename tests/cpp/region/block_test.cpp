@@ -319,7 +319,9 @@ TEST_CASE("a part with two corners: the two-corner template keeps them whole, tw
   CHECK_FALSE(smooth_template(part));
   REQUIRE(template_applies(part));
   REQUIRE(two_corner_template(part));
-  const std::vector<QuadPiece> pieces = template_pieces(part);
+  REQUIRE(two_corner_improves(part));
+  CHECK(template_pieces(part).size() == 3);  // by default the usual template, a corner on the arc
+  const std::vector<QuadPiece> pieces = template_pieces(part, {}, true);
   REQUIRE(pieces.size() == 4);
   double area = 0;
   std::map<std::pair<double, double>, int> interior;  // a corner off the boundary, and how many pieces hold it
