@@ -87,6 +87,17 @@ HexQuality hex_quality(const std::array<Point3, 8>& p) {
   return q;
 }
 
+namespace {
+
+// An edge's key: its two node numbers, the lower first.
+std::uint64_t edge_key(int a, int b) {
+  const auto na = static_cast<std::uint64_t>(static_cast<std::uint32_t>(a));
+  const auto nb = static_cast<std::uint64_t>(static_cast<std::uint32_t>(b));
+  return std::min(na, nb) << 32 | std::max(na, nb);
+}
+
+}  // namespace
+
 HexMeshQuality hex_mesh_quality(const HexMesh& mesh) {
   if (mesh.hexes.empty()) throw std::logic_error("hex_mesh_quality: no hexahedron");
   HexMeshQuality out;
@@ -109,9 +120,7 @@ HexMeshQuality hex_mesh_quality(const HexMesh& mesh) {
     for (int a = 0; a < 8; ++a) {
       for (int b : kNeighbours[a]) {
         if (b < a) continue;  // each of the 12 edges once
-        const auto na = static_cast<std::uint64_t>(static_cast<std::uint32_t>(mesh.hexes[h][static_cast<size_t>(a)]));
-        const auto nb = static_cast<std::uint64_t>(static_cast<std::uint32_t>(mesh.hexes[h][static_cast<size_t>(b)]));
-        uses.push_back({std::min(na, nb) << 32 | std::max(na, nb), dihedral(p, a, b)});
+        uses.push_back({edge_key(mesh.hexes[h][static_cast<size_t>(a)], mesh.hexes[h][static_cast<size_t>(b)]), dihedral(p, a, b)});
       }
     }
   }
@@ -123,11 +132,7 @@ HexMeshQuality hex_mesh_quality(const HexMesh& mesh) {
   edge_faces.reserve(mesh.boundary.size() * 4);
   for (const BoundaryQuad& b : mesh.boundary) {
     const std::array<int, 4> n = hex_face_nodes(mesh.hexes[static_cast<size_t>(b.hex)], b.side);
-    for (size_t i = 0; i < 4; ++i) {
-      const auto na = static_cast<std::uint64_t>(static_cast<std::uint32_t>(n[i]));
-      const auto nb = static_cast<std::uint64_t>(static_cast<std::uint32_t>(n[(i + 1) % 4]));
-      edge_faces.emplace_back(std::min(na, nb) << 32 | std::max(na, nb), b.face);
-    }
+    for (size_t i = 0; i < 4; ++i) edge_faces.emplace_back(edge_key(n[i], n[(i + 1) % 4]), b.face);
   }
   std::sort(edge_faces.begin(), edge_faces.end());
   // True when the boundary quads at the edge all lie on one face of the solid (a cylinder's chords too).
@@ -151,7 +156,7 @@ HexMeshQuality hex_mesh_quality(const HexMesh& mesh) {
     }
     ++out.edges;
     const bool interior = std::fabs(angle - 2 * M_PI) < kFlat;
-    const bool flat = std::fabs(angle - M_PI) <= kSmoothJoin || inside_one_face(key);
+    const bool flat = !interior && (std::fabs(angle - M_PI) <= kSmoothJoin || inside_one_face(key));
     const int structured = interior ? 4 : flat ? 2 : angle < M_PI ? 1 : 3;
     out.interior_edges += interior;
     if (count != structured) {

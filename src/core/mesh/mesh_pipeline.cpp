@@ -290,13 +290,13 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   auto poor = [&] {
     return result.conformity.conformal && result.quality.min_scaled_jacobian < kArcTargetsBelow * result.topology_bound;
   };
-  // Keeps again's mesh (of its own block model when it has one) when it is better and conformal.
-  auto keep_if_better = [&](MeshResult& again) {
+  // Keeps again's mesh (and, with own_model, its block model) when it is better and conformal.
+  auto keep_if_better = [&](MeshResult& again, bool own_model) {
     const MeshQuality quality = mesh_quality(again.mesh);
     if (!(quality.min_scaled_jacobian > result.quality.min_scaled_jacobian)) return false;
     Conformity conformity = check_conformity(again.mesh, loops, tolerance, face.arcs);
     if (!conformity.conformal) return false;
-    if (!again.block_model.blocks.empty()) result.block_model = std::move(again.block_model);
+    if (own_model) result.block_model = std::move(again.block_model);
     result.fixed = std::move(again.fixed);
     result.intervals = std::move(again.intervals);
     result.mesh = std::move(again.mesh);
@@ -311,7 +311,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     try {
       assign_arc_intervals(again, model, options, h, tolerance, minima.relaxed, minima.target);
       mesh_blocks(again, model, face, d, options, h, tolerance, minima.relaxed, minima.target);
-      result.arc_targets = keep_if_better(again);
+      result.arc_targets = keep_if_better(again, false);
     } catch (const InputError&) {
       // the fixed counts or the quad limit forbid it: the first mesh stands
     }
@@ -332,7 +332,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     try {
       assign_arc_intervals(again, again.block_model, options, h, tolerance, again_minima.chord, {});
       mesh_blocks(again, again.block_model, face, d, options, h, tolerance, again_minima.chord, {});
-      if (keep_if_better(again)) {
+      if (keep_if_better(again, true)) {
         result.two_corner = true;
         result.arc_targets = false;
       }

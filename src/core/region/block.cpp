@@ -910,29 +910,35 @@ std::vector<QuadPiece> usual_template_pieces(const Region& region, const BlockRu
 
 }  // namespace
 
+namespace {
+
+// A part without holes: the template's default pieces (the smooth template's, else the usual one's).
+std::vector<QuadPiece> default_template_pieces(const Region& region, const BlockRules& rules) {
+  if (std::optional<std::vector<QuadPiece>> smooth = applicable_smooth_template(region, rules)) return std::move(*smooth);
+  return usual_template_pieces(region, rules);
+}
+
+}  // namespace
+
 std::vector<QuadPiece> template_pieces(const Region& region, const BlockRules& rules, bool two_corner) {
   if (!region.holes().empty()) {
     if (std::optional<std::vector<QuadPiece>> ogrid = applicable_ogrid_template(region, rules)) return std::move(*ogrid);
     throw std::logic_error("template_pieces: a part with holes takes only the O-grid template");
   }
-  std::optional<std::vector<QuadPiece>> pieces = applicable_smooth_template(region, rules);
-  if (!pieces) pieces = usual_template_pieces(region, rules);
+  std::vector<QuadPiece> pieces = default_template_pieces(region, rules);
   // A part with two corners, asked to: the two-corner template where it beats the smooth template or
   // the usual template's fallback corners.
   if (two_corner) {
     std::optional<ScoredPieces> two = applicable_two_corner_template(region, rules);
-    if (two && two->score > pieces_patch_jacobian(*pieces)) return std::move(two->pieces);
+    if (two && two->score > pieces_patch_jacobian(pieces)) return std::move(two->pieces);
   }
-  return std::move(*pieces);
+  return pieces;
 }
 
 bool two_corner_improves(const Region& region, const BlockRules& rules) {
   if (!region.holes().empty()) return false;
   const std::optional<ScoredPieces> two = applicable_two_corner_template(region, rules);
-  if (!two) return false;
-  std::optional<std::vector<QuadPiece>> pieces = applicable_smooth_template(region, rules);
-  if (!pieces) pieces = usual_template_pieces(region, rules);
-  return two->score > pieces_patch_jacobian(*pieces);
+  return two && two->score > pieces_patch_jacobian(default_template_pieces(region, rules));
 }
 
 std::vector<std::array<Point2, 4>> template_quads(const Region& region, const BlockRules& rules) {
