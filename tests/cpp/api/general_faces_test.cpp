@@ -452,7 +452,7 @@ TEST_CASE("a policy whose blocks do not mesh: mesh makes the search's tries inst
   CHECK_FALSE(face_meshing_json("plate", mesh_input_face(face, DecomposeSettings{}, MeshOptions{})).contains("policy_fallback"));
 }
 
-TEST_CASE("decompose keeps the decomposition mesh keeps; its cuts, replayed under its rules, mesh the same",
+TEST_CASE("decompose keeps the decomposition mesh keeps, its cuts, replayed under its rules, mesh the same",
           "[api][general][mesh]") {
   // The hexagon above, whose first try is poor: the tries keep another width, other rules or finer
   // edges, and what decompose returns (what the workbench stores) must carry them.
@@ -512,7 +512,7 @@ TEST_CASE("general faces: grid-only actions and the paper's agent say so", "[api
   CHECK_THROWS_AS(face_step(face, {}, 0), InputError);
 }
 
-TEST_CASE("a lookahead agent's trained policy decomposes general faces by name; the paper's agent is refused",
+TEST_CASE("a lookahead agent's trained policy decomposes general faces by name, the paper's agent is refused",
           "[api][general][learned]") {
   // The shipped sac-mesh and sac-paper are lookahead agents (sac/region_lookahead_policy.h); the
   // shipped sac-faithful is the paper's agent, which has no general-face version.
@@ -545,7 +545,7 @@ TEST_CASE("a lookahead agent's trained policy decomposes general faces by name; 
   CHECK_THROWS_AS(decompose_input_face(face, settings), InputError);
 }
 
-TEST_CASE("vertex scores on a general face: the policy's chosen vertex scores highest; baselines and the paper's agent say why not",
+TEST_CASE("vertex scores on a general face: the policy's chosen vertex scores highest, baselines and the paper's agent say why not",
           "[api][general][learned][scores]") {
   const InputFace face = check_face(general_face(1302, GeneralKind::Polygon, true), "polygon");
   REQUIRE(face.is_general());

@@ -160,7 +160,7 @@ TEST_CASE("autoblock train: bad options and data get exit 2 and a one-line error
   CHECK_FALSE(std::filesystem::exists(folder + "/p.pt"));
 }
 
-TEST_CASE("autoblock combine: one policy file, one network per kind of face; bad requests write nothing",
+TEST_CASE("autoblock combine: one policy file, one network per kind of face, bad requests write nothing",
           "[cli][combine][train]") {
   const std::string folder = test::temporary_folder("cli-combine");
   const auto r = test::run_autoblock("combine --grid sac-mesh --general sac-mesh --out '" + folder + "/both.pt'");

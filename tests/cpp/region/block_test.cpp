@@ -465,7 +465,7 @@ Ring rounded_corner_rectangle() {
 
 }  // namespace
 
-TEST_CASE("convex arcs: a fillet running on into straight edges is cut square at its ends; its sector is no such run",
+TEST_CASE("convex arcs: a fillet running on into straight edges is cut square at its ends, its sector is no such run",
           "[region][block][arc]") {
   const Ring rounded = rounded_corner_rectangle();
   std::vector<ArcRun> runs = convex_runs(rounded);

@@ -261,7 +261,7 @@ TEST_CASE("score_candidates keeping the best k: the same k best as scoring every
   CHECK(tapered > 0);   // some cuts leave blocks that taper more than kMeshTaperFrom
 }
 
-TEST_CASE("a convex fillet: its open ends count as corners, cut square to the edges; its sector takes the template",
+TEST_CASE("a convex fillet: its open ends count as corners, cut square to the edges, its sector takes the template",
           "[region][policy][arc]") {
   // A 10 x 6 rectangle whose top-right corner is rounded with radius 2 (centre (8, 4); samples every 15
   // degrees). Three corners and the fillet's two open ends: complexity 5.

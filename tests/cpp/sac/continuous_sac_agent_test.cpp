@@ -193,7 +193,7 @@ TEST_CASE("the replay buffer keeps the angle and the template rewards, and reads
   CHECK_THROWS_AS(ReplayBuffer::deserialize(bad.serialize()), InputError);
 }
 
-TEST_CASE("the paper agent's policy on general faces round-trips its file; older files have none", "[sac][continuous][policy]") {
+TEST_CASE("the paper agent's policy on general faces round-trips its file, older files have none", "[sac][continuous][policy]") {
   torch::manual_seed(13);
   SacConfig config = default_sac_config("paper");
   config.reward = RewardPreset::Mesh;

@@ -68,7 +68,7 @@ TEST_CASE("the cut proposer learns the best angle of a bandit from exact values"
   CHECK(after < 0.15);
 }
 
-TEST_CASE("the cut proposer's weights survive a save and load; an archive without them is told", "[sac][proposals]") {
+TEST_CASE("the cut proposer's weights survive a save and load, an archive without them is told", "[sac][proposals]") {
   torch::manual_seed(32);
   CutProposer first(proposing_config(2));
   torch::manual_seed(33);
@@ -99,7 +99,7 @@ TEST_CASE("the cut proposer's weights survive a save and load; an archive withou
   CHECK(mean_angle(first, o) == mean_angle(second, o));  // unchanged
 }
 
-TEST_CASE("a checkpoint without the proposal actor is refused by an agent with proposals; as an initial policy it is not",
+TEST_CASE("a checkpoint without the proposal actor is refused by an agent with proposals, as an initial policy it is not",
           "[sac][proposals]") {
   torch::manual_seed(39);
   LookaheadAgent plain(proposing_config(0));
@@ -125,7 +125,7 @@ TEST_CASE("a checkpoint without the proposal actor is refused by an agent with p
   CHECK_NOTHROW(proposing.load(in, false));  // --init: the value network loads, the actor stays as it was
 }
 
-TEST_CASE("region_candidate: a listed cut made again gives the listed candidate; no progress gives nothing",
+TEST_CASE("region_candidate: a listed cut made again gives the listed candidate, no progress gives nothing",
           "[sac][proposals][region]") {
   const auto lock = lock_general_engine();
   const Region part = test::region_of(test::general_polygon(1310, GeneralKind::Polygon, true));
@@ -289,7 +289,7 @@ TEST_CASE("actor_candidates and learn_value: defaults, files without them, range
   CHECK_THROWS_AS(with_settings(defaults, {"actor_candidates=-1"}), InputError);
 }
 
-TEST_CASE("a policy file with proposals rebuilds them; the same decisions after loading", "[sac][proposals][region]") {
+TEST_CASE("a policy file with proposals rebuilds them, the same decisions after loading", "[sac][proposals][region]") {
   torch::manual_seed(37);
   auto agent = std::make_shared<LookaheadAgent>(proposing_config(2));
   std::mt19937_64 rng(38);

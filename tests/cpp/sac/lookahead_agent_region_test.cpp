@@ -88,7 +88,7 @@ TEST_CASE("trained on a general part shown at random angles, the value network a
   for (const double v : w) CHECK(v == Approx(target).margin(0.15 * std::abs(target) + 0.5));
 }
 
-TEST_CASE("a replay memory with general parts survives its bytes; old and corrupt bytes", "[sac][lookahead][region]") {
+TEST_CASE("a replay memory with general parts survives its bytes, old and corrupt bytes", "[sac][lookahead][region]") {
   torch::manual_seed(14);
   auto agent = std::make_shared<LookaheadAgent>(mesh_config());
   const Region face = test::region_of(test::general_polygon(1302, GeneralKind::Chamfered, true));
@@ -135,7 +135,7 @@ TEST_CASE("a training episode on a general face ends in blocks and remembers its
   CHECK(agent->deployed_region_policy("x") != nullptr);
 }
 
-TEST_CASE("region_taper: off by default and in files without it; on, the agent's general states carry the charge",
+TEST_CASE("region_taper: off by default and in files without it, on, the agent's general states carry the charge",
           "[sac][lookahead][region][config]") {
   SacConfig config = mesh_config();
   CHECK_FALSE(config.region_taper);
