@@ -5,7 +5,13 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <Geom_Circle.hxx>
+#include <gp_Ax2.hxx>
+#include <gp_Circ.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <TopLoc_Location.hxx>
@@ -31,6 +37,7 @@
 #include "core/common/error.h"
 #include "core/common/format.h"
 #include "core/geometry/circular_arc.h"
+#include "core/geometry/edge_curve.h"
 #include "core/geometry/tolerance.h"
 #include "core/geometry/validate_polygon.h"
 
@@ -133,8 +140,10 @@ FaceRings read_face_rings(const TopoDS_Face& face) {
   FaceRings result;
   result.normal_up = normal.Z() > 0;
   result.z = plane.Location().Z();
+  result.approximate = BRepAdaptor_Surface(face, false).GetType() != GeomAbs_Plane;
 
   const double tol = face_tolerance(face);
+  const double face_size = tol / kRelativeTolerance;
   const TopoDS_Wire outer = BRepTools::OuterWire(face);
   int inner_count = 0;
   // Each wire's edges in order: the start point, its z, and the arc it begins (index into arcs) or -1.
@@ -142,6 +151,7 @@ FaceRings read_face_rings(const TopoDS_Face& face) {
     Point2 start;
     double z = 0.0;
     int arc = -1;
+    double tolerance = 0.0;  // the start vertex's
   };
   std::vector<std::vector<Entry>> wire_entries;
   for (TopExp_Explorer wires(face, TopAbs_WIRE); wires.More(); wires.Next()) {
@@ -159,42 +169,46 @@ FaceRings read_face_rings(const TopoDS_Face& face) {
       if (BRep_Tool::Degenerated(edge)) continue;
       ++walked;
       const gp_Pnt start = BRep_Tool::Pnt(walk.CurrentVertex());
-      BRepAdaptor_Curve curve(edge);
-      if (curve.GetType() == GeomAbs_Circle) {
-        // A circular arc: its samples (all but the last, the next edge's start) and the arc itself.
-        const gp_Circ circle = curve.Circle();
-        const bool reversed = edge.Orientation() == TopAbs_REVERSED;
-        const double u0 = reversed ? curve.LastParameter() : curve.FirstParameter();
-        const double u1 = reversed ? curve.FirstParameter() : curve.LastParameter();
-        const double axis = circle.Axis().Direction().Z() > 0 ? 1.0 : -1.0;
-        const gp_Pnt p0 = curve.Value(u0);
+      const double start_tolerance = BRep_Tool::Tolerance(walk.CurrentVertex());
+      const EdgeCurve curve = edge_curve(edge, face_size);
+      result.approximate = result.approximate || curve.recognised();
+      if (curve.shape == EdgeShape::Circle) {
+        // A circular arc (stored as a circle, or a B-spline or Bezier curve that is one: edge_curve.h):
+        // its samples (all but the last, the next edge's start) and the arc itself.
         CircularArc arc;
-        arc.center = Point2{circle.Location().X(), circle.Location().Y()};
-        arc.radius = circle.Radius();
-        arc.start = std::atan2(p0.Y() - arc.center.y, p0.X() - arc.center.x);
-        arc.sweep = axis * (u1 - u0);
+        arc.center = Point2{curve.circle.Location().X(), curve.circle.Location().Y()};
+        arc.radius = curve.circle.Radius();
+        arc.start = std::atan2(start.Y() - arc.center.y, start.X() - arc.center.x);
+        arc.sweep = circle_edge_sweep(edge, curve.circle);
         // The face lies on the left of its edges run in wire order (seen from its normal's side):
         // inside the circle when the arc runs counter-clockwise around it, seen so.
         arc.outside = (arc.sweep > 0) != result.normal_up;
         // (Its samples are added below, once the face's size says whether it is a short arc.)
-        entries.push_back({Point2{start.X(), start.Y()}, start.Z(), static_cast<int>(result.arcs.size())});
+        entries.push_back({Point2{start.X(), start.Y()}, start.Z(), static_cast<int>(result.arcs.size()), start_tolerance});
         result.arcs.push_back(arc);
         continue;
       }
-      if (curve.GetType() != GeomAbs_Line) {
+      if (curve.shape != EdgeShape::Line) {
         TopoDS_Vertex v1, v2;
         TopExp::Vertices(edge, v1, v2, true);
         const gp_Pnt a = BRep_Tool::Pnt(v1), b = BRep_Tool::Pnt(v2);
+        std::string what = with_article(curve_type_name(curve.stored));
+        if (curve.tolerance > 0) {
+          what += " that is neither a straight line nor a circular arc within its tolerance " + format_significant(curve.tolerance, 2) +
+                  " (it strays " + format_significant(curve.deviation, 2) + " from the nearest)";
+        }
         throw InputError("edge " + std::to_string(walked) + " of the " + ring.name + ", from " +
-                         format_point(a.X(), a.Y(), tol) + " to " + format_point(b.X(), b.Y(), tol) + ", is " +
-                         with_article(curve_type_name(curve.GetType())) + "; only straight edges and circular arcs are supported");
+                         format_point(a.X(), a.Y(), tol) + " to " + format_point(b.X(), b.Y(), tol) + ", is " + what +
+                         "; only straight edges and circular arcs are supported");
       }
-      entries.push_back({Point2{start.X(), start.Y()}, start.Z(), -1});
+      entries.push_back({Point2{start.X(), start.Y()}, start.Z(), -1, start_tolerance});
     }
     if (walked != edge_count || !BRep_Tool::IsClosed(wire)) {
       throw InputError("the " + ring.name + " is not a closed chain of edges");
     }
     result.rings.push_back(std::move(ring));
+    result.edges.emplace_back();
+    for (const Entry& e : entries) result.edges.back().push_back({e.start, e.arc});
     wire_entries.push_back(std::move(entries));
   }
   // The face's size: the longer side of the box of its vertices and its arcs' default samples.
@@ -208,30 +222,67 @@ FaceRings read_face_rings(const TopoDS_Face& face) {
   for (const CircularArc& arc : result.arcs) {
     for (const Point2& p : polygonise_arc(arc)) extend(p);
   }
-  const double face_size = std::max(xmax - xmin, ymax - ymin);
+  const double box_size = std::max(xmax - xmin, ymax - ymin);
   for (CircularArc& arc : result.arcs) {
-    if (short_arc(arc, face_size)) arc.chords = 1;
+    if (short_arc(arc, box_size)) arc.chords = 1;
   }
   // The loops: each straight edge's start; each arc's start and its polygon's inner points.
   for (size_t w = 0; w < wire_entries.size(); ++w) {
     for (const Entry& e : wire_entries[w]) {
       result.rings[w].points.push_back(e.start);
       result.vertex_z.push_back(e.z);
+      result.vertex_tolerance.push_back(e.tolerance);
       if (e.arc < 0) continue;
       const std::vector<Point2> polygon = polygonise_arc(result.arcs[static_cast<size_t>(e.arc)]);
       for (size_t k = 1; k + 1 < polygon.size(); ++k) {
         result.rings[w].points.push_back(polygon[k]);
         result.vertex_z.push_back(e.z);
+        result.vertex_tolerance.push_back(e.tolerance);
       }
     }
   }
   return result;
 }
 
+TopoDS_Face face_from_rings(const FaceRings& rings) {
+  const gp_Pln plane(gp_Pnt(0, 0, rings.z), gp_Dir(0, 0, rings.normal_up ? 1 : -1));
+  std::vector<TopoDS_Wire> wires;
+  for (const std::vector<FaceRings::Edge>& loop : rings.edges) {
+    std::vector<TopoDS_Vertex> vertices;
+    for (const FaceRings::Edge& e : loop) vertices.push_back(BRepBuilderAPI_MakeVertex(gp_Pnt(e.start.x, e.start.y, rings.z)));
+    BRepBuilderAPI_MakeWire wire;
+    for (size_t k = 0; k < loop.size(); ++k) {
+      const TopoDS_Vertex &a = vertices[k], &b = vertices[(k + 1) % loop.size()];
+      if (loop[k].arc < 0) {
+        wire.Add(BRepBuilderAPI_MakeEdge(a, b).Edge());
+        continue;
+      }
+      const CircularArc& arc = rings.arcs[static_cast<size_t>(loop[k].arc)];
+      const gp_Circ circle(gp_Ax2(gp_Pnt(arc.center.x, arc.center.y, rings.z), gp_Dir(0, 0, arc.sweep > 0 ? 1 : -1), gp_Dir(1, 0, 0)), arc.radius);
+      Handle(Geom_Circle) curve = new Geom_Circle(circle);
+      // Its parameter is the angle from +X about its axis (+Z when it runs counter-clockwise, else -Z):
+      // from the start as read, turning by |sweep|.
+      const double from = arc.sweep > 0 ? arc.start : -arc.start;
+      BRepBuilderAPI_MakeEdge edge(curve, a, b, from, from + std::fabs(arc.sweep));
+      if (!edge.IsDone()) throw InputError("OpenCASCADE cannot make the face's arc about " + format_point(arc.center.x, arc.center.y) + " again");
+      wire.Add(edge.Edge());
+    }
+    if (!wire.IsDone()) throw InputError("OpenCASCADE cannot make the face's wires again");
+    wires.push_back(wire.Wire());
+  }
+  if (wires.empty()) throw InputError("the face has no wire");
+  BRepBuilderAPI_MakeFace make(plane, wires[0], true);
+  for (size_t k = 1; k < wires.size(); ++k) make.Add(wires[k]);
+  if (!make.IsDone()) throw InputError("OpenCASCADE cannot make the face again from its edges");
+  return make.Face();
+}
+
 void check_vertices_on_plane(const FaceRings& rings, double tolerance) {
-  for (double z : rings.vertex_z) {
-    if (std::fabs(z - rings.z) > std::max(tolerance, 1e-7)) {
-      throw InputError("a vertex of the face lies off its plane z = " + format_number(rings.z, tolerance));
+  for (size_t k = 0; k < rings.vertex_z.size(); ++k) {
+    const double own = k < rings.vertex_tolerance.size() ? rings.vertex_tolerance[k] : 0.0;
+    if (std::fabs(rings.vertex_z[k] - rings.z) > std::max({tolerance, 1e-7, own})) {
+      throw InputError("a vertex of the face lies off its plane z = " + format_number(rings.z, tolerance) + " by " +
+                       format_significant(std::fabs(rings.vertex_z[k] - rings.z), 2));
     }
   }
 }
@@ -265,9 +316,10 @@ Placement face_frame(const TopoDS_Face& face) {
     gp_Pnt a, b;
   };
   std::vector<Line> lines;
+  const double face_size = face_tolerance(face) / kRelativeTolerance;
   for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
     const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
-    if (BRep_Tool::Degenerated(edge) || BRepAdaptor_Curve(edge).GetType() != GeomAbs_Line) continue;
+    if (BRep_Tool::Degenerated(edge) || edge_curve(edge, face_size).shape != EdgeShape::Line) continue;
     TopoDS_Vertex v1, v2;
     TopExp::Vertices(edge, v1, v2, true);
     if (v1.IsNull() || v2.IsNull()) continue;
@@ -295,7 +347,7 @@ Placement face_frame(const TopoDS_Face& face) {
     frame.translation = {origin.X(), origin.Y(), origin.Z()};
     return frame;
   }
-  const double tol = face_tolerance(face);
+  const double tol = tolerance_for_size(face_size);
   if (parallel_to_xy) {
     for (const Line& l : lines) {
       if (std::fabs(l.b.X() - l.a.X()) <= tol || std::fabs(l.b.Y() - l.a.Y()) <= tol) return Placement{};

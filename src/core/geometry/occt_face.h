@@ -21,8 +21,20 @@ struct FaceRings {
   double z = 0.0;                // the face's plane
   bool normal_up = true;         // the face's normal is +Z (false: -Z)
   std::vector<double> vertex_z;  // z of every vertex read
+  // the OpenCASCADE tolerance of each (an arc's samples: its start vertex's), as vertex_z
+  std::vector<double> vertex_tolerance;
   std::vector<CircularArc> arcs; // the circular edges, each also in its ring as its samples
                                  // (circular_arc.h: polygonise_arc without its last point)
+  // Each wire's edges in order: its start vertex, and the arc it is (index into arcs) or -1 (a line).
+  struct Edge {
+    Point2 start;
+    int arc = -1;
+  };
+  std::vector<std::vector<Edge>> edges;
+  // The face as stored is only approximately what was read: its surface is not a plane (a spline
+  // within 1e-7 of one), or an edge is a B-spline or Bezier curve read as a line or circle
+  // (edge_curve.h). Its twin from face_from_rings is what the engines and OpenCASCADE then cut.
+  bool approximate = false;
 };
 
 // Inputs:  face, any TopoDS_Face.
@@ -32,7 +44,16 @@ struct FaceRings {
 //          (naming the wire, the edge and its end points).
 FaceRings read_face_rings(const TopoDS_Face& face);
 
-// Inputs: rings, read; tolerance, the face's. Throws InputError when a vertex lies off the plane.
+// Inputs:  rings, read (read_face_rings).
+// Outputs: the face they describe in the plane z = rings.z, its normal as read: straight edges as
+//          lines, arcs as circles, each wire through the vertices read. Throws InputError when
+//          OpenCASCADE cannot make it.
+TopoDS_Face face_from_rings(const FaceRings& rings);
+
+// Inputs: rings, read; tolerance, the face's. Throws InputError when a vertex lies off the plane by
+// more than the larger of that tolerance and the vertex's own OpenCASCADE tolerance (a vertex within
+// its own tolerance of the plane is on it to OpenCASCADE too: some STEP translators leave vertices a
+// few thousandths off their faces, with tolerances that say so).
 void check_vertices_on_plane(const FaceRings& rings, double tolerance);
 
 // Inputs:  rings (at least one, as face_tolerance accepts).

@@ -189,6 +189,8 @@ InputFace input_face_from_occt(const TopoDS_Face& face, const std::string& sourc
       input.occt = face_in_frame(face, input.frame);
     }
     const FaceRings read = read_face_rings(input.occt);
+    // A face stored as splines that are a plane, lines and circles: cut and meshed as what it is.
+    if (read.approximate) input.occt = face_from_rings(read);
     input.planar.z = read.z;
     input.planar.normal_up = read.normal_up;
     if (read.arcs.empty() && rings_rectilinear(read.rings)) {

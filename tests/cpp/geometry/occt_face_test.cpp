@@ -2,16 +2,22 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRep_Builder.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <Bnd_Box.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <gp_Pln.hxx>
 #include <gp_Vec.hxx>
 
+#include <random>
 #include <string>
 
 #include "core/common/error.h"
+#include "core/data/arc_generator.h"
 #include "core/geometry/occt_properties.h"
 #include "core/geometry/occt_face.h"
 #include "support/bad_shapes.h"
@@ -99,4 +105,50 @@ TEST_CASE("coordinate noise far below the face's tolerance reads 0 in messages",
   const std::string arc = rejection(TopoDS::Face(test::bad_shapes()[0].shape));
   CHECK_THAT(arc, Contains("is an elliptical arc; only straight edges and circular arcs are supported"));
   CHECK_THAT(arc, !Contains("e+") && !Contains("e-"));
+}
+
+TEST_CASE("a vertex off the face's plane within its own OpenCASCADE tolerance is on it", "[geometry][occt][errors]") {
+  // A 10 x 5 rectangle in z = 0 whose corner (10, 5) lies 0.01 above the plane (as some STEP
+  // translators leave vertices, with tolerances that say so).
+  BRepBuilderAPI_MakePolygon polygon(gp_Pnt(0, 0, 0), gp_Pnt(10, 0, 0), gp_Pnt(10, 5, 0.01), gp_Pnt(0, 5, 0), true);
+  const TopoDS_Face face = BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), polygon.Wire(), true).Face();
+  const std::string message = rejection(face);
+  CHECK(message == "a vertex of the face lies off its plane z = 0 by 0.01");
+  // With the vertex's tolerance 0.02 the vertex is on the plane, and the face reads as the rectangle.
+  BRep_Builder builder;
+  for (TopExp_Explorer it(face, TopAbs_VERTEX); it.More(); it.Next()) {
+    const TopoDS_Vertex v = TopoDS::Vertex(it.Current());
+    if (BRep_Tool::Pnt(v).Z() > 0.005) builder.UpdateVertex(v, 0.02);
+  }
+  CHECK(rejection(face).empty());
+  const PlanarFace read = planar_face_from_occt(face);
+  CHECK(signed_area(read.polygon.outer) == Approx(50.0));
+  CHECK(read.z == Approx(0.0));
+}
+
+TEST_CASE("face_from_rings makes generated faces with arcs again: valid, the same area and arcs", "[geometry][occt][arc]") {
+  std::mt19937_64 rng(77);
+  for (int k = 0; k < 30; ++k) {
+    const ArcFace made = generate_arc_face(rng, ArcOptions{});
+    for (const bool up : {true, false}) {
+      TopoDS_Face face = made.face;
+      if (!up) face.Reverse();
+      const FaceRings read = read_face_rings(face);
+      CHECK_FALSE(read.approximate);
+      const TopoDS_Face again = face_from_rings(read);
+      INFO(made.name << (up ? ", up" : ", down"));
+      CHECK(occt_shape_valid(again));
+      CHECK(occt_area(again) == Approx(occt_area(face)).epsilon(1e-9));
+      const FaceRings reread = read_face_rings(again);
+      CHECK(reread.normal_up == up);
+      REQUIRE(reread.arcs.size() == read.arcs.size());
+      for (size_t a = 0; a < read.arcs.size(); ++a) {
+        CHECK(reread.arcs[a].sweep == Approx(read.arcs[a].sweep).epsilon(1e-9));
+        CHECK(reread.arcs[a].radius == Approx(read.arcs[a].radius).epsilon(1e-9));
+        CHECK(reread.arcs[a].outside == read.arcs[a].outside);
+      }
+      REQUIRE(reread.rings.size() == read.rings.size());
+      for (size_t r = 0; r < read.rings.size(); ++r) CHECK(reread.rings[r].points.size() == read.rings[r].points.size());
+    }
+  }
 }
