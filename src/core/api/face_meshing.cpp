@@ -89,8 +89,15 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
       first.reset();
     }
   }
+  const double time_limit = settings.policy_settings.general_time_limit;
   for (size_t k = 0; k < tries.size(); ++k) {
     if (have && ratio(out.result) >= kRetryBelow) break;
+    // A face whose searches run out of time (hundreds of parts: a plate with scores of holes) has
+    // spent what further tries would: the mesh made stands.
+    if (have && time_limit > 0.0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > kTriesTimeLimits * time_limit) {
+      break;
+    }
     FaceDecomposition again = k == 0 && first ? std::move(*first) : decompose_try(k);
     options.general.reward = again.region.reward;
     if (!again.region.complete() && (have || k + 1 < tries.size() || first_error)) {

@@ -40,7 +40,8 @@ struct FaceMeshing {
 //          and arcs allow); a try's mesh below it is meshed again with at least two intervals per
 //          model edge; the conformal mesh with the best minimum scaled Jacobian is kept (attempts,
 //          search_width, corner_fraction, cut_smooth_parts and min_edge_intervals say what was
-//          kept). Each search has the time limit. A search whose blocks fail to mesh (no interval counts for them, say: a
+//          kept). Each search has the time limit; once a try has meshed and the face has taken
+//          kTriesTimeLimits times it, no further try is made. A search whose blocks fail to mesh (no interval counts for them, say: a
 //          rare web of templates whose sides' counts contradict), or that leaves a part unfinished,
 //          is skipped; the first failure is thrown when every try fails. Another policy makes one
 //          decomposition; when its blocks do not mesh, the search's tries are made instead
@@ -59,6 +60,9 @@ struct FaceMeshing {
 // rounded); as every try's rule it lost on more faces than it won (BENCHMARKS.md, "Parts with fewer
 // than three corners").
 constexpr double kRetryBelow = 0.85;
+// No further try once a mesh is made and the face has taken this many times the search's time limit
+// (a face of hundreds of parts, each try's search capped and its blocks' intervals and replay slow).
+constexpr double kTriesTimeLimits = 3.0;
 struct SearchTry {
   int width;                      // candidates expanded per part (region_search.h; its default: 4)
   double corner_fraction;         // the block rules (face_actions.h)

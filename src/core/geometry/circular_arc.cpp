@@ -114,6 +114,16 @@ double turn_between(const CircularArc& arc, Point2 a, Point2 b) {
   return turn > kPi ? kTwoPi - turn : turn;
 }
 
+// a -> b runs across the circle's radii, not along them: its ends' distances from the centre differ by
+// more than half its turn's length. A mesh's straight boundary edge meeting a convex arc's end square
+// to it lies in the band of the arc's polygon, both its ends "on" the arc, a chord of no turn; a mesh
+// edge along the arc has both ends on the circle. (Not for polygon chords: a circumscribed polygon's
+// corner lies off the circle.)
+bool radial(const CircularArc& arc, Point2 a, Point2 b, double tolerance) {
+  const double da = std::hypot(a.x - arc.center.x, a.y - arc.center.y), db = std::hypot(b.x - arc.center.x, b.y - arc.center.y);
+  return std::fabs(da - db) > tolerance + 0.5 * arc.radius * turn_between(arc, a, b);
+}
+
 // Both ends and the middle of a -> b on the arc's polygon, the ends at most two chord steps apart (the
 // default's, or a short arc's one chord: the whole arc) as seen from the centre.
 bool chord_on_arc(const CircularArc& arc, Point2 a, Point2 b, double tolerance) {
@@ -122,6 +132,13 @@ bool chord_on_arc(const CircularArc& arc, Point2 a, Point2 b, double tolerance) 
   if (!point_on_arc_polygon(a, arc, tolerance) || !point_on_arc_polygon(b, arc, tolerance) ||
       !point_on_arc_polygon(m, arc, tolerance)) {
     return false;
+  }
+  // Within the arc's directions: a chord of the next arc along its tangent (a short concave arc's
+  // corner, where a long arc begins) is not a chord of this one.
+  if (!full_circle(arc)) {
+    const double slack = tolerance / arc.radius;
+    const double s = along(std::atan2(m.y - arc.center.y, m.x - arc.center.x), arc);
+    if (!(s <= std::fabs(arc.sweep) + slack || s >= kTwoPi - slack)) return false;
   }
   return turn_between(arc, a, b) <= max_turn;
 }
@@ -141,6 +158,7 @@ int FaceArcs::arc_of_mesh_edge(Point2 a, Point2 b) const {
     if (!point_on_arc_polygon(a, arc, tolerance) || !point_on_arc_polygon(b, arc, tolerance)) continue;
     const double turn = turn_between(arc, a, b);
     if (turn > max_turn + 1e-9 + tolerance / arc.radius) continue;  // (an edge of exactly max_turn, rounded)
+    if (radial(arc, a, b, tolerance)) continue;
     // The middle: no nearer the centre than the chord of that turn (less the arc's own band), not
     // outside the circle, and within the arc's directions.
     const double d = std::hypot(m.x - arc.center.x, m.y - arc.center.y);
@@ -157,10 +175,20 @@ int FaceArcs::arc_of_mesh_edge(Point2 a, Point2 b) const {
 }
 
 int FaceArcs::arc_of_chord(Point2 a, Point2 b) const {
+  int found = -1;
   for (size_t k = 0; k < arcs.size(); ++k) {
-    if (chord_on_arc(arcs[k], a, b, tolerance)) return static_cast<int>(k);
+    if (!chord_on_arc(arcs[k], a, b, tolerance)) continue;
+    // Where arcs meet, a chord of one can lie in the band of another (a long arc's polygon band is
+    // wide: a short arc's chord at its end lies in it): the arc whose polygon has both ends as its
+    // vertices is the chord's.
+    const std::vector<Point2> polygon = polygonise_arc(arcs[k]);
+    auto vertex = [&](Point2 p) {
+      return std::any_of(polygon.begin(), polygon.end(), [&](Point2 q) { return std::hypot(p.x - q.x, p.y - q.y) <= tolerance; });
+    };
+    if (vertex(a) && vertex(b)) return static_cast<int>(k);
+    if (found < 0) found = static_cast<int>(k);
   }
-  return -1;
+  return found;
 }
 
 }  // namespace autoblock

@@ -72,7 +72,7 @@ BlockModel block_model(const RegionDecomposition& decomposition, const BlockRule
 // Along an arc of the face's boundary every sample of its polygon is a model vertex, so each chord
 // would get its own whole number of intervals and the nodes would bunch where chords round up. This
 // merges the chords of one piece's side that lie on one arc into one model edge wherever the vertex
-// between them is no piece's corner and no other edge's end: its intervals then spread evenly in
+// between them is no piece's corner, no other edge's end and no arc's end: its intervals then spread evenly in
 // angle over the whole stretch (block_mesh.h), and its length is the chords' sum.
 // Inputs: model (block_model's); arcs, the face's (FaceArcs). Output: model with those chains merged
 //         (edges renumbered, sides updated; vertices kept, the merged ones unused).

@@ -201,8 +201,22 @@ IntervalAssignment assign_edge_intervals(const BlockModel& model, const Interval
   parameters.msg_lev = GLP_MSG_OFF;
   parameters.mip_gap = 1e-6;
   parameters.tm_lim = static_cast<int>(std::min(1e9, std::max(1.0, options.time_limit * 1000.0)));
-  const int code = feasible ? glp_intopt(lp, &parameters) : GLP_ENOPFS;
-  const int status = feasible ? glp_mip_status(lp) : GLP_NOFEAS;
+  int code = feasible ? glp_intopt(lp, &parameters) : GLP_ENOPFS;
+  int status = feasible ? glp_mip_status(lp) : GLP_NOFEAS;
+  if (feasible && (code == GLP_ENOPFS || status == GLP_NOFEAS)) {
+    // GLPK's integer presolve can call a feasible program infeasible (a disk's five blocks at one
+    // element size did): the equalities have integer solutions, so solve the relaxation by the
+    // simplex and branch from it without the presolve.
+    glp_smcp simplex;
+    glp_init_smcp(&simplex);
+    simplex.msg_lev = GLP_MSG_OFF;
+    simplex.presolve = GLP_OFF;
+    if (glp_simplex(lp, &simplex) == 0 && glp_get_status(lp) == GLP_OPT) {
+      parameters.presolve = GLP_OFF;
+      code = glp_intopt(lp, &parameters);
+      status = glp_mip_status(lp);
+    }
+  }
   if ((code == GLP_ENOPFS || status == GLP_NOFEAS) && options.fixed.empty()) {
     // Not the user's doing: the blocks themselves admit no counts (a block whose opposite sides
     // share edges so that they cannot be equal).

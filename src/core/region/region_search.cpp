@@ -28,15 +28,22 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
   if (is_block(part, options.rules)) return 0.0;
   const auto found = memo_.find(part);
   if (found != memo_.end()) return found->second.value;
-  const bool late = options_.time_limit > 0.0 && std::chrono::steady_clock::now() > deadline_;
+  const auto now = std::chrono::steady_clock::now();
+  const bool late = options_.time_limit > 0.0 && now > deadline_;
   if (late) capped_ = true;
-  // Past the budget, parts are finished greedily: every candidate scored, the best immediate reward
-  // taken (no lookahead), which costs about what the greedy policy does on the parts left.
+  // Past the budget, parts are finished greedily: the best immediate reward taken (no lookahead),
+  // which costs about what the greedy policy does on the parts left. Each part's scoring then stops
+  // after its slice (late_slice: a part of hundreds of vertices, a plate with scores of holes, has
+  // thousands of candidates, each cut costing as much again: scoring them all took minutes; a usual
+  // part's all fit in the slice, and the search finishes as greedy would).
   // Only candidates that can be among the `width` best are scored (with pruning on: the same ones).
   const size_t width = late ? 1 : static_cast<size_t>(std::max(1, options_.width));
   const bool taper = options_.taper && !late && options.reward == RewardPreset::Mesh;
-  std::vector<ScoredAction> scored = score_candidates(
-      part, face_size, options, !late && options_.time_limit > 0.0 ? &deadline_ : nullptr, options_.prune ? width : 0, taper);
+  const auto budget = std::chrono::microseconds(static_cast<long long>(options_.time_limit * 1e6));
+  const std::chrono::steady_clock::time_point slice =
+      now + std::chrono::microseconds(static_cast<long long>(1e6 * late_slice(options_.time_limit, now > deadline_ + budget)));
+  const std::chrono::steady_clock::time_point* stop = options_.time_limit > 0.0 ? (late ? &slice : &deadline_) : nullptr;
+  std::vector<ScoredAction> scored = score_candidates(part, face_size, options, stop, options_.prune ? width : 0, taper);
   Entry best;
   if (scored.empty()) {
     best.action = progress_action(part, options.rules);

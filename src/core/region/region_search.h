@@ -30,6 +30,15 @@
 
 namespace autoblock {
 
+// Past the search's budget, the seconds each part's greedy scoring may take (see solve): 2 % of the
+// budget, a tenth of that once twice the budget has passed (a face of a thousand parts), and never
+// less than kLateSliceFloor.
+constexpr double kLateSliceFloor = 0.005;
+inline double late_slice(double time_limit, bool past_twice) {
+  const double slice = (past_twice ? 0.002 : 0.02) * time_limit;
+  return slice > kLateSliceFloor ? slice : kLateSliceFloor;
+}
+
 struct RegionSearchOptions {
   int width = 4;              // candidates expanded per part (by immediate reward)
   double time_limit = 2.0;    // seconds per face; 0: no limit

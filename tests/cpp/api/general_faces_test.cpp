@@ -3,6 +3,12 @@
 #include "support/catch_torch.h"
 
 #include <BRepAlgoAPI_Cut.hxx>
+#include <TopoDS_Wire.hxx>
+#include <GC_MakeArcOfCircle.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <Bnd_Box.hxx>
@@ -294,6 +300,19 @@ TEST_CASE("a face bounded by circles alone, in a tilted or an upright plane, get
   }
 }
 
+TEST_CASE("no try is started once a face has taken three times the search's time limit", "[api][general][mesh][arc]") {
+  // The rounded wedge takes every try when time is no object (below). With a time limit far below
+  // any search's time, the first try's mesh (its search finished greedily) stands: a face of a
+  // thousand parts (a plate with 89 holes) made seven such tries, minutes of them.
+  const InputFace face = arc_test_face("rounded-wedge");
+  DecomposeSettings settings;
+  settings.policy_settings.general_time_limit = 1e-6;
+  const FaceMeshing m = mesh_input_face(face, settings, MeshOptions{});
+  CHECK(m.attempts == 1);
+  CHECK(m.decomposition.region.time_capped);
+  CHECK(m.result.conformity.conformal);
+}
+
 TEST_CASE("a wedge rounded at both ends: the last try cuts it, and its mesh is kept", "[api][general][mesh][arc]") {
   // Face 150 of the arc benchmark (`autoblock generate --kind arcs --seed 20261202`): two corners (its
   // rounded tip's), which no cut reduces, so every try but the last finishes the whole face with the
@@ -579,4 +598,35 @@ TEST_CASE("vertex scores on a general face: the policy's chosen vertex scores hi
   CHECK_THROWS_WITH(face_vertex_scores_general(face, actions, static_cast<int>(actions.size()), "sac-mesh", 0,
                                                d.region.reward, d.region.rules),
                     Catch::Contains("no action follows"));
+}
+
+TEST_CASE("a hole whose circle is two half arcs meshes with a node at each join", "[api][arc]") {
+  // As many CAD systems write a drilled hole: two half circles, joined at two vertices of the face.
+  // Smoothing once slid the join's node along the circle, leaving the mesh without a node at the
+  // face's vertex and failing its conformity check (a 22 x 15 plate did; a 20 x 15 one did not).
+  for (const double w : {20.0, 22.0, 40.0}) {
+    const gp_Pnt c(w / 2, 7.5, 0);
+    const gp_Pnt right(c.X() + 5, c.Y(), 0), top(c.X(), c.Y() + 5, 0), left(c.X() - 5, c.Y(), 0), bottom(c.X(), c.Y() - 5, 0);
+    BRepBuilderAPI_MakeWire hole(BRepBuilderAPI_MakeEdge(GC_MakeArcOfCircle(right, top, left).Value()).Edge(),
+                                 BRepBuilderAPI_MakeEdge(GC_MakeArcOfCircle(left, bottom, right).Value()).Edge());
+    BRepBuilderAPI_MakePolygon outer(gp_Pnt(0, 0, 0), gp_Pnt(w, 0, 0), gp_Pnt(w, 15, 0), gp_Pnt(0, 15, 0), true);
+    BRepBuilderAPI_MakeFace make(outer.Wire(), true);
+    make.Add(TopoDS::Wire(hole.Wire().Reversed()));
+    const TopoDS_Face plate = make.Face();
+    REQUIRE(occt_shape_valid(plate));
+    REQUIRE(occt_area(plate) == Approx(w * 15 - M_PI * 25));
+    INFO("width " << w);
+    const InputFace face = input_face_from_occt(plate, "plate with a two-arc hole");
+    REQUIRE(face.arcs.arcs.size() == 2);
+    const FaceMeshing m = mesh_input_face(face, untimed_settings(), MeshOptions{});
+    CHECK(m.result.conformity.conformal);
+    CHECK(m.result.smoothing.sweeps > 0);
+    // A node at each join (within the lattice's few quanta that every vertex of a general face is rounded by).
+    for (const gp_Pnt& join : {right, left}) {
+      double nearest = HUGE_VAL;
+      for (const Point2& p : m.result.mesh.nodes) nearest = std::min(nearest, std::hypot(p.x - join.X(), p.y - join.Y()));
+      CHECK(nearest <= face.arcs.tolerance);
+    }
+    CHECK(face.arcs.tolerance < 1e-6 * w);
+  }
 }

@@ -125,3 +125,43 @@ TEST_CASE("a short arc is one chord: a convex one up to 170 degrees, a concave o
   arcs.tolerance = 1e-9;
   CHECK(arcs.arc_of_chord(fillet.first(), fillet.last()) == 0);
 }
+
+TEST_CASE("a chord at the join of two arcs is the arc's whose polygon it is", "[geometry][arc]") {
+  // Where a long convex arc (radius 63.5) begins at the end of a short concave one (radius 7.3, 7.8
+  // degrees: one chord, circumscribed: its polygon's corner lies off its circle), the short arc's
+  // second chord lies in the long arc's polygon band too (as on a real part's face). It is the short
+  // arc's: taken for the long one, the mesh put the corner's node on the wrong circle and lost the
+  // join's node.
+  CircularArc tip{{-33.8667, -45.0775}, 7.3323, 0.0, -0.1368};
+  tip.outside = true;
+  tip.chords = 1;
+  const Point2 join = tip.last();
+  const Point2 centre{-63.2354, 5.7907};
+  FaceArcs arcs;
+  arcs.arcs.push_back(CircularArc{centre, std::hypot(join.x - centre.x, join.y - centre.y),
+                                  std::atan2(join.y - centre.y, join.x - centre.x), 0.8646});
+  arcs.arcs.push_back(tip);
+  arcs.tolerance = 3e-5;
+  const std::vector<Point2> polygon = polygonise_arc(tip);
+  REQUIRE(polygon.size() == 3);
+  CHECK(std::hypot(join.x - arcs.arcs[0].first().x, join.y - arcs.arcs[0].first().y) < 1e-9);
+  CHECK(arcs.arc_of_chord(polygon[0], polygon[1]) == 1);
+  CHECK(arcs.arc_of_chord(polygon[1], polygon[2]) == 1);
+  // A chord of the long arc is still its own.
+  const std::vector<Point2> long_polygon = polygonise_arc(arcs.arcs[0]);
+  CHECK(arcs.arc_of_chord(long_polygon[0], long_polygon[1]) == 0);
+}
+
+TEST_CASE("a mesh edge square to a convex arc at its end is not on the arc", "[geometry][arc]") {
+  // A half annulus's outer arc (radius 46) ends at (46, -0.1), where a straight end runs inwards: a
+  // mesh edge along that end, 0.33 long, has both ends in the arc's polygon band and within its
+  // directions, but it turns by nothing about the centre: a straight edge, not a chord of the arc
+  // (counted as one, the mesh's boundary came out 0.67 short of the face's).
+  FaceArcs arcs;
+  arcs.arcs.push_back(CircularArc{{0, 0}, 46.0, -3.1394, 3.1372});
+  arcs.tolerance = 2e-5;
+  const Point2 end = arcs.arcs[0].last();
+  CHECK(arcs.arc_of_mesh_edge(Point2{45.6662, end.y}, end) == -1);
+  // An edge along the arc from the same end is on it.
+  CHECK(arcs.arc_of_mesh_edge(arcs.arcs[0].point_at(0.99), end) == 0);
+}

@@ -2,6 +2,9 @@
 // the general engine, cut by OpenCASCADE on the true face, meshed with every boundary node on its arc.
 #include <catch2/catch.hpp>
 
+#include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <TopoDS.hxx>
+
 
 #include <algorithm>
 #include <cmath>
@@ -113,6 +116,32 @@ TEST_CASE("arc faces: a plate with a round hole is read as chords and its arc", 
   for (const CircularArc& arc : convex.arcs.arcs) CHECK_FALSE(arc.outside);
   CHECK(convex.region.area() < occt_area(rounded));
   CHECK(convex.region.outer().size() == 4 * 7);
+}
+
+TEST_CASE("arc faces: a plate whose every curve is a B-spline meshes as the plate with round holes", "[mesh][arc][occt]") {
+  // As some STEP translators write every curve: the holes' circles and the sides as B-splines
+  // (edge_curve.h reads them as circles and lines), cut by OpenCASCADE on its twin made of a plane,
+  // lines and circles (face_from_rings).
+  const TopoDS_Face plate = plate_with_holes(12, 8, {{3.5, 4, 1.5}, {8.5, 4, 1.0}});
+  const TopoDS_Face nurbs = TopoDS::Face(BRepBuilderAPI_NurbsConvert(plate, true).Shape());
+  const ArcMesh m = mesh_arc_face(nurbs, "NURBS plate");
+  // (Against the plate as made: OpenCASCADE's area of the spline surface is 0.1 % off.)
+  check_arc_mesh(m, plate);
+  const ArcMesh reference = mesh_arc_face(plate, "plate");
+  CHECK(m.mesh.mesh.quads.size() == reference.mesh.mesh.quads.size());
+  CHECK(m.mesh.quality.min_scaled_jacobian == Approx(reference.mesh.quality.min_scaled_jacobian).epsilon(1e-6));
+}
+
+TEST_CASE("arc faces: a disk meshes at the sizes where GLPK's integer presolve called it infeasible", "[mesh][arc]") {
+  // The disk's five blocks have integer interval counts at every size, but at a radius of 2 and size
+  // 0.2 (the default: a twentieth of the diameter), and at others, GLPK's integer presolve reported no
+  // solution; the program is then solved again from the simplex's relaxation without it.
+  for (const auto& [r, h] : std::vector<std::pair<double, double>>{{2.0, 0.2}, {10.0, 1.0}, {14.0, 1.4}, {2.0, 0.19}}) {
+    INFO("radius " << r << ", size " << h);
+    const TopoDS_Face face = disk(0, 0, r);
+    const ArcMesh m = mesh_arc_face(face, "disk", h);
+    check_arc_mesh(m, face);
+  }
 }
 
 TEST_CASE("arc faces: an arc shorter than the default element size is one chord, its nodes still on it",
