@@ -16,6 +16,9 @@
 // arcs --count N --seed S`), `autoblock mesh` as a whole process against gmsh, both judged by one
 // check against the true face (curved_conformity.h: every boundary node on the face's lines and
 // circles, the quads plus the gaps to the arcs covering the face); gmsh reads the same .brep file.
+// --files F...: real faces instead, every planar face AutoBlock accepts in the files (each distinct
+// one once, in its own frame at z = 0), meshed and judged as --arcs; the refused ones counted by
+// reason (BENCHMARKS.md, "Real CAD faces").
 //
 // Quality is measured with the same code for both (mesh_quality.h); a gmsh mesh that comes out
 // clockwise as a whole is reversed first (orientation is not quality; a single inverted quad
@@ -24,10 +27,18 @@
 // meshing; no checks, no file I/O); gmsh's is its own "Done meshing 2D" wall time, and in another
 // column the wall time of the whole gmsh process (start-up, reading the BREP, meshing, writing).
 #include <CLI/CLI.hpp>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <gp_Dir.hxx>
+#include <gp_Trsf.hxx>
+#include <gp_Vec.hxx>
 
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <chrono>
 #include <cstdio>
@@ -38,6 +49,7 @@
 #include <map>
 #include <random>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -46,11 +58,13 @@
 #include "core/sac/compute_threads.h"
 #include "core/api/policy_source.h"
 #include "core/common/error.h"
+#include "core/common/format.h"
 #include "core/data/arc_generator.h"
 #include "core/data/general_generator.h"
 #include "core/data/shape_generator.h"
 #include "core/env/decomposition.h"
 #include "core/geometry/occt_face.h"
+#include "core/geometry/occt_properties.h"
 #include "core/io/input_face.h"
 #include "core/io/shape_file.h"
 #include "core/io/text_file.h"
@@ -483,6 +497,72 @@ void print_arc_row(const std::string& method, const std::vector<Sample>& samples
   if (t.failed) std::printf("<!-- %s failed on %d faces -->\n", method.c_str(), t.failed);
 }
 
+// Faces with arcs, and real faces: one row per method (print_arc_row).
+void print_arc_table(std::map<std::string, std::vector<Sample>>& samples) {
+  const std::string ours = kOurs, gmsh_h = kGmshH, gmsh_matched = kGmshMatched;
+  std::printf("| method | meshed | conformal (true face) | conformal (own check, gap != 0) | faces with a boundary node off "
+              "the boundary (farthest / face size; of the nodes nearest a circle) | mean quads | mean min SJ | mean min SJ / bound | worst min SJ | worst min SJ / bound | faces "
+              "where AutoBlock's min SJ >= this | mean irregular interior vertices | median ms, whole process | median "
+              "whole-process time / gmsh's at size h |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (const std::string& method : {ours, gmsh_h, gmsh_matched}) {
+    print_arc_row(method, samples[method], samples[ours], samples[gmsh_h], method == ours);
+  }
+}
+
+// Per kind of face: AutoBlock's and gmsh's (matched) mean min SJ / bound, the faces where AutoBlock's
+// minimum is at least gmsh's (both sizes), the irregular vertices, and the faces AutoBlock failed on.
+// Inputs: kind_of, each face's kind; samples, by method (sample_faces).
+void print_kind_rows(const std::vector<std::string>& kind_of, std::map<std::string, std::vector<Sample>>& samples) {
+  std::map<std::string, int> kinds;
+  for (const std::string& k : kind_of) ++kinds[k];
+  std::printf("\n| kind | faces | AutoBlock mean min SJ / bound | gmsh (matched) mean min SJ / bound | AutoBlock >= gmsh "
+              "(h and matched) | AutoBlock mean irregular | gmsh (matched) mean irregular | AutoBlock failed |\n"
+              "|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (const auto& [kind, n] : kinds) {
+    double ab = 0, gm = 0, abi = 0, gmi = 0;
+    int m = 0, above = 0, failed = 0;
+    for (size_t k = 0; k < kind_of.size(); ++k) {
+      const Sample &a = samples[kOurs][k], &g = samples[kGmshMatched][k], &gh = samples[kGmshH][k];
+      if (kind_of[k] != kind) continue;
+      if (a.quads <= 0) {
+        ++failed;
+        continue;
+      }
+      ++m;
+      ab += a.min_sj / a.bound;
+      gm += g.min_sj / a.bound;
+      abi += a.irregular;
+      gmi += g.irregular;
+      above += a.min_sj >= g.min_sj && a.min_sj >= gh.min_sj;
+    }
+    const int d = std::max(1, m);
+    std::printf("| %s | %d | %.4f | %.4f | %d/%d | %.2f | %.2f | %d |\n", kind.c_str(), n, ab / d, gm / d, above, m, abi / d, gmi / d, failed);
+  }
+}
+
+// The ten worst faces by AutoBlock's min SJ / bound, and every face where it is below gmsh's or not
+// conformal. Inputs: label and kind, each face's (for the first two columns); samples, by method.
+void print_worst_faces(const std::vector<std::string>& label, const std::vector<std::string>& kind,
+                       std::map<std::string, std::vector<Sample>>& samples) {
+  std::vector<size_t> order(label.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  auto score = [&](size_t k) { return samples[kOurs][k].quads > 0 ? samples[kOurs][k].min_sj / samples[kOurs][k].bound : -1.0; };
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return score(a) < score(b); });
+  std::printf("\nWorst faces (AutoBlock's min SJ / bound), and every face where it is below gmsh's or not conformal:\n\n");
+  std::printf("| face | kind | AutoBlock blocks, quads | min SJ | bound | gmsh min SJ (h, matched) | irregular (AutoBlock, gmsh matched) | "
+              "AutoBlock conformal | problem |\n|---|---|---:|---:|---:|---:|---:|---|---|\n");
+  for (size_t i = 0; i < order.size(); ++i) {
+    const size_t k = order[i];
+    const Sample &a = samples[kOurs][k], &g = samples[kGmshMatched][k], &gh = samples[kGmshH][k];
+    const bool below = a.quads > 0 && (a.min_sj < g.min_sj || a.min_sj < gh.min_sj);
+    if (i >= 10 && !below && a.conformal && a.quads > 0) continue;
+    std::printf("| %s | %s | %d, %d | %.4f | %.4f | %.4f, %.4f | %d, %d | %s | %s |\n", label[k].c_str(), kind[k].c_str(), a.blocks,
+                a.quads, a.min_sj, a.bound, gh.min_sj, g.min_sj, a.irregular, g.irregular,
+                a.quads <= 0 ? "failed" : a.conformal ? "yes" : "no", a.judged.problem.c_str());
+  }
+}
+
 // Faces with circular arcs (issue 13's benchmark): AutoBlock's `mesh` against gmsh, judged alike.
 void run_arc_set(int count, std::uint64_t seed, const std::string& autoblock, const std::string& folder) {
   std::mt19937_64 rng(seed);
@@ -512,49 +592,102 @@ void run_arc_set(int count, std::uint64_t seed, const std::string& autoblock, co
               with_holes);
   for (const auto& [kind, n] : kinds) std::printf(" %s %d", kind.c_str(), n);
   std::printf(")\n\n");
-  std::printf("| method | meshed | conformal (true face) | conformal (own check, gap != 0) | faces with a boundary node off "
-              "the boundary (farthest / face size; of the nodes nearest a circle) | mean quads | mean min SJ | mean min SJ / bound | worst min SJ | worst min SJ / bound | faces "
-              "where AutoBlock's min SJ >= this | mean irregular interior vertices | median ms, whole process | median "
-              "whole-process time / gmsh's at size h |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  for (const std::string& method : {ours, gmsh_h, gmsh_matched}) {
-    print_arc_row(method, samples[method], samples[ours], samples[gmsh_h], method == ours);
-  }
+  print_arc_table(samples);
   // Per kind, and the faces to look at.
-  std::printf("\n| kind | faces | AutoBlock mean min SJ / bound | gmsh (matched) mean min SJ / bound | AutoBlock >= gmsh "
-              "(h and matched) | AutoBlock mean irregular | gmsh (matched) mean irregular |\n|---|---:|---:|---:|---:|---:|---:|\n");
-  for (const auto& [kind, n] : kinds) {
-    double ab = 0, gm = 0, abi = 0, gmi = 0;
-    int m = 0, above = 0;
-    for (size_t k = 0; k < made.size(); ++k) {
-      const Sample &a = samples[ours][k], &g = samples[gmsh_matched][k], &gh = samples[gmsh_h][k];
-      if (arc_kind_name(made[k].kind) != kind || a.quads <= 0) continue;
-      ++m;
-      ab += a.min_sj / a.bound;
-      gm += g.min_sj / a.bound;
-      abi += a.irregular;
-      gmi += g.irregular;
-      above += a.min_sj >= g.min_sj && a.min_sj >= gh.min_sj;
+  std::vector<std::string> kind_of, label, kind_column;
+  for (size_t k = 0; k < made.size(); ++k) {
+    kind_of.push_back(arc_kind_name(made[k].kind));
+    label.push_back(keep_tag + "-face" + std::to_string(k));
+    kind_column.push_back(kind_of.back() + " (" + made[k].name + ")");
+  }
+  print_kind_rows(kind_of, samples);
+  print_worst_faces(label, kind_column, samples);
+}
+
+// Real CAD faces: every planar face of the files that AutoBlock accepts, each distinct one once (a
+// part's repeated faces, the same outline at the same size, counted once), written in its own frame
+// and meshed like the faces with arcs: `autoblock mesh` against gmsh, judged against the true face.
+// The faces AutoBlock refuses are counted by reason.
+void run_file_set(const std::vector<std::string>& files, const std::string& autoblock, const std::string& folder) {
+  keep_tag = "real";
+  if (!keep_folder.empty()) std::filesystem::create_directories(keep_folder);
+  std::vector<Face> faces;
+  std::vector<std::string> names, kinds;
+  std::map<std::string, int> refused;
+  std::set<std::string> seen;
+  int planar = 0, repeated = 0;
+  for (const std::string& path : files) {
+    const TopoDS_Shape shape = read_shape_file(path);
+    TopTools_IndexedMapOfShape map;
+    TopExp::MapShapes(shape, TopAbs_FACE, map);
+    for (int i = 1; i <= map.Extent(); ++i) {
+      const TopoDS_Face occt = TopoDS::Face(map(i));
+      gp_Dir normal;
+      if (!planar_face_normal(occt, &normal)) continue;
+      ++planar;
+      const std::string name = std::filesystem::path(path).filename().string() + " Face" + std::to_string(i);
+      Face f;
+      try {
+        f.face = input_face_from_occt(occt, name);
+      } catch (const InputError& e) {
+        std::string why = e.what();
+        why = why.substr(why.find(": ") + 2);
+        // The reason without its numbers.
+        std::string kind;
+        for (char c : why) {
+          if (std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-') {
+            if (kind.empty() || kind.back() != '#') kind += '#';
+          } else {
+            kind += c;
+          }
+        }
+        ++refused[kind];
+        continue;
+      }
+      // The same outline at the same size: its area, perimeter and vertex count, to 6 digits.
+      const double area = occt_area(f.face.occt);
+      const Box box = f.face.is_general() ? f.face.region.bbox() : ring_bbox(f.face.planar.polygon.outer);
+      size_t vertices = f.face.planar.polygon.outer.size();
+      for (const Ring& hole : f.face.planar.polygon.holes) vertices += hole.size();
+      if (f.face.is_general()) vertices = static_cast<size_t>(f.face.region.vertex_count());
+      char key[160];
+      std::snprintf(key, sizeof key, "%.6g %.6g %.6g %zu %zu", area, box.longer_side(), box.shorter_side(), vertices,
+                    f.face.arcs.arcs.size());
+      if (!seen.insert(key).second) {
+        ++repeated;
+        continue;
+      }
+      const size_t holes = f.face.is_general() ? f.face.region.holes().size() : f.face.planar.polygon.holes.size();
+      std::string kind = !f.face.arcs.arcs.empty() ? "with arcs" : !f.face.is_general() ? (vertices == 4 && holes == 0 ? "rectangle" : "rectilinear") : "polygon";
+      if (holes > 0) kind += ", holes";
+      f.brep = folder + "/face" + std::to_string(faces.size()) + ".brep";
+      // In its frame, moved to z = 0 (where the judge, curved_conformity.h, puts the meshes' nodes).
+      gp_Trsf down;
+      down.SetTranslation(gp_Vec(0, 0, -f.face.planar.z));
+      write_shape_file(f.brep, BRepBuilderAPI_Transform(f.face.occt, down, true).Shape());
+      // The face as written is the one meshed and judged.
+      f.face = load_input_face(f.brep);
+      f.face.source = name;
+      f.arcs = true;
+      f.judge_tolerance = 1e-6 * box.longer_side();
+      faces.push_back(std::move(f));
+      names.push_back(name);
+      kinds.push_back(kind);
     }
-    const int d = std::max(1, m);
-    std::printf("| %s | %d | %.4f | %.4f | %d/%d | %.2f | %.2f |\n", kind.c_str(), n, ab / d, gm / d, above, m, abi / d, gmi / d);
   }
-  std::vector<size_t> order(made.size());
-  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
-  auto score = [&](size_t k) { return samples[ours][k].quads > 0 ? samples[ours][k].min_sj / samples[ours][k].bound : -1.0; };
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return score(a) < score(b); });
-  std::printf("\nWorst faces (AutoBlock's min SJ / bound), and every face where it is below gmsh's or not conformal:\n\n");
-  std::printf("| face | kind | AutoBlock blocks, quads | min SJ | bound | gmsh min SJ (h, matched) | irregular (AutoBlock, gmsh matched) | "
-              "AutoBlock conformal | problem |\n|---|---|---:|---:|---:|---:|---:|---|---|\n");
-  for (size_t i = 0; i < order.size(); ++i) {
-    const size_t k = order[i];
-    const Sample &a = samples[ours][k], &g = samples[gmsh_matched][k], &gh = samples[gmsh_h][k];
-    const bool below = a.quads > 0 && (a.min_sj < g.min_sj || a.min_sj < gh.min_sj);
-    if (i >= 10 && !below && a.conformal && a.quads > 0) continue;
-    std::printf("| %s-face%zu | %s (%s) | %d, %d | %.4f | %.4f | %.4f, %.4f | %d, %d | %s | %s |\n", keep_tag.c_str(), k,
-                arc_kind_name(made[k].kind).c_str(), made[k].name.c_str(), a.blocks, a.quads, a.min_sj, a.bound, gh.min_sj, g.min_sj,
-                a.irregular, g.irregular, a.quads <= 0 ? "failed" : a.conformal ? "yes" : "no", a.judged.problem.c_str());
-  }
+  const std::string ours = kOurs, gmsh_h = kGmshH, gmsh_matched = kGmshMatched;
+  std::map<std::string, std::vector<Sample>> samples = sample_faces("real faces", faces, autoblock, folder);
+  std::printf("\n### Real CAD faces: %s, %s, %zu distinct accepted (%s left out)\n\n",
+              counted(static_cast<long long>(files.size()), "file").c_str(), counted(planar, "planar face").c_str(), faces.size(),
+              counted(repeated, "repeat").c_str());
+  std::printf("Refused (the reason without its numbers):%s\n\n", refused.empty() ? " none" : "");
+  for (const auto& [why, n] : refused) std::printf("- %d: %s\n", n, why.c_str());
+  std::printf("\n");
+  print_arc_table(samples);
+  std::vector<std::string> label;
+  for (size_t k = 0; k < faces.size(); ++k) label.push_back(names[k] + " (real-face" + std::to_string(k) + ")");
+  print_kind_rows(kinds, samples);
+  print_worst_faces(label, kinds, samples);
 }
 
 }  // namespace
@@ -583,6 +716,10 @@ int main(int argc, char** argv) {
                  "faces with circular arcs instead: this many (filleted unions, plates with holes, slotted plates, rounded "
                  "polygons, rounded plates with holes; the faces of `autoblock generate --kind arcs --seed S`); AutoBlock "
                  "runs as `autoblock mesh`");
+  std::vector<std::string> files;
+  app.add_option("--files", files,
+                 "real faces instead: every planar face AutoBlock accepts in these .brep/.step files, each distinct one once "
+                 "(in its own frame); AutoBlock runs as `autoblock mesh`; the refused ones are counted by reason");
   app.add_option("--chamfered", chamfered_count, "with --general: chamfered unions of 2-6 rectangles (default: as many as --small)");
   CLI11_PARSE(app, argc, argv);
   try {
@@ -590,6 +727,11 @@ int main(int argc, char** argv) {
         (std::filesystem::temp_directory_path() / ("autoblock-bench-mesh-" + std::to_string(std::random_device{}()))).string();
     std::filesystem::create_directories(folder);
     set_compute_threads(1);
+    if (!files.empty()) {
+      run_file_set(files, (std::filesystem::path(argv[0]).parent_path() / "autoblock").string(), folder);
+      std::filesystem::remove_all(folder);
+      return 0;
+    }
     if (arcs > 0) {
       run_arc_set(arcs, seed, (std::filesystem::path(argv[0]).parent_path() / "autoblock").string(), folder);
       std::filesystem::remove_all(folder);
