@@ -1073,13 +1073,19 @@ class TestArcFaces(unittest.TestCase):
         # Nodes on the fillets' arcs (not on chords): at least one per unit of arc length.
         self.assertGreaterEqual(self.check_nodes_on_circles(mesh, circles), 2 * int(3.141592653589793 * 6 / 2))
 
-    def test_a_plate_with_drilled_holes_meshes_with_nodes_on_the_holes(self):
+    @staticmethod
+    def drilled_plate_top():
+        """A 30 x 12 x 2 plate with two drilled holes: its top face, and the holes (centre at z = 0, radius)."""
         V = FreeCAD.Vector
         plate = Part.makeBox(30, 12, 2)
         holes = [(V(7, 6, 0), 2.5), (V(20, 5, 0), 1.5)]
         for centre, r in holes:
             plate = plate.cut(Part.makeCylinder(r, 4, centre + V(0, 0, -1)))
-        top = max(plate.Faces, key=lambda f: f.CenterOfMass.z)
+        return max(plate.Faces, key=lambda f: f.CenterOfMass.z), holes
+
+    def test_a_plate_with_drilled_holes_meshes_with_nodes_on_the_holes(self):
+        V = FreeCAD.Vector
+        top, holes = self.drilled_plate_top()
         self.assertEqual(len(top.Wires), 3)
         mesh = AutoBlock.mesh(top)
         self.assertTrue(mesh.conformal)
@@ -1091,6 +1097,18 @@ class TestArcFaces(unittest.TestCase):
         # The quads' chords cut across the holes a little: a little more area than the face, shrinking with h.
         self.assertGreater(area, top.Area)
         self.assertLess(area, top.Area * 1.01)
+
+    def test_a_face_whose_curves_are_b_splines_meshes_as_its_lines_and_circles(self):
+        """Many translators write circles and lines as B-splines (CATIA's drilled holes): such a face is read as
+        the lines and circles it is, and meshes as the same face made of them does."""
+        V = FreeCAD.Vector
+        top, holes = self.drilled_plate_top()
+        nurbs = top.toNurbs().Faces[0]
+        self.assertTrue(all(e.Curve.__class__.__name__ == "BSplineCurve" for e in nurbs.Edges))
+        mesh = AutoBlock.mesh(nurbs)
+        self.assertTrue(mesh.conformal)
+        self.assertGreaterEqual(self.check_nodes_on_circles(mesh, [(c + V(0, 0, 2), r) for c, r in holes], holes=True), 24 * 2)
+        self.assertEqual(len(mesh.quads), len(AutoBlock.mesh(top).quads))
 
     def test_the_end_of_a_tilted_tube_a_face_without_a_straight_edge(self):
         """A washer bounded by two circles in a tilted plane has no straight edge to set its frame by: it takes its
