@@ -27,6 +27,7 @@
 #include "core/io/shape_file.h"
 #include "core/io/svg_picture.h"
 #include "core/mesh/block_model.h"
+#include "core/geometry/edge_curve.h"
 #include "core/geometry/occt_face.h"
 
 namespace autoblock {
@@ -125,13 +126,13 @@ SolidFigures solid_figures(const SweptSolid& s) {
   for (size_t k = 0; k < s.faces.size(); ++k) {
     if (s.faces[k].IsNull()) continue;
     GProp_GProps area, length;
-    BRepGProp::SurfaceProperties(s.faces[k], area);
+    surface_properties(s.faces[k], s.splines, area);
     BRepGProp::LinearProperties(s.faces[k], length);
     f.face_areas[k] = area.Mass();
     f.face_perimeters[k] = length.Mass();
     const BRepAdaptor_Surface surface(s.faces[k]);
-    if (surface.GetType() == GeomAbs_Cylinder) {
-      const gp_Cylinder cylinder = surface.Cylinder();
+    gp_Cylinder cylinder;
+    if (face_cylinder(s.faces[k], &cylinder)) {
       if (f.face_cylinders.empty()) f.face_cylinders.resize(s.faces.size());
       FaceCylinder& c = f.face_cylinders[k];
       c.origin = point_of(cylinder.Axis().Location());
@@ -206,7 +207,7 @@ SolidMeshing mesh_swept_solid(const SweptSolid& solid, const DecomposeSettings& 
   const long layers = static_cast<long>(stations.size()) - 1;
   // The cap's quads are about its area over h^2 (as the 2-D pipeline estimates them).
   GProp_GProps cap_area;
-  BRepGProp::SurfaceProperties(solid.faces[static_cast<size_t>(solid.bottom - 1)], cap_area);
+  surface_properties(solid.faces[static_cast<size_t>(solid.bottom - 1)], solid.splines, cap_area);
   const double estimate = cap_area.Mass() / (out.target_size * out.target_size) * static_cast<double>(layers);
   if (!(estimate <= static_cast<double>(kMaxMeshHexes))) {
     throw InputError("element size " + format_significant(out.target_size, 4) + " and " + counted(layers, "layer") +

@@ -1,12 +1,18 @@
 #include "core/geometry/edge_curve.h"
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <gp_Ax3.hxx>
 #include <gce_MakeCirc.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <vector>
 
@@ -128,6 +134,58 @@ double circle_edge_sweep(const TopoDS_Edge& edge, const gp_Circ& circle) {
   // A closed edge runs the whole circle.
   if (std::fabs(std::fabs(sweep) - 2 * kPi) < 1e-6) sweep = sweep > 0 ? 2 * kPi : -2 * kPi;
   return sweep;
+}
+
+bool face_cylinder(const TopoDS_Face& face, gp_Cylinder* cylinder) {
+  const BRepAdaptor_Surface surface(face);
+  if (surface.GetType() == GeomAbs_Cylinder) {
+    *cylinder = surface.Cylinder();
+    return true;
+  }
+  if (surface.GetType() != GeomAbs_BSplineSurface && surface.GetType() != GeomAbs_BezierSurface) return false;
+  double tolerance = BRep_Tool::Tolerance(face), size = 0.0;
+  std::vector<TopoDS_Edge> edges;
+  for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+    const TopoDS_Edge edge = TopoDS::Edge(it.Current());
+    if (BRep_Tool::Degenerated(edge)) continue;
+    edges.push_back(edge);
+    tolerance = std::max(tolerance, BRep_Tool::Tolerance(edge));
+    const BRepAdaptor_Curve curve(edge);
+    size = std::max(size, curve.Value(curve.FirstParameter()).Distance(curve.Value(curve.LastParameter())));
+  }
+  // The axis's direction from a straight edge, the circle from a circular one square to it.
+  std::optional<gp_Dir> axis;
+  for (const TopoDS_Edge& edge : edges) {
+    if (edge_curve(edge, size).shape != EdgeShape::Line) continue;
+    const BRepAdaptor_Curve curve(edge);
+    const gp_Vec along(curve.Value(curve.FirstParameter()), curve.Value(curve.LastParameter()));
+    if (along.Magnitude() > tolerance) axis = gp_Dir(along);
+    if (axis) break;
+  }
+  if (!axis) return false;
+  for (const TopoDS_Edge& edge : edges) {
+    const EdgeCurve curve = edge_curve(edge, size);
+    if (curve.shape != EdgeShape::Circle) continue;
+    if (std::fabs(std::fabs(curve.circle.Axis().Direction().Dot(*axis)) - 1.0) > 1e-6) continue;
+    const gp_Cylinder candidate(gp_Ax3(curve.circle.Location(), *axis), curve.circle.Radius());
+    const double limit = std::max(tolerance, kRecognitionRelative * 2.0 * curve.circle.Radius());
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    bool on = true;
+    for (int i = 0; i <= 8 && on; ++i) {
+      for (int j = 0; j <= 8 && on; ++j) {
+        const gp_Pnt p = surface.Value(u0 + (u1 - u0) * i / 8.0, v0 + (v1 - v0) * j / 8.0);
+        gp_Vec radial(curve.circle.Location(), p);
+        radial -= gp_Vec(*axis) * radial.Dot(gp_Vec(*axis));
+        on = std::fabs(radial.Magnitude() - curve.circle.Radius()) <= limit;
+      }
+    }
+    if (on) {
+      *cylinder = candidate;
+      return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace autoblock

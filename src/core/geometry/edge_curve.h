@@ -13,7 +13,9 @@
 #pragma once
 
 #include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
 #include <gp_Circ.hxx>
+#include <gp_Cylinder.hxx>
 
 #include <GeomAbs_CurveType.hxx>
 
@@ -46,5 +48,14 @@ EdgeCurve edge_curve(const TopoDS_Edge& edge, double face_size);
 // Outputs: the signed angle it turns through as the edge runs (its orientation counted), about the
 //          circle's centre seen from +Z: > 0 counter-clockwise; +-2 pi for a closed edge.
 double circle_edge_sweep(const TopoDS_Edge& edge, const gp_Circ& circle);
+
+// Inputs:  face, any face.
+// Outputs: true, and its cylinder, when its surface is a cylinder, or a B-spline or Bezier surface that
+//          is one: a straight edge of the face gives the axis's direction, a circular edge square to it
+//          (edge_curve) the axis and radius, and every point of a 9 x 9 grid over the face's parameters
+//          lies within the recognition tolerance of that cylinder (the largest of the face's and its
+//          edges' tolerances, and kRecognitionRelative of its diameter). A swept solid's hole written
+//          as two B-spline half cylinders (CATIA) is so a hole.
+bool face_cylinder(const TopoDS_Face& face, gp_Cylinder* cylinder);
 
 }  // namespace autoblock

@@ -1,5 +1,6 @@
 #include "core/solid/swept_solid.h"
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
@@ -29,6 +30,7 @@
 
 #include "core/common/error.h"
 #include "core/common/format.h"
+#include "core/geometry/edge_curve.h"
 #include "core/geometry/occt_face.h"
 
 namespace autoblock {
@@ -105,18 +107,37 @@ struct CapFace {
   int number = 0;
   gp_Dir normal;  // outward
   double area = 0.0;
+  double perimeter = 0.0;
   gp_Pnt centroid;
   std::vector<gp_Pnt> vertices;
 };
 
-CapFace cap_face(const TopoDS_Face& face, int number, const gp_Dir& normal) {
+// Whether a surface or curve of the shape is a B-spline or Bezier one.
+bool has_splines(const TopoDS_Shape& shape) {
+  for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) {
+    const GeomAbs_SurfaceType type = BRepAdaptor_Surface(TopoDS::Face(it.Current()), false).GetType();
+    if (type == GeomAbs_BSplineSurface || type == GeomAbs_BezierSurface) return true;
+  }
+  for (TopExp_Explorer it(shape, TopAbs_EDGE); it.More(); it.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+    if (BRep_Tool::Degenerated(edge)) continue;
+    const GeomAbs_CurveType type = BRepAdaptor_Curve(edge).GetType();
+    if (type == GeomAbs_BSplineCurve || type == GeomAbs_BezierCurve) return true;
+  }
+  return false;
+}
+
+CapFace cap_face(const TopoDS_Face& face, int number, const gp_Dir& normal, bool splines) {
   CapFace c;
   c.number = number;
   c.normal = normal;
   GProp_GProps properties;
-  BRepGProp::SurfaceProperties(face, properties);
+  surface_properties(face, splines, properties);
   c.area = properties.Mass();
   c.centroid = properties.CentreOfMass();
+  GProp_GProps length;
+  BRepGProp::LinearProperties(face, length);
+  c.perimeter = length.Mass();
   TopTools_IndexedMapOfShape vertices;
   TopExp::MapShapes(face, TopAbs_VERTEX, vertices);
   for (int v = 1; v <= vertices.Extent(); ++v) c.vertices.push_back(BRep_Tool::Pnt(TopoDS::Vertex(vertices(v))));
@@ -147,7 +168,10 @@ CapTrial try_caps(const CapFace& bottom, const CapFace& top, const std::vector<C
   t.sweep = gp_Vec(bottom.centroid, top.centroid);
   const std::string pair = face_name(bottom.number) + " and " + face_name(top.number);
   const double scale = std::max(bottom.area, top.area);
-  if (std::fabs(bottom.area - top.area) > 1e-7 * scale) {
+  // Within the shape's tolerance along the boundary: a translator's B-spline circles stray by their
+  // edges' tolerance (CATIA's: 2.6e-5), so two caps' areas may differ by that times the perimeter.
+  const double slack = tolerance * std::max(bottom.perimeter, top.perimeter);
+  if (std::fabs(bottom.area - top.area) > std::max(1e-7 * scale, slack)) {
     t.why = "the caps differ: " + pair + " are parallel and opposite but not translated copies of each other (areas " +
             format_significant(bottom.area, 6) + " and " + format_significant(top.area, 6) + ")";
     return t;
@@ -194,7 +218,7 @@ CapTrial try_caps(const CapFace& bottom, const CapFace& top, const std::vector<C
   }
   t.stage = 2;
   const double expected = bottom.area * std::fabs(t.sweep.Dot(gp_Vec(bottom.normal)));
-  if (std::fabs(volume - expected) > 1e-6 * std::max(volume, expected)) {
+  if (std::fabs(volume - expected) > std::max(1e-6 * std::max(volume, expected), slack * t.sweep.Magnitude())) {
     t.why = "the solid is not the sweep of " + face_name(bottom.number) + " along " + vector_text(t.sweep, tolerance) +
             ": its volume " + format_significant(volume, 6) + " differs from the cap's area times the height, " +
             format_significant(expected, 6);
@@ -205,6 +229,22 @@ CapTrial try_caps(const CapFace& bottom, const CapFace& top, const std::vector<C
 }
 
 }  // namespace
+
+void surface_properties(const TopoDS_Shape& shape, bool splines, GProp_GProps& properties) {
+  if (splines) {
+    BRepGProp::SurfaceProperties(shape, properties, kPropertiesPrecision);
+  } else {
+    BRepGProp::SurfaceProperties(shape, properties);
+  }
+}
+
+void volume_properties(const TopoDS_Shape& shape, bool splines, GProp_GProps& properties) {
+  if (splines) {
+    BRepGProp::VolumeProperties(shape, properties, kPropertiesPrecision);
+  } else {
+    BRepGProp::VolumeProperties(shape, properties);
+  }
+}
 
 bool holds_one_solid(const TopoDS_Shape& shape) {
   const int solids = count_of(shape, TopAbs_SOLID);
@@ -238,6 +278,7 @@ SweptSolid swept_solid_from_shape(const TopoDS_Shape& shape, const std::string& 
       tolerance = std::max(tolerance, 2.0 * BRep_Tool::Tolerance(TopoDS::Vertex(it.Current())));
     }
     out.solid = the_solid(shape, numbers, tolerance);
+    out.splines = has_splines(out.solid);
     out.faces.resize(static_cast<size_t>(numbers.Extent()));
 
     std::vector<CapFace> planar;
@@ -249,24 +290,25 @@ SweptSolid swept_solid_from_shape(const TopoDS_Shape& shape, const std::string& 
       out.faces[static_cast<size_t>(number - 1)] = face;
       gp_Dir normal;
       if (planar_face_normal(face, &normal)) {
-        planar.push_back(cap_face(face, number, normal));
+        planar.push_back(cap_face(face, number, normal, out.splines));
         continue;
       }
       // A cylinder can be a side face (an extruded arc, a drilled hole), if it runs along the sweep.
-      const BRepAdaptor_Surface surface(face);
-      if (surface.GetType() != GeomAbs_Cylinder) {
+      // (A B-spline surface that is a cylinder too: edge_curve.h, face_cylinder.)
+      gp_Cylinder cylinder;
+      if (!face_cylinder(face, &cylinder)) {
         throw InputError(face_name(number) + " is curved (" + with_article(surface_name(face)) +
                          "): a swept solid's faces are planar, or cylinders along the sweep");
       }
-      cylinders.push_back({number, surface.Cylinder().Axis().Direction()});
+      cylinders.push_back({number, cylinder.Axis().Direction()});
     }
     std::sort(planar.begin(), planar.end(), [](const CapFace& a, const CapFace& b) { return a.number < b.number; });
 
     GProp_GProps volume;
-    BRepGProp::VolumeProperties(out.solid, volume);
+    volume_properties(out.solid, out.splines, volume);
     out.volume = volume.Mass();
     GProp_GProps area;
-    BRepGProp::SurfaceProperties(out.solid, area);
+    surface_properties(out.solid, out.splines, area);
     out.area = area.Mass();
 
     std::optional<CapTrial> best, failed;

@@ -3,6 +3,7 @@
 // every mesh conformal by the independent check, volumes exact, the prism blocks conformal.
 #include "support/catch_torch.h"
 
+#include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
@@ -204,6 +205,26 @@ TEST_CASE("swept solids with cylinder sides (drilled holes, rounded edges): conf
       CHECK(on >= 2 * 24 * 4);
     }
   }
+}
+
+TEST_CASE("a swept solid whose every surface and curve is a B-spline meshes as its canonical twin", "[solid][hex][api][arc]") {
+  // As CATIA writes a drilled plate: its holes' walls B-spline surfaces (edge_curve.h, face_cylinder),
+  // its circles B-splines; its areas and volume integrated precisely (kPropertiesPrecision).
+  const TopoDS_Shape canonical = BRepPrimAPI_MakePrism(plate_with_holes(12, 8, {{3, 4, 1.5}, {8.5, 3.5, 1}}), gp_Vec(0, 0, 2.5)).Shape();
+  const TopoDS_Shape nurbs = BRepBuilderAPI_NurbsConvert(canonical, true).Shape();
+  const SweptSolid solid = swept_solid_from_shape(nurbs, "NURBS plate");
+  size_t splines = 0;
+  for (const TopoDS_Face& f : solid.faces) splines += !f.IsNull() && surface_name(f) == "B-spline surface";
+  CHECK(splines >= 6);
+  CHECK(solid.sweep.Magnitude() == Approx(2.5));
+  SolidMeshOptions o;
+  o.layers = 3;
+  const SolidMeshing m = mesh_swept_solid(solid, DecomposeSettings{}, o);
+  INFO(m.conformity.problem);
+  CHECK(m.conformity.conformal);
+  const SolidMeshing reference = mesh_swept_solid(swept_solid_from_shape(canonical, "plate"), DecomposeSettings{}, o);
+  CHECK(m.mesh.hexes.size() == reference.mesh.hexes.size());
+  CHECK(m.conformity.hex_volume == Approx(reference.conformity.hex_volume).epsilon(1e-6));
 }
 
 TEST_CASE("swept solid requests: layers, grading and sizes that cannot be met are input errors", "[solid][hex][api]") {

@@ -6,6 +6,8 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepAdaptor_Curve.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -15,7 +17,9 @@
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <gp_Cylinder.hxx>
 #include <gp_Pln.hxx>
+#include <gp_Vec.hxx>
 
 #include <cmath>
 #include <string>
@@ -148,4 +152,30 @@ TEST_CASE("edge_curve: a face converted wholly to NURBS reads as the same face",
   CHECK(read.region.outer().size() == original.region.outer().size());
   // The straight sides are lines to the frame too: the plate keeps the model's axes.
   CHECK(read.frame.identity());
+}
+
+TEST_CASE("face_cylinder: a B-spline surface that is a cylinder is one, a plane or a cone is not", "[geometry][occt][arc]") {
+  const TopoDS_Shape drilled = BRepPrimAPI_MakePrism(plate_with_holes(12, 8, {{3, 4, 1.5}}), gp_Vec(0, 0, 2.5)).Shape();
+  const TopoDS_Shape nurbs = BRepBuilderAPI_NurbsConvert(drilled, true).Shape();
+  int walls = 0, flat = 0;
+  for (TopExp_Explorer it(nurbs, TopAbs_FACE); it.More(); it.Next()) {
+    const TopoDS_Face face = TopoDS::Face(it.Current());
+    gp_Cylinder cylinder;
+    if (!face_cylinder(face, &cylinder)) {
+      ++flat;
+      continue;
+    }
+    ++walls;
+    CHECK(cylinder.Radius() == Approx(1.5).epsilon(1e-9));
+    CHECK(std::fabs(cylinder.Axis().Direction().Z()) == Approx(1.0));
+    CHECK(std::hypot(cylinder.Location().X() - 3, cylinder.Location().Y() - 4) < 1e-9);
+  }
+  CHECK(walls >= 1);
+  CHECK(flat == 6);
+  // A cone's wall, stored as a B-spline, is no cylinder.
+  const TopoDS_Shape cone = BRepBuilderAPI_NurbsConvert(BRepPrimAPI_MakeCone(2.0, 1.0, 3.0).Shape(), true).Shape();
+  for (TopExp_Explorer it(cone, TopAbs_FACE); it.More(); it.Next()) {
+    gp_Cylinder cylinder;
+    CHECK_FALSE(face_cylinder(TopoDS::Face(it.Current()), &cylinder));
+  }
 }
