@@ -104,6 +104,16 @@ int FaceArcs::arc_of_point(Point2 p) const {
   return -1;
 }
 
+bool FaceArcs::at_arc_end(Point2 p) const {
+  for (const CircularArc& arc : arcs) {
+    const double near = std::max(1e-9 * arc.radius, tolerance);
+    for (const Point2 end : {arc.first(), arc.last()}) {
+      if (std::hypot(p.x - end.x, p.y - end.y) <= near) return true;
+    }
+  }
+  return false;
+}
+
 namespace {
 
 // The angle between a and b as seen from the arc's centre, in [0, pi].

@@ -116,6 +116,10 @@ struct FaceArcs {
   // Inputs: p. Output: the index of an arc whose polygon p lies on (point_on_arc_polygon within
   //         tolerance: a sample, a point of a chord, or a point already on the arc), or -1.
   int arc_of_point(Point2 p) const;
+  // Inputs: p. Output: true when p is an arc's end (within tolerance, and at least 1e-9 of its radius):
+  //         a vertex of the face (where two arcs of one circle meet, as CAD systems split a hole's
+  //         circle in halves, or a full circle's seam), which keeps its mesh node.
+  bool at_arc_end(Point2 p) const;
   // Inputs: a, b, the ends of a straight segment. Output: the index of an arc whose polygon both ends
   //         and the middle lie on, the ends at most two chord steps apart as seen from the centre (so
   //         a diameter, or a cut across the circle, is no chord of it), or -1.

@@ -153,24 +153,23 @@ bool face_cylinder(const TopoDS_Face& face, gp_Cylinder* cylinder) {
     const BRepAdaptor_Curve curve(edge);
     size = std::max(size, curve.Value(curve.FirstParameter()).Distance(curve.Value(curve.LastParameter())));
   }
+  std::vector<EdgeCurve> shapes;
+  for (const TopoDS_Edge& edge : edges) shapes.push_back(edge_curve(edge, size));
   // The axis's direction from a straight edge, the circle from a circular one square to it.
   std::optional<gp_Dir> axis;
-  for (const TopoDS_Edge& edge : edges) {
-    if (edge_curve(edge, size).shape != EdgeShape::Line) continue;
-    const BRepAdaptor_Curve curve(edge);
+  for (size_t k = 0; k < edges.size() && !axis; ++k) {
+    if (shapes[k].shape != EdgeShape::Line) continue;
+    const BRepAdaptor_Curve curve(edges[k]);
     const gp_Vec along(curve.Value(curve.FirstParameter()), curve.Value(curve.LastParameter()));
     if (along.Magnitude() > tolerance) axis = gp_Dir(along);
-    if (axis) break;
   }
   if (!axis) return false;
-  for (const TopoDS_Edge& edge : edges) {
-    const EdgeCurve curve = edge_curve(edge, size);
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  for (const EdgeCurve& curve : shapes) {
     if (curve.shape != EdgeShape::Circle) continue;
     if (std::fabs(std::fabs(curve.circle.Axis().Direction().Dot(*axis)) - 1.0) > 1e-6) continue;
-    const gp_Cylinder candidate(gp_Ax3(curve.circle.Location(), *axis), curve.circle.Radius());
     const double limit = std::max(tolerance, kRecognitionRelative * 2.0 * curve.circle.Radius());
-    double u0, u1, v0, v1;
-    BRepTools::UVBounds(face, u0, u1, v0, v1);
     bool on = true;
     for (int i = 0; i <= 8 && on; ++i) {
       for (int j = 0; j <= 8 && on; ++j) {
@@ -181,7 +180,7 @@ bool face_cylinder(const TopoDS_Face& face, gp_Cylinder* cylinder) {
       }
     }
     if (on) {
-      *cylinder = candidate;
+      *cylinder = gp_Cylinder(gp_Ax3(curve.circle.Location(), *axis), curve.circle.Radius());
       return true;
     }
   }

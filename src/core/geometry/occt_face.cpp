@@ -95,14 +95,15 @@ gp_Pln face_plane(const TopoDS_Face& face) {
   return plane;
 }
 
-// The face's tolerance (see tolerance.h) from its bounding box, for messages before its polygon is checked.
-double face_tolerance(const TopoDS_Face& face) {
+// The longer side of the face's bounding box in X and Y (0 for an empty face): its tolerance
+// (tolerance.h) for messages before its polygon is checked, and the recognition tolerance's scale.
+double face_box_size(const TopoDS_Face& face) {
   Bnd_Box box;
   BRepBndLib::Add(face, box, false);
   if (box.IsVoid()) return 0.0;
   double xmin, ymin, zmin, xmax, ymax, zmax;
   box.Get(xmin, ymin, zmin, xmax, ymax, zmax);
-  return tolerance_for_size(std::max(xmax - xmin, ymax - ymin));
+  return std::max(xmax - xmin, ymax - ymin);
 }
 
 TopoDS_Wire polygon_wire(const Ring& ring, double z) {
@@ -142,21 +143,13 @@ FaceRings read_face_rings(const TopoDS_Face& face) {
   result.z = plane.Location().Z();
   result.approximate = BRepAdaptor_Surface(face, false).GetType() != GeomAbs_Plane;
 
-  const double tol = face_tolerance(face);
-  const double face_size = tol / kRelativeTolerance;
+  const double face_size = face_box_size(face);
+  const double tol = tolerance_for_size(face_size);
   const TopoDS_Wire outer = BRepTools::OuterWire(face);
   int inner_count = 0;
-  // Each wire's edges in order: the start point, its z, and the arc it begins (index into arcs) or -1.
-  struct Entry {
-    Point2 start;
-    double z = 0.0;
-    int arc = -1;
-    double tolerance = 0.0;  // the start vertex's
-  };
-  std::vector<std::vector<Entry>> wire_entries;
   for (TopExp_Explorer wires(face, TopAbs_WIRE); wires.More(); wires.Next()) {
     const TopoDS_Wire wire = TopoDS::Wire(wires.Current());
-    std::vector<Entry> entries;
+    std::vector<FaceRings::Edge> entries;
     RawRing ring;
     ring.name = wire.IsSame(outer) ? "outer wire" : "inner wire " + std::to_string(++inner_count);
     int edge_count = 0;
@@ -184,7 +177,7 @@ FaceRings read_face_rings(const TopoDS_Face& face) {
         // inside the circle when the arc runs counter-clockwise around it, seen so.
         arc.outside = (arc.sweep > 0) != result.normal_up;
         // (Its samples are added below, once the face's size says whether it is a short arc.)
-        entries.push_back({Point2{start.X(), start.Y()}, start.Z(), static_cast<int>(result.arcs.size()), start_tolerance});
+        entries.push_back({Point2{start.X(), start.Y()}, static_cast<int>(result.arcs.size()), start.Z(), start_tolerance});
         result.arcs.push_back(arc);
         continue;
       }
@@ -201,23 +194,21 @@ FaceRings read_face_rings(const TopoDS_Face& face) {
                          format_point(a.X(), a.Y(), tol) + " to " + format_point(b.X(), b.Y(), tol) + ", is " + what +
                          "; only straight edges and circular arcs are supported");
       }
-      entries.push_back({Point2{start.X(), start.Y()}, start.Z(), -1, start_tolerance});
+      entries.push_back({Point2{start.X(), start.Y()}, -1, start.Z(), start_tolerance});
     }
     if (walked != edge_count || !BRep_Tool::IsClosed(wire)) {
       throw InputError("the " + ring.name + " is not a closed chain of edges");
     }
     result.rings.push_back(std::move(ring));
-    result.edges.emplace_back();
-    for (const Entry& e : entries) result.edges.back().push_back({e.start, e.arc});
-    wire_entries.push_back(std::move(entries));
+    result.edges.push_back(std::move(entries));
   }
   // The face's size: the longer side of the box of its vertices and its arcs' default samples.
   double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
   auto extend = [&](Point2 p) {
     xmin = std::min(xmin, p.x), xmax = std::max(xmax, p.x), ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
   };
-  for (const std::vector<Entry>& entries : wire_entries) {
-    for (const Entry& e : entries) extend(e.start);
+  for (const std::vector<FaceRings::Edge>& loop : result.edges) {
+    for (const FaceRings::Edge& e : loop) extend(e.start);
   }
   for (const CircularArc& arc : result.arcs) {
     for (const Point2& p : polygonise_arc(arc)) extend(p);
@@ -227,18 +218,12 @@ FaceRings read_face_rings(const TopoDS_Face& face) {
     if (short_arc(arc, box_size)) arc.chords = 1;
   }
   // The loops: each straight edge's start; each arc's start and its polygon's inner points.
-  for (size_t w = 0; w < wire_entries.size(); ++w) {
-    for (const Entry& e : wire_entries[w]) {
+  for (size_t w = 0; w < result.edges.size(); ++w) {
+    for (const FaceRings::Edge& e : result.edges[w]) {
       result.rings[w].points.push_back(e.start);
-      result.vertex_z.push_back(e.z);
-      result.vertex_tolerance.push_back(e.tolerance);
       if (e.arc < 0) continue;
       const std::vector<Point2> polygon = polygonise_arc(result.arcs[static_cast<size_t>(e.arc)]);
-      for (size_t k = 1; k + 1 < polygon.size(); ++k) {
-        result.rings[w].points.push_back(polygon[k]);
-        result.vertex_z.push_back(e.z);
-        result.vertex_tolerance.push_back(e.tolerance);
-      }
+      for (size_t k = 1; k + 1 < polygon.size(); ++k) result.rings[w].points.push_back(polygon[k]);
     }
   }
   return result;
@@ -278,11 +263,12 @@ TopoDS_Face face_from_rings(const FaceRings& rings) {
 }
 
 void check_vertices_on_plane(const FaceRings& rings, double tolerance) {
-  for (size_t k = 0; k < rings.vertex_z.size(); ++k) {
-    const double own = k < rings.vertex_tolerance.size() ? rings.vertex_tolerance[k] : 0.0;
-    if (std::fabs(rings.vertex_z[k] - rings.z) > std::max({tolerance, 1e-7, own})) {
-      throw InputError("a vertex of the face lies off its plane z = " + format_number(rings.z, tolerance) + " by " +
-                       format_significant(std::fabs(rings.vertex_z[k] - rings.z), 2));
+  for (const std::vector<FaceRings::Edge>& loop : rings.edges) {
+    for (const FaceRings::Edge& e : loop) {
+      if (std::fabs(e.z - rings.z) > std::max({tolerance, 1e-7, e.tolerance})) {
+        throw InputError("a vertex of the face lies off its plane z = " + format_number(rings.z, tolerance) + " by " +
+                         format_significant(std::fabs(e.z - rings.z), 2));
+      }
     }
   }
 }
@@ -316,7 +302,7 @@ Placement face_frame(const TopoDS_Face& face) {
     gp_Pnt a, b;
   };
   std::vector<Line> lines;
-  const double face_size = face_tolerance(face) / kRelativeTolerance;
+  const double face_size = face_box_size(face);
   for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
     const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
     if (BRep_Tool::Degenerated(edge) || edge_curve(edge, face_size).shape != EdgeShape::Line) continue;

@@ -20,15 +20,15 @@ struct FaceRings {
   std::vector<RawRing> rings;    // outer wire first, then the holes, each vertex once, in wire order
   double z = 0.0;                // the face's plane
   bool normal_up = true;         // the face's normal is +Z (false: -Z)
-  std::vector<double> vertex_z;  // z of every vertex read
-  // the OpenCASCADE tolerance of each (an arc's samples: its start vertex's), as vertex_z
-  std::vector<double> vertex_tolerance;
   std::vector<CircularArc> arcs; // the circular edges, each also in its ring as its samples
                                  // (circular_arc.h: polygonise_arc without its last point)
-  // Each wire's edges in order: its start vertex, and the arc it is (index into arcs) or -1 (a line).
+  // Each wire's edges in order: its start vertex, the arc it is (index into arcs) or -1 (a line), and
+  // the start vertex's z and OpenCASCADE tolerance (its arc's samples share them).
   struct Edge {
     Point2 start;
     int arc = -1;
+    double z = 0.0;
+    double tolerance = 0.0;
   };
   std::vector<std::vector<Edge>> edges;
   // The face as stored is only approximately what was read: its surface is not a plane (a spline

@@ -192,15 +192,10 @@ void merge_arc_chains(BlockModel& model, const FaceArcs& arcs) {
       corner[static_cast<size_t>(side.forward.front() ? first.a : first.b)] = 1;
     }
   }
-  // An arc's ends are vertices of the face (where two arcs of one circle meet, say, as CAD systems
-  // split a hole's circle in halves): no chain runs past one, so that each keeps its node.
+  // An arc's ends are vertices of the face (FaceArcs::at_arc_end): no chain runs past one, so that
+  // each keeps its node.
   for (size_t v = 0; v < model.vertices.size(); ++v) {
-    const Point2 p = model.vertices[v];
-    for (const CircularArc& arc : arcs.arcs) {
-      for (const Point2 end : {arc.first(), arc.last()}) {
-        if (std::hypot(p.x - end.x, p.y - end.y) <= arcs.tolerance) corner[v] = 1;
-      }
-    }
+    if (arcs.at_arc_end(model.vertices[v])) corner[v] = 1;
   }
   for (size_t e = 0; e < edge_count; ++e) {
     const ModelEdge& edge = model.edges[e];

@@ -71,12 +71,7 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
     }
     // A node at an arc's end (a vertex of the face where two arcs of one circle meet, as CAD systems
     // split a hole's circle into halves) keeps its place: the face's vertices keep their nodes.
-    bool arc_end = false;
-    for (size_t k = 0; arcs && k < arcs->arcs.size() && !arc_end; ++k) {
-      const CircularArc& arc = arcs->arcs[k];
-      const double near = std::max(1e-9 * arc.radius, arcs->tolerance);
-      arc_end = std::hypot(pv.x - arc.first().x, pv.y - arc.first().y) <= near || std::hypot(pv.x - arc.last().x, pv.y - arc.last().y) <= near;
-    }
+    const bool arc_end = arcs && arcs->at_arc_end(pv);
     for (size_t k = 0; arcs && k < arcs->arcs.size() && !slides[v] && !arc_end; ++k) {
       const CircularArc& arc = arcs->arcs[k];
       if (!(arc.radius > 0.0) || !on_circle(pv, arc) || !on_circle(pa, arc) || !on_circle(pb, arc)) continue;
