@@ -25,6 +25,11 @@
 
 namespace autoblock {
 
+// Seconds GLPK's branch and bound has before its best assignment so far stands (it finds a good one
+// at once on every model measured, then may spend its whole limit proving it best); a program with
+// none by then gets the rest of IntervalOptions::time_limit.
+constexpr double kIntervalQuickLimit = 1.0;
+
 // Inputs:  model; a, b, the ends of a stretch along model edges (straight, within tolerance);
 //          intervals, its count; tolerance.
 // Outputs: the fixed count on the model edges that make up the stretch (FixedIntervals::strips holds
@@ -33,7 +38,8 @@ namespace autoblock {
 //          vertices: corners of blocks or T-junctions) or the count is below 1.
 FixedIntervals fixed_edge_intervals(const BlockModel& model, Point2 a, Point2 b, int intervals, double tolerance);
 
-// Inputs:  model; options (target size h, fixed counts over edges, the quad limit, GLPK's time).
+// Inputs:  model; options (target size h, fixed counts over edges, the quad limit, GLPK's time:
+//          kIntervalQuickLimit, then the rest of options.time_limit only when nothing was found).
 // Outputs: the counts per model edge (IntervalAssignment::intervals indexed by edge, worst_strip an
 //          edge) and the deviation figures.
 // Throws InputError when h is not a positive finite number, the mesh would exceed max_quads or the

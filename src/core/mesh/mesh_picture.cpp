@@ -61,6 +61,12 @@ std::string mesh_svg(const std::vector<Ring>& loops, const std::vector<Ring>& bl
     ring_path(blocks[b]);
     svg << "\"/>\n";
   }
+  // The face's holes over them: a part finished around a hole (the O-grid) is drawn by its outer ring.
+  if (loops.size() > 1) {
+    svg << "<path fill=\"white\" d=\"";
+    for (size_t k = 1; k < loops.size(); ++k) ring_path(loops[k]);
+    svg << "\"/>\n";
+  }
   svg << "<path fill=\"none\" stroke=\"#444\" stroke-width=\"0.6\" d=\"";
   for (const MeshEdge& e : mesh_edges(mesh)) {
     const Point2& a = mesh.nodes[static_cast<size_t>(e.a)];

@@ -2,7 +2,8 @@
 //
 // Blocks are filled in the colours of the decomposition pictures (svg_picture.h), mesh edges are
 // thin dark lines, block sides thicker, the face's outline (holes included) thickest; y points up
-// as in the model.
+// as in the model. The face's holes are filled white over the blocks: a part finished around a hole
+// (the O-grid template) is given by its outer ring, which would paint the hole over.
 #pragma once
 
 #include <string>

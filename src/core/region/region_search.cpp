@@ -31,6 +31,16 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
   const auto now = std::chrono::steady_clock::now();
   const bool late = options_.time_limit > 0.0 && now > deadline_;
   if (late) capped_ = true;
+  if (options_.divide_holes && static_cast<int>(part.holes().size()) >= kDivideHoles) {
+    if (const std::optional<HoleDivision> division = divide_holes(part)) {
+      Entry entry;
+      entry.action = {RegionAction::Kind::Cut, division->cut};
+      entry.value = region_cut_reward(options.reward, division->outcome, face_size, options.rules);
+      for (const Region& piece : division->outcome.pieces) entry.value += solve(piece, options, face_size);
+      memo_[part] = entry;
+      return entry.value;
+    }
+  }
   // Past the budget, parts are finished greedily: the best immediate reward taken (no lookahead),
   // which costs about what the greedy policy does on the parts left. Each part's scoring then stops
   // after its slice (late_slice: a part of hundreds of vertices, a plate with scores of holes, has

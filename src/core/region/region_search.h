@@ -20,12 +20,16 @@
 // reflex vertices; under Eq. (1) none) is not expanded, and a candidate whose reward's bound from its
 // chords (region_cut_reward_bound) shows it cannot be among the `width` best is not cut: the same
 // decisions, fewer parts solved and cut.
+// A part with kDivideHoles holes or more (a perforated plate) is not searched: it is divided along the
+// ligaments between its holes (divide_holes, hole_division.h), by geometry alone, and its pieces are
+// solved as parts; only where no line divides it is it searched like any other.
 #pragma once
 
 #include <chrono>
 #include <string>
 #include <unordered_map>
 
+#include "core/region/hole_division.h"
 #include "core/region/region_policy.h"
 
 namespace autoblock {
@@ -44,6 +48,7 @@ struct RegionSearchOptions {
   double time_limit = 2.0;    // seconds per face; 0: no limit
   bool prune = true;          // branch and bound and bounded scoring, mesh preset (same decisions; false for tests)
   bool taper = true;          // mesh preset: cuts charged for the taper of the blocks they leave, in ranking and values (false: the reward alone)
+  bool divide_holes = true;   // a part with kDivideHoles holes or more is divided along its ligaments (hole_division.h), not searched
 };
 
 class RegionSearchPolicy : public RegionPolicy {

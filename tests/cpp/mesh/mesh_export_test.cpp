@@ -145,3 +145,18 @@ TEST_CASE("mesh pictures: SVG, and PNG rasterised from it", "[mesh][export][pict
   CHECK(test::slurp_file(folder + "/p.svg") == svg);
   CHECK_THROWS_WITH(write_picture(folder + "/p.jpg", svg), Contains("expected a .svg or .png file"));
 }
+
+TEST_CASE("a mesh picture leaves the face's holes white under a part finished around them", "[mesh][export][picture]") {
+  const Ring outer{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, hole{{1, 1}, {1, 3}, {3, 3}, {3, 1}};
+  const std::string svg = mesh_svg({outer, hole}, {outer}, QuadMesh{}, "a part with a hole");
+  const size_t part = svg.find("<path fill=\"#");
+  const size_t white = svg.find("<path fill=\"white\" d=\"M");
+  REQUIRE(part != std::string::npos);
+  REQUIRE(white != std::string::npos);
+  CHECK(white > part);  // drawn over the part's fill
+  const std::string path = svg.substr(white, svg.find("\"/>", white) - white);
+  CHECK(std::count(path.begin(), path.end(), 'M') == 1);  // the hole alone, not the outer loop
+  CHECK(std::count(path.begin(), path.end(), 'L') == 3);
+  // A face without holes has no such path.
+  CHECK(mesh_svg({outer}, {outer}, QuadMesh{}, "no hole").find("fill=\"white\" d=") == std::string::npos);
+}

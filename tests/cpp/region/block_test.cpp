@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/geometry/rectilinear_polygon.h"
+#include "support/test_shapes.h"
 
 using namespace autoblock;
 
@@ -160,16 +161,7 @@ TEST_CASE("the scaled Jacobian bound of a face's corners", "[region][block]") {
 TEST_CASE("the O-grid template: a box around a round hole, twelve pieces", "[region][block][arc]") {
   // A 10 x 6 plate with a hole of radius 1.5 at (4, 3), its circle as the face reader gives it
   // (circumscribed: the polygon's vertices lie just outside the circle).
-  auto round_hole = [](double x, double y, double r) {
-    CircularArc arc;
-    arc.center = {x, y};
-    arc.radius = r;
-    arc.sweep = -2.0 * M_PI;
-    arc.outside = true;
-    Ring ring = polygonise_arc(arc);
-    ring.pop_back();
-    return ring;
-  };
+  auto round_hole = [](double x, double y, double r) { return test::round_hole({x, y}, r); };
   const Ring plate{{0, 0}, {10, 0}, {10, 6}, {0, 6}};
   const Region part(plate, {round_hole(4, 3, 1.5)}, kQ);
   REQUIRE(template_applies(part));

@@ -6,6 +6,7 @@
 #include <system_error>
 #include <vector>
 
+#include "core/geometry/circular_arc.h"
 #include "core/geometry/tolerance.h"
 #include "core/geometry/validate_polygon.h"
 #include "core/region/region_candidates.h"
@@ -32,6 +33,17 @@ std::vector<GeneratedShape> generated_shapes(int count, std::uint64_t seed, cons
   std::vector<GeneratedShape> shapes;
   for (int k = 0; k < count; ++k) shapes.push_back(generate_shape(rng, options));
   return shapes;
+}
+
+Ring round_hole(Point2 c, double r) {
+  CircularArc arc;
+  arc.center = c;
+  arc.radius = r;
+  arc.sweep = -2.0 * M_PI;
+  arc.outside = true;
+  Ring ring = polygonise_arc(arc);
+  ring.pop_back();  // a full circle ends where it starts
+  return ring;
 }
 
 RectilinearPolygon general_polygon(std::uint64_t seed, GeneralKind kind, bool holes) {

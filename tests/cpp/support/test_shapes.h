@@ -23,6 +23,10 @@ Ring l_shape();
 Ring square3();
 Ring centre_hole();
 
+// Inputs: centre c, radius r. Output: a round hole as the region engine reads one: the circle's
+// samples (polygonise_arc), clockwise, the closing point left out.
+Ring round_hole(Point2 c, double r);
+
 // Inputs: count, seed, options. Output: that many generated shapes.
 std::vector<GeneratedShape> generated_shapes(int count, std::uint64_t seed, const GeneratorOptions& options);
 

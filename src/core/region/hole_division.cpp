@@ -1,0 +1,240 @@
+#include "core/region/hole_division.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <tuple>
+#include <vector>
+
+#include "core/region/block.h"
+
+namespace autoblock {
+namespace {
+
+constexpr double kAngleSame = 2.0 * M_PI / 180.0;  // directions within this are one (up to sign)
+constexpr double kAligned = 1.0 * M_PI / 180.0;    // a line this near parallel or square to an edge is aligned
+constexpr double kMinMeeting = 60.0 * M_PI / 180.0;  // the least angle a line may meet the outer loop at
+constexpr double kLeastClearance = 0.1;  // no line nearer a hole than this times the larger radius beside it
+constexpr size_t kEdgeDirections = 4;
+constexpr size_t kNeighbourDirections = 6;
+
+Point2 unit(Point2 d) {
+  const double len = std::hypot(d.x, d.y);
+  return {d.x / len, d.y / len};
+}
+double dot(Point2 a, Point2 b) { return a.x * b.x + a.y * b.y; }
+
+// The angle of a line's direction, in [0, pi).
+double line_angle(Point2 u) {
+  double a = std::atan2(u.y, u.x);
+  if (a < 0.0) a += M_PI;
+  if (a >= M_PI) a -= M_PI;
+  return a;
+}
+
+// The difference of two line angles, in [0, pi / 2].
+double angle_between(double a, double b) {
+  double d = std::fabs(a - b);
+  d = std::fmod(d, M_PI);
+  return std::min(d, M_PI - d);
+}
+
+struct Gap {
+  Point2 direction;  // along the line
+  double offset = 0.0;  // the line's position across it (dot with the normal)
+  bool roomy = false;   // clearance at least half the larger radius beside it
+  bool aligned = false;
+  int smaller_side = 0;
+  double clearance = 0.0;  // over the larger radius beside it
+};
+
+bool better(const Gap& a, const Gap& b) {
+  return std::make_tuple(a.roomy, a.aligned, a.smaller_side, a.clearance) >
+         std::make_tuple(b.roomy, b.aligned, b.smaller_side, b.clearance);
+}
+
+// Inputs: part; p, a point on its boundary. Output: the unit direction of the boundary segment nearest p.
+Point2 segment_direction_at(const Region& part, Point2 p) {
+  double best = std::numeric_limits<double>::infinity();
+  Point2 direction{1.0, 0.0};
+  for (const Ring& ring : part.loops()) {
+    for (size_t i = 0; i < ring.size(); ++i) {
+      const Point2 a = ring[i], b = ring[(i + 1) % ring.size()];
+      const Point2 ab{b.x - a.x, b.y - a.y};
+      const double len2 = dot(ab, ab);
+      if (!(len2 > 0.0)) continue;
+      const double t = std::clamp(dot({p.x - a.x, p.y - a.y}, ab) / len2, 0.0, 1.0);
+      const double d = std::hypot(a.x + t * ab.x - p.x, a.y + t * ab.y - p.y);
+      if (d < best) {
+        best = d;
+        direction = unit(ab);
+      }
+    }
+  }
+  return direction;
+}
+
+// True when every chord meets the part's boundary at kMinMeeting or more at both ends.
+bool meets_square_enough(const Region& part, const std::vector<Chord>& chords) {
+  for (const Chord& chord : chords) {
+    const Point2 u = unit({chord.b.x - chord.a.x, chord.b.y - chord.a.y});
+    for (const Point2 end : {chord.a, chord.b}) {
+      const Point2 e = segment_direction_at(part, end);
+      if (std::fabs(u.x * e.y - u.y * e.x) < std::sin(kMinMeeting)) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<HoleDivision> divide_holes(const Region& part) {
+  const std::vector<Ring>& holes = part.holes();
+  const size_t k = holes.size();
+  if (k < 2) return std::nullopt;
+
+  // The part's long straight edges, longest first.
+  const OrientedRectangle frame = min_area_rectangle(part);
+  std::vector<std::pair<double, double>> edges;  // (length, line angle)
+  const Ring& outer = part.outer();
+  for (size_t i = 0; i < outer.size(); ++i) {
+    const Point2 a = outer[i], b = outer[(i + 1) % outer.size()];
+    const double length = std::hypot(b.x - a.x, b.y - a.y);
+    if (length >= 0.1 * frame.longer_side()) edges.push_back({length, line_angle({b.x - a.x, b.y - a.y})});
+  }
+  std::stable_sort(edges.begin(), edges.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<double> edge_angles;
+  for (const auto& edge : edges) {
+    bool seen = false;
+    for (const double a : edge_angles) seen = seen || angle_between(a, edge.second) < kAngleSame;
+    if (!seen) edge_angles.push_back(edge.second);
+    if (edge_angles.size() == kEdgeDirections) break;
+  }
+
+  // Each hole's centre (the mean of its vertices) and the direction to its nearest neighbour.
+  std::vector<Point2> centre(k);
+  for (size_t h = 0; h < k; ++h) {
+    double x = 0.0, y = 0.0;
+    for (const Point2& v : holes[h]) {
+      x += v.x;
+      y += v.y;
+    }
+    centre[h] = {x / static_cast<double>(holes[h].size()), y / static_cast<double>(holes[h].size())};
+  }
+  std::vector<std::pair<int, double>> neighbour_angles;  // (count, angle), clustered
+  for (size_t h = 0; h < k; ++h) {
+    double nearest = std::numeric_limits<double>::infinity();
+    Point2 to{1.0, 0.0};
+    for (size_t g = 0; g < k; ++g) {
+      const double d = std::hypot(centre[g].x - centre[h].x, centre[g].y - centre[h].y);
+      if (g != h && d < nearest) {
+        nearest = d;
+        to = {centre[g].x - centre[h].x, centre[g].y - centre[h].y};
+      }
+    }
+    const double a = line_angle(to);
+    bool seen = false;
+    for (auto& cluster : neighbour_angles) {
+      if (angle_between(cluster.second, a) < kAngleSame) {
+        ++cluster.first;
+        seen = true;
+        break;
+      }
+    }
+    if (!seen) neighbour_angles.push_back({1, a});
+  }
+  std::stable_sort(neighbour_angles.begin(), neighbour_angles.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
+
+  // The candidate directions of the lines, each once.
+  std::vector<double> angles;
+  auto add = [&](double a) {
+    a = std::fmod(a + 2.0 * M_PI, M_PI);
+    for (const double b : angles) {
+      if (angle_between(a, b) < kAngleSame) return;
+    }
+    angles.push_back(a);
+  };
+  for (const double a : edge_angles) {
+    add(a);
+    add(a + 0.5 * M_PI);
+  }
+  add(line_angle(frame.axis));
+  add(line_angle(frame.axis) + 0.5 * M_PI);
+  for (size_t i = 0; i < neighbour_angles.size() && i < kNeighbourDirections; ++i) {
+    add(neighbour_angles[i].second);
+    add(neighbour_angles[i].second + 0.5 * M_PI);
+  }
+
+  // Every gap along every direction.
+  std::vector<Gap> gaps;
+  struct Extent {
+    double lo, hi, radius;
+  };
+
+  std::vector<Extent> extent(k);
+  for (const double a : angles) {
+    const Point2 u{std::cos(a), std::sin(a)}, n{-u.y, u.x};
+    bool aligned = false;
+    for (const double e : edge_angles) {
+      const double d = angle_between(a, e);
+      aligned = aligned || d < kAligned || std::fabs(d - 0.5 * M_PI) < kAligned;
+    }
+    for (size_t h = 0; h < k; ++h) {
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (const Point2& v : holes[h]) {
+        lo = std::min(lo, dot(n, v));
+        hi = std::max(hi, dot(n, v));
+      }
+      extent[h] = {lo, hi, 0.5 * (hi - lo)};
+    }
+    std::sort(extent.begin(), extent.end(), [](const Extent& x, const Extent& y) { return x.lo < y.lo; });
+    double reach = extent[0].hi, reach_radius = extent[0].radius;
+    for (size_t j = 1; j < k; ++j) {
+      if (reach < extent[j].lo) {
+        const double radius = std::max(reach_radius, extent[j].radius);
+        const double clearance = 0.5 * (extent[j].lo - reach) / radius;
+        if (clearance >= kLeastClearance) {
+          Gap gap;
+          gap.direction = u;
+          gap.offset = 0.5 * (reach + extent[j].lo);
+          gap.roomy = clearance >= 0.5;
+          gap.aligned = aligned;
+          gap.smaller_side = static_cast<int>(std::min(j, k - j));
+          gap.clearance = clearance;
+          gaps.push_back(gap);
+        }
+      }
+      if (extent[j].hi > reach) {
+        reach = extent[j].hi;
+        reach_radius = extent[j].radius;
+      }
+    }
+  }
+  std::stable_sort(gaps.begin(), gaps.end(), better);
+
+  // The first line that cuts the part into pieces with fewer holes each. A line's origin is where it
+  // crosses the outer loop (cut_region clips the whole line to the part).
+  for (const Gap& gap : gaps) {
+    const Point2 u = gap.direction, n{-u.y, u.x};
+    std::optional<Point2> origin;
+    for (size_t i = 0; i < outer.size() && !origin; ++i) {
+      const Point2 a = outer[i], b = outer[(i + 1) % outer.size()];
+      const double sa = dot(n, a) - gap.offset, sb = dot(n, b) - gap.offset;
+      if ((sa < 0.0) == (sb < 0.0) || sa == sb) continue;
+      const double t = sa / (sa - sb);
+      origin = Point2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+    }
+    if (!origin) continue;
+    HoleDivision division;
+    division.cut = {CutKind::Full, *origin, u};
+    division.outcome = cut_region(part, division.cut);
+    if (division.outcome.pieces.size() < 2 || !meets_square_enough(part, division.outcome.chords)) continue;
+    bool fewer = true;
+    for (const Region& piece : division.outcome.pieces) fewer = fewer && piece.holes().size() < k;
+    if (fewer) return division;
+  }
+  return std::nullopt;
+}
+
+}  // namespace autoblock

@@ -1,0 +1,59 @@
+// Dividing a part with many holes (a tube sheet, a filter, a perforated disk) along the ligaments
+// between them, before any search.
+//
+// Such a part has thousands of candidate cuts (every hole's samples, every direction), each as costly
+// as the part is large: the search spent its budget on the first parts and finished the rest greedily,
+// leaving slivers (a disk with 89 holes: 1300 blocks, least scaled Jacobian 0.05-0.17, 10 s, and a
+// different mesh each run). An analyst cuts along the ligaments instead, until each hole has a cell of
+// its own, and meshes each cell on its own (an O-grid where the cell is a quadrilateral, block.h).
+// divide_holes chooses such a cut by geometry alone, scoring no cut:
+//   lines    full cuts (region_cut.h) along lines that cross no hole and have holes on both sides:
+//            along a direction u, each hole's extent across u (its vertices projected on u's normal)
+//            is an interval; where the intervals, sorted, leave a gap, the line along u through the
+//            gap's middle separates the holes before it from those after;
+//   directions  the part's long straight edges (at least a tenth of its minimum-area rectangle's
+//            longer side, the longest four) and their normals, the axes of that rectangle, and the
+//            directions from each hole to its nearest neighbour and their normals (the six most
+//            common within 2 degrees: a grid's rows, a staggered grid's, a polar pattern's);
+//   choice   the best by, in turn: the gap's clearance (half its width) at least half the larger
+//            radius of the two holes beside it (room for their O-grids: ogrid_template), the line
+//            parallel or square to a long straight edge of the part (cells with right-angled corners),
+//            more holes on the smaller side (a balanced division: as few levels as holes' logarithm),
+//            the larger clearance relative to that radius. No line nearer a hole than a tenth of that
+//            radius is taken: a staggered grid with ligaments of 0.35 diameters leaves 0.17 between
+//            its rows, and those cells still beat the search's (0.66 against 0.06 on such a plate).
+//            The cut is the first line in that order that cut_region makes (it refuses a line that
+//            grazes a vertex or leaves a sliver), that meets the boundary at 60 degrees or more at
+//            every end of its chords (no sharp wedge between the line and a disk's rim or an earlier
+//            line), and that leaves every piece fewer holes.
+// A hole's extent is its polygon's (circles reach the engine as their samples, circular_arc.h); the
+// true circle bulges past it by the sagitta, far less than any clearance taken.
+// Measured (BENCHMARKS.md, "Perforated plates"): grids, staggered grids and scattered holes in plates
+// divide into good cells; a polar pattern on a disk has no line clear of every hole until the disk's
+// parts are small (a bore in the middle blocks every diameter), so the search still cuts its first
+// parts and such faces gain less.
+// The cut is the same for the same part (no randomness, no clock), so the division repeats exactly.
+#pragma once
+
+#include <optional>
+
+#include "core/region/region_cut.h"
+
+namespace autoblock {
+
+// The search divides a part with at least this many holes (region_search.h); it searches a part with
+// fewer itself, whose candidates hold the cuts between two holes (region_candidates.h).
+constexpr int kDivideHoles = 3;
+
+struct HoleDivision {
+  RegionCut cut;
+  CutOutcome outcome;  // cut_region's: two pieces or more, each with fewer holes than the part
+};
+
+// Inputs:  part.
+// Outputs: the division cut above and its outcome, or nothing when the part has fewer than two holes
+//          or no line in the directions above separates them (holes that overlap across every
+//          direction, a line through the gap that cut_region refuses).
+std::optional<HoleDivision> divide_holes(const Region& part);
+
+}  // namespace autoblock

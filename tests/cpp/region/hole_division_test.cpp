@@ -1,0 +1,145 @@
+#include "core/region/hole_division.h"
+
+#include <cmath>
+#include <functional>
+
+#include <catch2/catch.hpp>
+
+#include "core/region/block.h"
+#include "core/region/region_search.h"
+#include "support/test_shapes.h"
+
+using namespace autoblock;
+using autoblock::test::round_hole;
+
+namespace {
+
+constexpr double kQ = 1e-7;
+
+Point2 turned(Point2 p, double angle) {
+  return {p.x * std::cos(angle) - p.y * std::sin(angle), p.x * std::sin(angle) + p.y * std::cos(angle)};
+}
+
+// A plate nx * pitch by ny * pitch with a hole of radius r in the middle of each pitch square, turned
+// by angle about the origin.
+Region perforated_plate(int nx, int ny, double pitch, double r, double angle) {
+  Ring outer;
+  for (const Point2 p : {Point2{0, 0}, Point2{nx * pitch, 0}, Point2{nx * pitch, ny * pitch}, Point2{0, ny * pitch}}) {
+    outer.push_back(turned(p, angle));
+  }
+  std::vector<Ring> holes;
+  for (int i = 0; i < nx; ++i) {
+    for (int j = 0; j < ny; ++j) holes.push_back(round_hole(turned({(i + 0.5) * pitch, (j + 0.5) * pitch}, angle), r));
+  }
+  return Region(outer, holes, kQ);
+}
+
+// Every part divided again while it has two holes or more; the parts left.
+std::vector<Region> divide_all(const Region& face) {
+  std::vector<Region> cells;
+  std::function<void(const Region&)> divide = [&](const Region& part) {
+    if (part.holes().size() < 2) {
+      cells.push_back(part);
+      return;
+    }
+    const std::optional<HoleDivision> division = divide_holes(part);
+    REQUIRE(division.has_value());
+    REQUIRE(division->outcome.pieces.size() >= 2);
+    for (const Region& piece : division->outcome.pieces) {
+      CHECK(piece.holes().size() < part.holes().size());
+      divide(piece);
+    }
+  };
+  divide(face);
+  return cells;
+}
+
+}  // namespace
+
+TEST_CASE("divide_holes cuts a plate with a grid of round holes into one O-grid cell per hole", "[region][division]") {
+  for (const double angle : {0.0, 0.5236, 1.9}) {
+    INFO("angle " << angle);
+    const Region plate = perforated_plate(4, 3, 10.0, 2.0, angle);
+    // The first cut is the balanced one: between the second and third columns, six holes each side.
+    const std::optional<HoleDivision> first = divide_holes(plate);
+    REQUIRE(first.has_value());
+    REQUIRE(first->outcome.pieces.size() == 2);
+    CHECK(first->outcome.pieces[0].holes().size() == 6);
+    CHECK(first->outcome.pieces[1].holes().size() == 6);
+    REQUIRE(first->outcome.chords.size() == 1);
+    const Chord chord = first->outcome.chords[0];
+    const Point2 a = turned(chord.a, -angle), b = turned(chord.b, -angle);
+    CHECK(a.x == Approx(20.0).margin(1e-5));
+    CHECK(b.x == Approx(20.0).margin(1e-5));
+    CHECK(std::fabs(a.y - b.y) == Approx(30.0).margin(1e-5));
+
+    const std::vector<Region> cells = divide_all(plate);
+    REQUIRE(cells.size() == 12);
+    double area = 0.0;
+    for (const Region& cell : cells) {
+      REQUIRE(cell.holes().size() == 1);
+      CHECK(cell.outer().size() == 4);  // a square around its hole
+      CHECK(ogrid_template(cell));
+      area += cell.area();
+    }
+    CHECK(area == Approx(plate.area()).epsilon(1e-7));
+  }
+}
+
+TEST_CASE("divide_holes leaves a staggered row's holes to lines between them and refuses holes no line separates", "[region][division]") {
+  // A staggered plate: rows 8 apart, holes of radius 2 (no line between rows is nearer a hole than 2,
+  // a radius); the columns' extents overlap, so the rows come apart first.
+  Ring outer{{0, 0}, {40, 0}, {40, 24}, {0, 24}};
+  std::vector<Ring> holes;
+  for (int row = 0; row < 3; ++row) {
+    for (int i = 0; i < 4; ++i) holes.push_back(round_hole({5.0 + 10.0 * i + (row % 2) * 5.0, 4.0 + 8.0 * row}, 2.0));
+  }
+  const Region staggered(outer, holes, kQ);
+  const std::vector<Region> cells = divide_all(staggered);
+  CHECK(cells.size() == 12);
+  double area = 0.0;
+  for (const Region& cell : cells) {
+    CHECK(cell.holes().size() == 1);
+    area += cell.area();
+  }
+  CHECK(area == Approx(staggered.area()).epsilon(1e-7));
+
+  // Three holes of radius 1 at the corners of a triangle of side 2.2: every direction's extents
+  // overlap (the triangle's least height, 1.91, is below a diameter), so no line divides them.
+  const double h = 2.2 * std::sqrt(3.0) / 2.0;
+  const Region cluster(Ring{{-5, -5}, {8, -5}, {8, 8}, {-5, 8}},
+                       {round_hole({0, 0}, 1.0), round_hole({2.2, 0}, 1.0), round_hole({1.1, h}, 1.0)}, kQ);
+  CHECK_FALSE(divide_holes(cluster).has_value());
+  // A part with one hole has nothing to divide.
+  CHECK_FALSE(divide_holes(Region(outer, {round_hole({20, 12}, 2.0)}, kQ)).has_value());
+}
+
+TEST_CASE("the search divides a perforated plate along its ligaments and finishes every cell", "[region][division][search]") {
+  const Region plate = perforated_plate(5, 4, 10.0, 2.5, 0.3);
+  RegionEpisodeOptions mesh;
+  mesh.reward = RewardPreset::Mesh;
+  RegionSearchOptions options;
+  options.time_limit = 0.0;  // no clock: the same decomposition every run
+  RegionSearchPolicy search(options);
+  RegionEpisode episode(plate, mesh);
+  const RegionAction first = search.choose(episode);
+  const std::optional<HoleDivision> division = divide_holes(plate);
+  REQUIRE(division.has_value());
+  CHECK(first.kind == RegionAction::Kind::Cut);
+  CHECK(first.cut.origin == division->cut.origin);
+  CHECK(first.cut.direction == division->cut.direction);
+
+  RegionSearchPolicy again(options);
+  const RegionDecomposition d = decompose_region(plate, again, mesh);
+  REQUIRE(d.complete());
+  CHECK_FALSE(d.time_capped);
+  // The finished blocks and templates make up the plate.
+  double area = 0.0;
+  for (const FinishedRegion& f : d.finished) area += f.region.area();
+  CHECK(area == Approx(plate.area()).epsilon(1e-7));
+  // Without the division the search finishes the plate too, by scoring cuts.
+  options.divide_holes = false;
+  options.time_limit = 2.0;
+  RegionSearchPolicy searched(options);
+  CHECK(decompose_region(plate, searched, mesh).complete());
+}
