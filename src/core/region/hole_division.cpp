@@ -13,10 +13,11 @@ namespace {
 
 constexpr double kAngleSame = 2.0 * M_PI / 180.0;  // directions within this are one (up to sign)
 constexpr double kAligned = 1.0 * M_PI / 180.0;    // a line this near parallel or square to an edge is aligned
-constexpr double kMinMeeting = 60.0 * M_PI / 180.0;  // the least angle a line may meet the outer loop at
+constexpr double kMinMeeting = 60.0 * M_PI / 180.0;  // the least angle a line may meet the boundary at
 constexpr double kLeastClearance = 0.1;  // no line nearer a hole than this times the larger radius beside it
 constexpr size_t kEdgeDirections = 4;
 constexpr size_t kNeighbourDirections = 6;
+constexpr size_t kMaxCuts = 32;  // lines cut before giving up (each cut costs as much as the part is large)
 
 Point2 unit(Point2 d) {
   const double len = std::hypot(d.x, d.y);
@@ -215,7 +216,9 @@ std::optional<HoleDivision> divide_holes(const Region& part) {
 
   // The first line that cuts the part into pieces with fewer holes each. A line's origin is where it
   // crosses the outer loop (cut_region clips the whole line to the part).
+  size_t tried = 0;
   for (const Gap& gap : gaps) {
+    if (tried == kMaxCuts) break;
     const Point2 u = gap.direction, n{-u.y, u.x};
     std::optional<Point2> origin;
     for (size_t i = 0; i < outer.size() && !origin; ++i) {
@@ -226,6 +229,7 @@ std::optional<HoleDivision> divide_holes(const Region& part) {
       origin = Point2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
     }
     if (!origin) continue;
+    ++tried;
     HoleDivision division;
     division.cut = {CutKind::Full, *origin, u};
     division.outcome = cut_region(part, division.cut);

@@ -25,7 +25,7 @@
 //            The cut is the first line in that order that cut_region makes (it refuses a line that
 //            grazes a vertex or leaves a sliver), that meets the boundary at 60 degrees or more at
 //            every end of its chords (no sharp wedge between the line and a disk's rim or an earlier
-//            line), and that leaves every piece fewer holes.
+//            line), and that leaves every piece fewer holes; after 32 lines cut in vain, none.
 // A hole's extent is its polygon's (circles reach the engine as their samples, circular_arc.h); the
 // true circle bulges past it by the sagitta, far less than any clearance taken.
 // Measured (BENCHMARKS.md, "Perforated plates"): grids, staggered grids and scattered holes in plates
@@ -53,7 +53,8 @@ struct HoleDivision {
 // Inputs:  part.
 // Outputs: the division cut above and its outcome, or nothing when the part has fewer than two holes
 //          or no line in the directions above separates them (holes that overlap across every
-//          direction, a line through the gap that cut_region refuses).
+//          direction, a bore in the middle of a bolt circle, lines that cut_region refuses or that
+//          meet the boundary too obliquely).
 std::optional<HoleDivision> divide_holes(const Region& part);
 
 }  // namespace autoblock
