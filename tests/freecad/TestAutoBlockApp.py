@@ -1098,6 +1098,24 @@ class TestArcFaces(unittest.TestCase):
         self.assertGreater(area, top.Area)
         self.assertLess(area, top.Area * 1.01)
 
+    def test_a_perforated_plate_is_divided_along_its_ligaments_one_o_grid_per_hole(self):
+        """A plate drilled with a 4 x 3 grid of holes: divided along the ligaments between them into one square cell
+        per hole, each an O-grid, whose least scaled Jacobian is that of a plate with one hole (the five-valent
+        box corners: sin 72 degrees less smoothing's gain)."""
+        V = FreeCAD.Vector
+        plate = Part.makeBox(40, 30, 2)
+        holes = [(V(5 + 10 * i, 5 + 10 * j, 0), 1.5) for i in range(4) for j in range(3)]
+        for centre, r in holes:
+            plate = plate.cut(Part.makeCylinder(r, 4, centre + V(0, 0, -1)))
+        top = max(plate.Faces, key=lambda f: f.CenterOfMass.z)
+        self.assertEqual(len(top.Wires), 13)
+        mesh = AutoBlock.mesh(top, size=1.0)
+        self.assertTrue(mesh.conformal)
+        self.assertGreater(mesh.quality["min_scaled_jacobian"], 0.9)
+        self.assertGreaterEqual(self.check_nodes_on_circles(mesh, [(c + V(0, 0, 2), r) for c, r in holes], holes=True), 12 * 24)
+        # Every cell's O-grid has the same four five-valent corners: 48 irregular vertices, no other.
+        self.assertEqual(mesh.quality["irregular_interior_vertices"], 48)
+
     def test_a_face_whose_curves_are_b_splines_meshes_as_its_lines_and_circles(self):
         """Many translators write circles and lines as B-splines (CATIA's drilled holes): such a face is read as
         the lines and circles it is, and meshes as the same face made of them does."""
