@@ -63,11 +63,16 @@ double checked_target_size(const InputFace& face, const MeshOptions& options, Me
   return target_size_for(face, options.size);
 }
 
-// The user's fixed counts made by fix (per stretch), then the assignment by assign, into result.
+// The user's fixed counts made by fix (per stretch), then the assignment by assign, into result. A
+// second pass (a better mesh tried where a first one stands) gives GLPK kIntervalQuickLimit only: a
+// program with no counts by then is given up (std::runtime_error), not given 30 s more (a 1 000-edge
+// disk's arc targets: 30 s for nothing, and the face's first mesh lost with them).
 template <class Fix, class Assign>
 void assign_with_fixed(MeshResult& result, const MeshOptions& options, double h, Fix fix, Assign assign,
-                       const std::vector<int>& edge_minimum = {}, const std::vector<double>& edge_target = {}) {
+                       const std::vector<int>& edge_minimum = {}, const std::vector<double>& edge_target = {},
+                       bool second_pass = false) {
   IntervalOptions interval_options;
+  if (second_pass) interval_options.time_limit = kIntervalQuickLimit;
   interval_options.target_size = h;
   interval_options.max_quads = options.max_quads;
   interval_options.min_intervals = options.min_edge_intervals;
@@ -93,17 +98,18 @@ int inverted_quads(const QuadMesh& mesh, std::vector<char>* parts) {
 // A general face's interval counts of model into r, each model edge at least its edge_minimum, arcs
 // aiming at edge_target (IntervalOptions).
 void assign_arc_intervals(MeshResult& r, const BlockModel& model, const MeshOptions& options, double h, double tolerance,
-                          const std::vector<int>& edge_minimum, const std::vector<double>& edge_target) {
+                          const std::vector<int>& edge_minimum, const std::vector<double>& edge_target,
+                          bool second_pass = false) {
   assign_with_fixed(r, options, h, [&](const EdgeIntervals& e) {
     return fixed_edge_intervals(model, e.a, e.b, e.intervals, tolerance);
-  }, [&](const IntervalOptions& o) { return assign_edge_intervals(model, o); }, edge_minimum, edge_target);
+  }, [&](const IntervalOptions& o) { return assign_edge_intervals(model, o); }, edge_minimum, edge_target, second_pass);
 }
 
 // r's mesh and smoothing from model and r's intervals (assign_arc_intervals, with edge_minimum and
-// edge_target), twisted and folded parts made again as below.
+// edge_target), twisted and folded parts made again as below (second_pass: as assign_with_fixed's).
 void mesh_blocks(MeshResult& r, const BlockModel& model, const InputFace& face, const RegionDecomposition& d,
                  const MeshOptions& options, double h, double tolerance, std::vector<int> edge_minimum,
-                 const std::vector<double>& edge_target) {
+                 const std::vector<double>& edge_target, bool second_pass = false) {
   r.mesh = block_model_mesh(model, r.intervals.intervals, face.planar.z, &face.arcs);
   r.smoothing = smooth_quad_mesh(r.mesh, options.smoothing_sweeps, kWorstRounds, &face.arcs);
   // A thin part whose two long sides have their vertices at different places along it gets a twisted
@@ -123,7 +129,7 @@ void mesh_blocks(MeshResult& r, const BlockModel& model, const InputFace& face, 
     }
     // assign_with_fixed changes r's intervals only when the assignment succeeds.
     try {
-      assign_arc_intervals(r, model, options, h, tolerance, edge_minimum, edge_target);
+      assign_arc_intervals(r, model, options, h, tolerance, edge_minimum, edge_target, second_pass);
     } catch (const InputError&) {
       break;  // too many quads, or the fixed counts forbid more: the mesh stays as it is
     }
@@ -309,11 +315,12 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     start = std::chrono::steady_clock::now();
     MeshResult again;  // its intervals, mesh and smoothing (of result's block model)
     try {
-      assign_arc_intervals(again, model, options, h, tolerance, minima.relaxed, minima.target);
-      mesh_blocks(again, model, face, d, options, h, tolerance, minima.relaxed, minima.target);
+      assign_arc_intervals(again, model, options, h, tolerance, minima.relaxed, minima.target, true);
+      mesh_blocks(again, model, face, d, options, h, tolerance, minima.relaxed, minima.target, true);
       result.arc_targets = keep_if_better(again, false);
-    } catch (const InputError&) {
-      // the fixed counts or the quad limit forbid it: the first mesh stands
+    } catch (const std::exception&) {
+      // the fixed counts or the quad limit forbid it, or GLPK found no counts in its quick limit: the
+      // first mesh stands
     }
     result.mesh_seconds += since(start);
   }
@@ -330,13 +337,13 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     merge_arc_chains(again.block_model, face.arcs);
     const ArcMinima again_minima = arc_minima(again.block_model, face.arcs);
     try {
-      assign_arc_intervals(again, again.block_model, options, h, tolerance, again_minima.chord, {});
-      mesh_blocks(again, again.block_model, face, d, options, h, tolerance, again_minima.chord, {});
+      assign_arc_intervals(again, again.block_model, options, h, tolerance, again_minima.chord, {}, true);
+      mesh_blocks(again, again.block_model, face, d, options, h, tolerance, again_minima.chord, {}, true);
       if (keep_if_better(again, true)) {
         result.two_corner = true;
         result.arc_targets = false;
       }
-    } catch (const InputError&) {
+    } catch (const std::exception&) {
       // as above
     }
     result.mesh_seconds += since(start);
