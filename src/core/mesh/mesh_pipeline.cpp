@@ -318,9 +318,9 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
       assign_arc_intervals(again, model, options, h, tolerance, minima.relaxed, minima.target, true);
       mesh_blocks(again, model, face, d, options, h, tolerance, minima.relaxed, minima.target, true);
       result.arc_targets = keep_if_better(again, false);
-    } catch (const std::exception&) {
-      // the fixed counts or the quad limit forbid it, or GLPK found no counts in its quick limit: the
-      // first mesh stands
+    } catch (const std::runtime_error&) {
+      // the fixed counts or the quad limit forbid it (InputError), or GLPK found no counts in its
+      // quick limit: the first mesh stands (a logic error, a bug, is not swallowed)
     }
     result.mesh_seconds += since(start);
   }
@@ -343,7 +343,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
         result.two_corner = true;
         result.arc_targets = false;
       }
-    } catch (const std::exception&) {
+    } catch (const std::runtime_error&) {
       // as above
     }
     result.mesh_seconds += since(start);

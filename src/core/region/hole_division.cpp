@@ -214,20 +214,12 @@ std::optional<HoleDivision> divide_holes(const Region& part) {
   }
   std::stable_sort(gaps.begin(), gaps.end(), better);
 
-  // The first line that cuts the part into pieces with fewer holes each. A line's origin is where it
-  // crosses the outer loop (cut_region clips the whole line to the part).
+  // The first line that cuts the part into pieces with fewer holes each.
   size_t tried = 0;
   for (const Gap& gap : gaps) {
     if (tried == kMaxCuts) break;
     const Point2 u = gap.direction, n{-u.y, u.x};
-    std::optional<Point2> origin;
-    for (size_t i = 0; i < outer.size() && !origin; ++i) {
-      const Point2 a = outer[i], b = outer[(i + 1) % outer.size()];
-      const double sa = dot(n, a) - gap.offset, sb = dot(n, b) - gap.offset;
-      if ((sa < 0.0) == (sb < 0.0) || sa == sb) continue;
-      const double t = sa / (sa - sb);
-      origin = Point2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
-    }
+    const std::optional<Point2> origin = line_meets_outer(part, {gap.offset * n.x, gap.offset * n.y}, u);
     if (!origin) continue;
     ++tried;
     HoleDivision division;

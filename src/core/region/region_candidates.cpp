@@ -37,21 +37,6 @@ bool points_inside(Point2 in, Point2 out, Point2 u) {
   return !(cross(in, u) >= 0.0 && cross(u, out) >= 0.0);
 }
 
-// Inputs: part; p, a point; u, a unit direction. Output: a point where the line through p along u
-//         crosses the part's outer loop (the origin of a full cut along that line), or nothing.
-std::optional<Point2> line_meets_outer(const Region& part, Point2 p, Point2 u) {
-  const Ring& ring = part.outer();
-  const size_t m = ring.size();
-  for (size_t i = 0; i < m; ++i) {
-    const Point2 a = ring[i], b = ring[(i + 1) % m];
-    const double sa = cross(u, {a.x - p.x, a.y - p.y}), sb = cross(u, {b.x - p.x, b.y - p.y});
-    if ((sa < 0.0) == (sb < 0.0) || sa == sb) continue;
-    const double t = sa / (sa - sb);
-    return Point2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
-  }
-  return std::nullopt;
-}
-
 // Inputs: part with two holes or more; smooth, which of them are smooth (circles, slots); ax, ay, the
 //         axes of its minimum-area rectangle.
 // Output: full cuts that separate two smooth holes: for every pair whose extents along an axis leave

@@ -927,4 +927,17 @@ std::optional<CutOutcome> cut_region_if(const Region& region, const RegionCut& c
 
 CutOutcome cut_region(const Region& region, const RegionCut& cut) { return *cut_region_if(region, cut, nullptr); }
 
+std::optional<Point2> line_meets_outer(const Region& region, Point2 p, Point2 u) {
+  const Ring& ring = region.outer();
+  const size_t m = ring.size();
+  for (size_t i = 0; i < m; ++i) {
+    const Point2 a = ring[i], b = ring[(i + 1) % m];
+    const double sa = cross(u, minus(a, p)), sb = cross(u, minus(b, p));
+    if ((sa < 0.0) == (sb < 0.0) || sa == sb) continue;
+    const double t = sa / (sa - sb);
+    return Point2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+  }
+  return std::nullopt;
+}
+
 }  // namespace autoblock

@@ -87,4 +87,9 @@ CutOutcome cut_region_by_arrangement(const Region& region, const RegionCut& cut)
 //          the lattice); false when the ray leaves at once or runs along the boundary.
 bool partial_cut_end(const Region& region, Point2 origin, Point2 direction, Point2* hit);
 
+// Inputs:  region; p, a point; u, a unit direction.
+// Outputs: a point where the line through p along u crosses the region's outer loop (the origin of
+//          a full cut along that line: cut_region clips the whole line to the region), or nothing.
+std::optional<Point2> line_meets_outer(const Region& region, Point2 p, Point2 u);
+
 }  // namespace autoblock
