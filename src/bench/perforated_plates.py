@@ -10,6 +10,10 @@
 #   2  holes of mixed sizes scattered at random, none nearer another than the ligament;
 #   3  a disk with a polar pattern (4, 6 or 8 holes on each of one to four rings);
 #   4  a disk with concentric rings of holes, as many on a ring as its pitch allows.
+# With a fourth argument `flanges`, every face is a flange instead (kind 5): a disk with a bore
+# (0.2-0.55 of its radius) and a bolt circle of 3-24 holes, a third of them with a second bolt circle
+# (as many holes or twice as many, in line or half a pitch turned), a quarter with a flat (the disk
+# cut by a chord outside the holes).
 # Hole diameters 2-10, ligaments (the plate left between two holes) 0.35-2.5 diameters, margins
 # 0.6-2 diameters; half the rectangular plates turned by a random angle. Faces that OpenCASCADE
 # does not make valid with every hole are left out (the script prints what it kept).
@@ -82,14 +86,52 @@ def plate(kind, rng):
     return face
 
 
+def flange(rng):
+    R = rng.uniform(30.0, 150.0)
+    rb = rng.uniform(0.2, 0.55) * R
+    width = R - rb
+    n = rng.choice([3, 4, 5, 6, 8, 10, 12, 16, 24])
+    two = rng.random() < 1.0 / 3.0
+    circles = [rb + width * (rng.uniform(0.3, 0.4) if two else rng.uniform(0.4, 0.6))]
+    if two:
+        circles.append(rb + width * rng.uniform(0.65, 0.75))
+    # The bolt diameter: at most a third of the ring's width per circle, and a ligament of at least
+    # 0.4 diameters between neighbours on the crowdest circle.
+    counts = [n] + ([n * rng.choice([1, 2])] if two else [])
+    d_max = min(width / (3.0 * len(circles)), min(2.0 * r * math.sin(math.pi / c) / 1.4 for r, c in zip(circles, counts)))
+    d = rng.uniform(0.4, 1.0) * d_max
+    phase = rng.uniform(0, 2 * math.pi)
+    holes = [(V(0, 0, 0), rb)]
+    for ring, (r, c) in enumerate(zip(circles, counts)):
+        offset = (math.pi / c) * (1 if ring == 1 and rng.random() < 0.5 else 0)
+        holes += [(V(r * math.cos(phase + offset + 2 * math.pi * i / c), r * math.sin(phase + offset + 2 * math.pi * i / c), 0), d / 2)
+                  for i in range(c)]
+    face = Part.Face(Part.Wire(Part.makeCircle(R, V(0, 0, 0))))
+    if rng.random() < 0.25:
+        # A flat: the chord at a distance past the outer bolt circle.
+        a = rng.uniform(0, 2 * math.pi)
+        at = circles[-1] + d / 2 + rng.uniform(0.3, 0.7) * (R - circles[-1] - d / 2)
+        u, t = V(math.cos(a), math.sin(a), 0), V(-math.sin(a), math.cos(a), 0)
+        box = Part.makePolygon([u * at + t * 2 * R, u * 2 * R + t * 2 * R, u * 2 * R - t * 2 * R, u * at - t * 2 * R, u * at + t * 2 * R])
+        face = face.cut(Part.Face(box)).Faces[0]
+    for c, r in holes:
+        face = face.cut(Part.Face(Part.Wire(Part.makeCircle(r, c))))
+    face = face.Faces[0]
+    if not face.isValid() or len(face.Wires) != len(holes) + 1:
+        return None
+    print("flange: %d bolt holes on %d circles, bore %.2f of the radius" % (len(holes) - 1, len(circles), rb / R))
+    return face
+
+
 def main(argv):
     out = argv[1] if len(argv) > 1 else "perforated.brep"
     seed = int(argv[2]) if len(argv) > 2 else 20261205
     count = int(argv[3]) if len(argv) > 3 else 40
+    flanges = len(argv) > 4 and argv[4] == "flanges"
     rng = random.Random(seed)
     faces = []
     for k in range(count):
-        face = plate(k % 5, rng)
+        face = flange(rng) if flanges else plate(k % 5, rng)
         if face is not None:
             faces.append(face)
     Part.makeCompound(faces).exportBrep(out)

@@ -52,6 +52,8 @@ struct PolicySettings {
                                     // (auto, search), after which progress cuts finish the parts, and for
                                     // a learned policy on a general face (then greedy finishes them)
   int general_search_width = 0;     // the general search's candidates expanded per part (0: its default)
+  bool general_divide_holes = true;  // the general search divides a part with many holes along its ligaments
+                                     // before searching it (hole_division.h)
 };
 
 // Inputs:  spec, a name of policy_names() or a policy file's path (empty: the default); settings.

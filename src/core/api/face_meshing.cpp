@@ -90,59 +90,73 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
     }
   }
   const double time_limit = settings.policy_settings.general_time_limit;
-  for (size_t k = 0; k < tries.size(); ++k) {
-    if (have && ratio(out.result) >= kRetryBelow) break;
-    // A face whose searches run out of time (hundreds of parts: a plate with scores of holes) has
-    // spent what further tries would: the mesh made stands.
-    if (have && time_limit > 0.0 &&
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > kTriesTimeLimits * time_limit) {
-      break;
+  // When no try meshed, a second pass: the first try once more, without the hole division.
+  for (int pass = 0; pass < 2 && !have; ++pass) {
+    if (pass == 1) {
+      if (!settings.policy_settings.general_divide_holes) break;
+      decompose.policy_settings.general_divide_holes = false;
+      tries.resize(1);
     }
-    FaceDecomposition again = k == 0 && first ? std::move(*first) : decompose_try(k);
-    options.general.reward = again.region.reward;
-    if (!again.region.complete() && (have || k + 1 < tries.size() || first_error)) {
-      // A try that leaves a part unfinished (under other block rules the fallback may find no cut
-      // that makes progress on some part) is no mesh: another try may do better. The last one, with
-      // nothing meshed, is meshed below as it is (mesh_region_decomposition says what is wrong).
-      continue;
-    }
-    MeshResult meshed;
-    try {
-      meshed = mesh_region_decomposition(face, again.region, options);
-    } catch (const InputError&) {
-      throw;
-    } catch (const std::exception&) {
-      // This try's blocks failed to mesh (a reason of ours: blocks that admit no interval counts,
-      // say): the other tries may mesh the face; if none does, the first failure is the answer.
-      if (!first_error) first_error = std::current_exception();
-      continue;
-    }
-    int min_edge_intervals = options.min_edge_intervals;
-    // A poor mesh: the same blocks with at least two intervals on every model edge (a small block one
-    // element across, meshed corner to corner through its side vertices, is what holds the minimum
-    // down then; more elements there lift it). Skipped when the user's counts or the quad limit
-    // forbid it.
-    if (ratio(meshed) < kRetryBelow && options.min_edge_intervals < 2) {
-      MeshOptions finer = options;
-      finer.min_edge_intervals = 2;
-      try {
-        MeshResult fine = mesh_region_decomposition(face, again.region, finer);
-        if (ratio(fine) > ratio(meshed)) {
-          meshed = std::move(fine);
-          min_edge_intervals = 2;
-        }
-      } catch (const std::exception&) {
-        // infeasible with the fixed counts, too many quads, or no counts at all: the mesh stays
+    for (size_t k = 0; k < tries.size(); ++k) {
+      if (have && ratio(out.result) >= kRetryBelow) break;
+      // A face whose searches run out of time (hundreds of parts: a plate with scores of holes) has
+      // spent what further tries would: the mesh made stands.
+      if (have && time_limit > 0.0 &&
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >
+              kTriesTimeLimits * time_limit) {
+        break;
       }
-    }
-    if (!have || ratio(meshed) > ratio(out.result)) {
-      out.decomposition = std::move(again);
-      out.result = std::move(meshed);
-      out.corner_fraction = tries[k].corner_fraction;
-      out.search_width = tries[k].width;
-      out.cut_smooth_parts = tries[k].cut_smooth_parts;
-      out.min_edge_intervals = min_edge_intervals;
-      have = true;
+      FaceDecomposition again = pass == 0 && k == 0 && first ? std::move(*first) : decompose_try(k);
+      options.general.reward = again.region.reward;
+      if (!again.region.complete() && (have || k + 1 < tries.size() || first_error)) {
+        // A try that leaves a part unfinished (under other block rules the fallback may find no cut
+        // that makes progress on some part) is no mesh: another try may do better. The last one, with
+        // nothing meshed, is meshed below as it is (mesh_region_decomposition says what is wrong).
+        continue;
+      }
+      MeshResult meshed;
+      try {
+        meshed = mesh_region_decomposition(face, again.region, options);
+      } catch (const InputError&) {
+        throw;
+      } catch (const std::exception&) {
+        // This try's blocks failed to mesh (a reason of ours: blocks that admit no interval counts,
+        // say): the other tries may mesh the face; if none does, the first failure is the answer.
+        if (!first_error) first_error = std::current_exception();
+        continue;
+      }
+      int min_edge_intervals = options.min_edge_intervals;
+      // A poor mesh: the same blocks with at least two intervals on every model edge (a small block one
+      // element across, meshed corner to corner through its side vertices, is what holds the minimum
+      // down then; more elements there lift it). Skipped when the user's counts or the quad limit
+      // forbid it.
+      if (ratio(meshed) < kRetryBelow && options.min_edge_intervals < 2) {
+        MeshOptions finer = options;
+        finer.min_edge_intervals = 2;
+        // Two intervals per edge are what the twisted rounds would give the thin parts: a retry
+        // with inverted quads is not made again (each round solves the whole interval program again,
+        // seconds on a face of thousands of edges) and loses to the first mesh.
+        finer.twisted_rounds = 0;
+        try {
+          MeshResult fine = mesh_region_decomposition(face, again.region, finer);
+          if (ratio(fine) > ratio(meshed)) {
+            meshed = std::move(fine);
+            min_edge_intervals = 2;
+          }
+        } catch (const std::exception&) {
+          // infeasible with the fixed counts, too many quads, or no counts at all: the mesh stays
+        }
+      }
+      if (!have || ratio(meshed) > ratio(out.result)) {
+        out.decomposition = std::move(again);
+        out.result = std::move(meshed);
+        out.corner_fraction = tries[k].corner_fraction;
+        out.search_width = tries[k].width;
+        out.cut_smooth_parts = tries[k].cut_smooth_parts;
+        out.min_edge_intervals = min_edge_intervals;
+        out.divide_holes = decompose.policy_settings.general_divide_holes;
+        have = true;
+      }
     }
   }
   if (!have) {
@@ -178,6 +192,7 @@ nlohmann::json face_meshing_json(const std::string& input, const FaceMeshing& m)
   report["cut_smooth_parts"] = m.cut_smooth_parts;
   report["min_edge_intervals"] = m.min_edge_intervals;
   report["search_width"] = m.search_width;
+  report["divide_holes"] = m.divide_holes;
   const RegionDecomposition& d = m.decomposition.region;
   if (!d.fallback_from.empty()) report["policy_fallback"] = {{"policy", d.fallback_from}, {"reason", d.fallback_reason}};
   return report;

@@ -21,6 +21,7 @@ struct FaceMeshing {
   int min_edge_intervals = 1;       // the intervals every model edge has at least (MeshOptions)
   int search_width = 4;             // the kept search's width (candidates expanded per part)
   bool cut_smooth_parts = false;    // the kept search's progress rule (SearchTry)
+  bool divide_holes = true;         // the kept search divided parts with many holes first (hole_division.h)
   bool general() const { return decomposition.general(); }
   const std::string& policy() const {
     return general() ? decomposition.region.policy : decomposition.decomposition.policy;
@@ -43,7 +44,10 @@ struct FaceMeshing {
 //          kept). Each search has the time limit; once a try has meshed and the face has taken
 //          kTriesTimeLimits times it, no further try is made. A search whose blocks fail to mesh (no interval counts for them, say: a
 //          rare web of templates whose sides' counts contradict), or that leaves a part unfinished,
-//          is skipped; the first failure is thrown when every try fails. Another policy makes one
+//          is skipped. When every try fails, the first try is made once more without dividing the
+//          parts with many holes first (hole_division.h: its cells, each meshable, can join into a
+//          ring of blocks around a hole whose counts contradict); the first failure is thrown when
+//          that fails too. Another policy makes one
 //          decomposition; when its blocks do not mesh, the search's tries are made instead
 //          (RegionDecomposition::fallback_from, fallback_reason; the report's "policy_fallback"). A
 //          width set in settings

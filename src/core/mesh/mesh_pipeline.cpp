@@ -113,10 +113,11 @@ void mesh_blocks(MeshResult& r, const BlockModel& model, const InputFace& face, 
   r.mesh = block_model_mesh(model, r.intervals.intervals, face.planar.z, &face.arcs);
   r.smoothing = smooth_quad_mesh(r.mesh, options.smoothing_sweeps, kWorstRounds, &face.arcs);
   // A thin part whose two long sides have their vertices at different places along it gets a twisted
-  // (inverted) quad when those sides carry few intervals, each vertex being a node: up to three times,
-  // the edges of the parts with an inverted quad get twice their count as a minimum, and intervals
-  // and mesh are made again (stopping where the quad limit or fixed counts forbid it).
-  for (int round = 0; round < 3; ++round) {
+  // (inverted) quad when those sides carry few intervals, each vertex being a node: up to
+  // options.twisted_rounds times (kTwistedRounds), the edges of the parts with an inverted quad get
+  // twice their count as a minimum, and intervals and mesh are made again (stopping where the quad
+  // limit or fixed counts forbid it).
+  for (int round = 0; round < options.twisted_rounds; ++round) {
     std::vector<char> twisted(d.finished.size(), 0);
     if (inverted_quads(r.mesh, &twisted) == 0) break;
     for (const ModelBlock& block : model.blocks) {

@@ -34,6 +34,8 @@ constexpr int kDefaultSmoothingSweeps = 30;
 // made a second time with the arcs' chord steps as targets, not minima (mesh_region_decomposition).
 constexpr double kArcTargetsBelow = 0.85;
 
+constexpr int kTwistedRounds = 3;
+
 struct MeshOptions {
   double size = 0.0;                 // target element size h; 0: the face's size / kDefaultSizeDivisions
   std::vector<EdgeIntervals> fixed;  // fixed interval counts
@@ -52,6 +54,9 @@ struct MeshOptions {
   // A general face's poor mesh with a template part that the two-corner template finishes better is
   // made again with it there (MeshResult::two_corner); false: not.
   bool two_corner = true;
+  // A general face's parts with a twisted (inverted) quad: how many times their edges' counts are
+  // doubled and the mesh made again (mesh_pipeline.cpp); 0: the mesh stands as first made.
+  int twisted_rounds = kTwistedRounds;
 };
 
 struct MeshResult {

@@ -6,6 +6,7 @@
 #include <tuple>
 #include <vector>
 
+#include "core/geometry/rectilinear_polygon.h"
 #include "core/region/block.h"
 
 namespace autoblock {
@@ -18,6 +19,11 @@ constexpr double kLeastClearance = 0.1;  // no line nearer a hole than this time
 constexpr size_t kEdgeDirections = 4;
 constexpr size_t kNeighbourDirections = 6;
 constexpr size_t kMaxCuts = 32;  // lines cut before giving up (each cut costs as much as the part is large)
+constexpr double kCentreSame = 0.01;    // circumcentres within this times the part's size are one centre
+constexpr double kArcDominated = 0.35;  // the least share of the outer loop's length on circles about one centre
+constexpr double kCentreClear = 0.05;   // radial lines only with their centre this far (times the part's size) out of it
+constexpr double kArcStep = 0.5;        // the longest segment (times the radius) of a vertex voting for its circle
+constexpr double kRadialClearance = 0.5;  // a radial line keeps this times a hole's radius from it
 
 Point2 unit(Point2 d) {
   const double len = std::hypot(d.x, d.y);
@@ -43,6 +49,7 @@ double angle_between(double a, double b) {
 struct Gap {
   Point2 direction;  // along the line
   double offset = 0.0;  // the line's position across it (dot with the normal)
+  bool radial = false;  // through the centre of the part's arcs (pattern_centre)
   bool roomy = false;   // clearance at least half the larger radius beside it
   bool aligned = false;
   int smaller_side = 0;
@@ -50,8 +57,61 @@ struct Gap {
 };
 
 bool better(const Gap& a, const Gap& b) {
-  return std::make_tuple(a.roomy, a.aligned, a.smaller_side, a.clearance) >
-         std::make_tuple(b.roomy, b.aligned, b.smaller_side, b.clearance);
+  return std::make_tuple(a.roomy, a.radial, a.aligned, a.smaller_side, a.clearance) >
+         std::make_tuple(b.roomy, b.radial, b.aligned, b.smaller_side, b.clearance);
+}
+
+// Inputs: part. Output: the centre of the circles that make most of its outer loop (a disk's, a
+//         flange's rim and bore, a sector of either), or nothing when no one centre holds
+//         kArcDominated of the loop's length. Each run of three consecutive vertices that turns
+//         votes for its circumcentre with half the length of its two segments; votes within kCentreSame
+//         of the part's size are one centre; segments longer than kArcStep of the circle's radius
+//         (29 degrees of it) are no arc's samples.
+std::optional<Point2> pattern_centre(const Region& part, double size) {
+  const Ring& outer = part.outer();
+  const size_t n = outer.size();
+  if (n < 3) return std::nullopt;
+  struct Vote {
+    Point2 centre;
+    double weight;
+  };
+  std::vector<Vote> votes;
+  double perimeter = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    const Point2 a = outer[(i + n - 1) % n], b = outer[i], c = outer[(i + 1) % n];
+    const double ab = std::hypot(b.x - a.x, b.y - a.y), bc = std::hypot(c.x - b.x, c.y - b.y);
+    perimeter += bc;
+    // The circumcentre of a, b, c (none when they are near collinear or the circle is far larger
+    // than the part: a straight edge's vertices).
+    const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
+    const double d = 2.0 * (bx * cy - by * cx);
+    if (!(std::fabs(d) > 1e-12 * (ab + bc) * (ab + bc))) continue;
+    const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+    const Point2 centre{a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d};
+    // An arc's samples are close together on their circle; a polygon's corner is not (a
+    // rectangle's vertices lie on a circle too).
+    const double radius = std::hypot(centre.x - b.x, centre.y - b.y);
+    if (radius > 2.0 * size || std::max(ab, bc) > kArcStep * radius) continue;
+    votes.push_back({centre, 0.5 * (ab + bc)});
+  }
+  double best_weight = 0.0;
+  Point2 best{0.0, 0.0};
+  for (const Vote& v : votes) {
+    double weight = 0.0, x = 0.0, y = 0.0;
+    for (const Vote& w : votes) {
+      if (std::hypot(w.centre.x - v.centre.x, w.centre.y - v.centre.y) <= kCentreSame * size) {
+        weight += w.weight;
+        x += w.weight * w.centre.x;
+        y += w.weight * w.centre.y;
+      }
+    }
+    if (weight > best_weight) {
+      best_weight = weight;
+      best = {x / weight, y / weight};
+    }
+  }
+  if (best_weight < kArcDominated * perimeter) return std::nullopt;
+  return best;
 }
 
 // Inputs: part; p, a point on its boundary. Output: the unit direction of the boundary segment nearest p.
@@ -210,6 +270,77 @@ std::optional<HoleDivision> divide_holes(const Region& part) {
         reach = extent[j].hi;
         reach_radius = extent[j].radius;
       }
+    }
+  }
+
+  // Radial lines: through the centre of the part's arcs, between the holes as seen from it (a
+  // flange's bolt circle, a polar pattern; the bore, a hole around the centre, is cut across). A line
+  // through the centre reaches both ways, so the holes' angular extents count modulo pi.
+  const std::optional<Point2> c = pattern_centre(part, frame.longer_side());
+  std::vector<double> radius(k);
+  bool bore = false;  // the centre lies in a hole
+  for (size_t h = 0; h < k; ++h) {
+    for (const Point2& v : holes[h]) radius[h] = std::max(radius[h], std::hypot(v.x - centre[h].x, v.y - centre[h].y));
+    bore = bore || (c && std::hypot(centre[h].x - c->x, centre[h].y - c->y) < radius[h]);
+  }
+  // Only where the lines meet away from the part (in a bore, or in the notch a bore left: a sector of
+  // a flange): lines meeting inside it would leave it pieces with a sharp corner there.
+  bool clear_of_part = bore;
+  if (c && !bore && !point_in_ring(*c, outer)) {
+    double distance = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < outer.size(); ++i) {
+      distance = std::min(distance, segment_distance(*c, outer[i], outer[(i + 1) % outer.size()]));
+    }
+    clear_of_part = distance >= kCentreClear * frame.longer_side();
+  }
+  if (clear_of_part) {
+    std::vector<std::pair<double, double>> blocked;  // angular extents, in [0, pi) (may wrap)
+    std::vector<size_t> around;  // the holes that do not hold the centre
+    for (size_t h = 0; h < k; ++h) {
+      const double distance = std::hypot(centre[h].x - c->x, centre[h].y - c->y);
+      if (distance < radius[h]) continue;  // the bore: the line runs across it
+      around.push_back(h);
+      const double mid = std::atan2(centre[h].y - c->y, centre[h].x - c->x);
+      const double half = std::asin(std::min(1.0, (1.0 + kLeastClearance) * radius[h] / distance));
+      blocked.push_back({mid - half, mid + half});
+    }
+    // The free angles: the midpoints of the gaps between the extents, sorted, on the half turn.
+    std::vector<std::pair<double, double>> spans;  // each from its start in [0, pi)
+    double wrapped = -1.0;  // how far past pi a span reaches (covering the half turn's start)
+    for (const auto& [lo, hi] : blocked) {
+      const double start = std::fmod(lo + 4.0 * M_PI, M_PI);
+      spans.push_back({start, start + (hi - lo)});
+      wrapped = std::max(wrapped, start + (hi - lo) - M_PI);
+    }
+    std::sort(spans.begin(), spans.end());
+    std::vector<double> free_angles;
+    if (!spans.empty()) {
+      double reach = std::max(spans[0].second, wrapped);
+      for (size_t j = 1; j <= spans.size(); ++j) {
+        const double next = j < spans.size() ? spans[j].first : spans[0].first + M_PI;
+        if (next > reach) free_angles.push_back(0.5 * (reach + next));
+        if (j < spans.size()) reach = std::max(reach, spans[j].second);
+      }
+    }
+    for (const double a : free_angles) {
+      const Point2 u{std::cos(a), std::sin(a)}, n{-u.y, u.x};
+      const double offset = dot(n, *c);
+      int below = 0, above = 0;
+      double clearance = std::numeric_limits<double>::infinity();
+      for (const size_t h : around) {
+        const double across = dot(n, centre[h]) - offset;
+        (across < 0.0 ? below : above) += 1;
+        clearance = std::min(clearance, (std::fabs(across) - radius[h]) / radius[h]);
+      }
+      if (below == 0 || above == 0 || clearance < kRadialClearance) continue;
+      Gap gap;
+      gap.direction = u;
+      gap.offset = offset;
+      gap.radial = true;
+      gap.roomy = clearance >= 0.5;
+      gap.smaller_side = std::min(below, above);
+      gap.clearance = clearance;
+      gaps.push_back(gap);
     }
   }
   std::stable_sort(gaps.begin(), gaps.end(), better);

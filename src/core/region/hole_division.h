@@ -15,9 +15,18 @@
 //            longer side, the longest four) and their normals, the axes of that rectangle, and the
 //            directions from each hole to its nearest neighbour and their normals (the six most
 //            common within 2 degrees: a grid's rows, a staggered grid's, a polar pattern's);
+//   radial   lines through the centre of the circles that make most of the part's outer loop (a
+//            flange's rim and bore, or a sector of them: each run of three vertices close together on
+//            a circle votes for its centre, and one centre must hold 35 % of the loop's length), when
+//            that centre lies in a hole (the bore, which the line cuts across) or outside the part
+//            (the notch a cut bore left): the holes' angular extents seen from the centre, modulo a
+//            half turn, leave gaps, and the line through a gap's middle keeps half a radius from every
+//            hole. Lines that would meet inside the part (a disk without a bore) are not made: they
+//            would leave its pieces a sharp corner there. A flange divides into one sector per bolt
+//            hole;
 //   choice   the best by, in turn: the gap's clearance (half its width) at least half the larger
-//            radius of the two holes beside it (room for their O-grids: ogrid_template), the line
-//            parallel or square to a long straight edge of the part (cells with right-angled corners),
+//            radius of the two holes beside it (room for their O-grids: ogrid_template), radial, the
+//            line parallel or square to a long straight edge of the part (cells with right-angled corners),
 //            more holes on the smaller side (a balanced division: as few levels as holes' logarithm),
 //            the larger clearance relative to that radius. No line nearer a hole than a tenth of that
 //            radius is taken: a staggered grid with ligaments of 0.35 diameters leaves 0.17 between
@@ -28,10 +37,10 @@
 //            line), and that leaves every piece fewer holes; after 32 lines cut in vain, none.
 // A hole's extent is its polygon's (circles reach the engine as their samples, circular_arc.h); the
 // true circle bulges past it by the sagitta, far less than any clearance taken.
-// Measured (BENCHMARKS.md, "Perforated plates"): grids, staggered grids and scattered holes in plates
-// divide into good cells; a polar pattern on a disk has no line clear of every hole until the disk's
-// parts are small (a bore in the middle blocks every diameter), so the search still cuts its first
-// parts and such faces gain less.
+// Measured (BENCHMARKS.md, "Perforated plates", "Flanges"): grids, staggered grids and scattered holes
+// in plates divide into good cells, flanges into sectors; rings of holes turned against each other on
+// a disk leave no line clear of every hole until the disk's parts are small, so the search still cuts
+// their first parts and such faces gain less.
 // The cut is the same for the same part (no randomness, no clock), so the division repeats exactly.
 #pragma once
 

@@ -1,5 +1,6 @@
 #include "core/region/hole_division.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -34,8 +35,22 @@ Region perforated_plate(int nx, int ny, double pitch, double r, double angle) {
   return Region(outer, holes, kQ);
 }
 
-// Every part divided again while it has two holes or more; the parts left.
-std::vector<Region> divide_all(const Region& face) {
+// A flange: a disk of radius 50 about the origin, a bore of radius 20 and `bolts` holes of radius 3
+// on a circle of radius 36, the first at `phase` radians.
+Region flange(int bolts, double phase) {
+  Ring rim = round_hole({0.0, 0.0}, 50.0);
+  std::reverse(rim.begin(), rim.end());  // counter-clockwise: the outer loop
+  std::vector<Ring> holes{round_hole({0.0, 0.0}, 20.0)};
+  for (int i = 0; i < bolts; ++i) {
+    const double a = phase + 2.0 * M_PI * i / bolts;
+    holes.push_back(round_hole({36.0 * std::cos(a), 36.0 * std::sin(a)}, 3.0));
+  }
+  return Region(rim, holes, kQ);
+}
+
+// Every part divided again while it has two holes or more; the parts left (and, if asked, every
+// chord cut).
+std::vector<Region> divide_all(const Region& face, std::vector<Chord>* chords = nullptr) {
   std::vector<Region> cells;
   std::function<void(const Region&)> divide = [&](const Region& part) {
     if (part.holes().size() < 2) {
@@ -45,6 +60,7 @@ std::vector<Region> divide_all(const Region& face) {
     const std::optional<HoleDivision> division = divide_holes(part);
     REQUIRE(division.has_value());
     REQUIRE(division->outcome.pieces.size() >= 2);
+    if (chords) chords->insert(chords->end(), division->outcome.chords.begin(), division->outcome.chords.end());
     for (const Region& piece : division->outcome.pieces) {
       CHECK(piece.holes().size() < part.holes().size());
       divide(piece);
@@ -112,6 +128,32 @@ TEST_CASE("divide_holes leaves a staggered row's holes to lines between them and
   CHECK_FALSE(divide_holes(cluster).has_value());
   // A part with one hole has nothing to divide.
   CHECK_FALSE(divide_holes(Region(outer, {round_hole({20, 12}, 2.0)}, kQ)).has_value());
+}
+
+TEST_CASE("divide_holes cuts a flange into sectors along radial lines through its bore", "[region][division]") {
+  // No straight line misses both the bore and the bolt circle, so the lines run through the centre
+  // of the rim and the bore, between the bolt holes: one sector per bolt hole, the bore cut across.
+  for (const int bolts : {5, 6, 8}) {
+    INFO(bolts << " bolt holes");
+    const Region part = flange(bolts, 0.3);
+    std::vector<Chord> chords;
+    const std::vector<Region> cells = divide_all(part, &chords);
+    CHECK(cells.size() == static_cast<size_t>(bolts));
+    double area = 0.0;
+    for (const Region& cell : cells) {
+      CHECK(cell.holes().size() == 1);
+      area += cell.area();
+    }
+    CHECK(area == Approx(part.area()).epsilon(1e-7));
+    // Every chord lies on a line through the origin (to within the centre found from the sampled
+    // circles) and runs from the bore to the rim.
+    REQUIRE_FALSE(chords.empty());
+    for (const Chord& c : chords) {
+      const double length = std::hypot(c.b.x - c.a.x, c.b.y - c.a.y);
+      CHECK(std::fabs(c.a.x * c.b.y - c.a.y * c.b.x) / length < 0.2);
+      CHECK(length == Approx(30.0).epsilon(0.01));
+    }
+  }
 }
 
 TEST_CASE("the search divides a perforated plate along its ligaments and finishes every cell", "[region][division][search]") {
