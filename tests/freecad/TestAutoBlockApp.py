@@ -1116,6 +1116,24 @@ class TestArcFaces(unittest.TestCase):
         # Every cell's O-grid has the same four five-valent corners: 48 irregular vertices, no other.
         self.assertEqual(mesh.quality["irregular_interior_vertices"], 48)
 
+    def test_a_flange_is_divided_into_one_sector_per_bolt_hole(self):
+        """A flange (a disk of radius 50 with a bore of radius 20 and eight bolt holes on a circle of radius 36):
+        no straight line misses both the bore and the bolt circle, so the division runs along radial lines between
+        the bolt holes, cutting the bore across. Its sectors mesh above 0.9 (0.85 when the search cut the disk
+        itself, crossing the bolt circle)."""
+        V = FreeCAD.Vector
+        flange = Part.makeCylinder(50, 2).cut(Part.makeCylinder(20, 4, V(0, 0, -1)))
+        holes = [(V(36 * math.cos(i * math.pi / 4), 36 * math.sin(i * math.pi / 4), 0), 3.0) for i in range(8)]
+        for centre, r in holes:
+            flange = flange.cut(Part.makeCylinder(r, 4, centre + V(0, 0, -1)))
+        top = max(flange.Faces, key=lambda f: f.CenterOfMass.z)
+        self.assertEqual(len(top.Wires), 10)
+        mesh = AutoBlock.mesh(top)
+        self.assertTrue(mesh.conformal)
+        self.assertGreater(mesh.quality["min_scaled_jacobian"], 0.9)
+        circles = [(c + V(0, 0, 2), r) for c, r in holes] + [(V(0, 0, 2), 20.0)]
+        self.assertGreaterEqual(self.check_nodes_on_circles(mesh, circles, holes=True), 9 * 24)
+
     def test_a_face_whose_curves_are_b_splines_meshes_as_its_lines_and_circles(self):
         """Many translators write circles and lines as B-splines (CATIA's drilled holes): such a face is read as
         the lines and circles it is, and meshes as the same face made of them does."""
