@@ -7,6 +7,7 @@
 #include <gp_Pnt.hxx>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -222,17 +223,61 @@ ConformalBlocks region_occt_model(const InputFace& face, const RegionDecompositi
 
 namespace {
 
+constexpr double kAcuteTip = 60.0 * M_PI / 180.0;      // a convex corner sharper than this is a tip
+constexpr double kTipShare = 0.97;                      // the tip quad's sine, at least this share of the corner's
+constexpr double kLeastTipStep = 0.5 * M_PI / 180.0;   // the finest turn asked of an edge from a tip
+
 // The interval counts a block model's edges along arcs take at least: one per chord step of the arc
-// (chord); one per kMeshEdgeArcSteps of them on a convex arc (relaxed); the chord steps as targets
+// (chord), finer on an edge from an acute tip (acute_tip_step); one per kMeshEdgeArcSteps of them on a convex arc (relaxed); the chord steps as targets
 // (target; 0 off arcs); relaxable when some relaxed count is below its chord count.
 struct ArcMinima {
   std::vector<int> chord, relaxed;
   std::vector<double> target;
   bool relaxable = false;
+  std::vector<int> tips;  // chord, finer on the edges from acute tips (acute_tip_step)
+  bool tipped = false;    // some edge's is finer
 };
-ArcMinima arc_minima(const BlockModel& model, const FaceArcs& arcs) {
+// Inputs: loops, the face's; arcs; p, an end of arc a. Output: the largest turn (radians) of a mesh
+//         edge along arc a from p, when p is a convex corner of the face sharper than kAcuteTip:
+//         the quad at the corner has the chord's angle there, not the tangent's, smaller by half
+//         the edge's turn; that turn keeps its sine within kTipShare of the corner's. Else 0.
+double acute_tip_step(const std::vector<Ring>& loops, const FaceArcs& arcs, size_t a, bool at_start) {
+  const CircularArc& arc = arcs.arcs[a];
+  const Point2 p = at_start ? arc.first() : arc.last();
+  for (const Ring& ring : loops) {
+    const size_t n = ring.size();
+    for (size_t i = 0; i < n; ++i) {
+      if (std::hypot(ring[i].x - p.x, ring[i].y - p.y) > arcs.tolerance) continue;
+      const Point2 prev = ring[(i + n - 1) % n], next = ring[(i + 1) % n];
+      // Convex: the loop turns left here (outer loops run counter-clockwise, holes clockwise).
+      if ((p.x - prev.x) * (next.y - p.y) - (p.y - prev.y) * (next.x - p.x) <= 0.0) return 0.0;
+      // The arc's tangent at p, along the arc away from p; the other side: the neighbour off the arc.
+      const double angle = arc.start + (at_start ? 0.0 : arc.sweep);
+      const double sense = (arc.sweep > 0.0) == at_start ? 1.0 : -1.0;
+      const Point2 tangent{-std::sin(angle) * sense, std::cos(angle) * sense};
+      const bool prev_on_arc = arcs.arc_of_point(prev) == static_cast<int>(a);
+      const Point2 other = prev_on_arc ? next : prev;
+      const double len = std::hypot(other.x - p.x, other.y - p.y);
+      if (!(len > 0.0)) return 0.0;
+      const double cosine = ((other.x - p.x) * tangent.x + (other.y - p.y) * tangent.y) / len;
+      const double corner = std::acos(std::clamp(cosine, -1.0, 1.0));
+      if (corner >= kAcuteTip) return 0.0;
+      return std::max(kLeastTipStep, 2.0 * (corner - std::asin(kTipShare * std::sin(corner))));
+    }
+  }
+  return 0.0;
+}
+
+ArcMinima arc_minima(const BlockModel& model, const FaceArcs& arcs, const std::vector<Ring>& loops) {
   const size_t n_edges = model.edges.size();
-  ArcMinima m{std::vector<int>(n_edges, 0), std::vector<int>(n_edges, 0), std::vector<double>(n_edges, 0.0), false};
+  ArcMinima m{std::vector<int>(n_edges, 0), std::vector<int>(n_edges, 0), std::vector<double>(n_edges, 0.0), false,
+              std::vector<int>(n_edges, 0), false};
+  // Per arc, the largest turn of a mesh edge from each end (0: no limit).
+  std::vector<std::array<double, 2>> tip(arcs.arcs.size(), {0.0, 0.0});
+  for (size_t a = 0; a < arcs.arcs.size(); ++a) {
+    if (std::fabs(arcs.arcs[a].sweep) >= 2.0 * M_PI - 1e-9) continue;  // a full circle has no end
+    tip[a] = {acute_tip_step(loops, arcs, a, true), acute_tip_step(loops, arcs, a, false)};
+  }
   for (size_t e = 0; e < n_edges; ++e) {
     const ModelEdge& edge = model.edges[e];
     if (edge.arc < 0) continue;
@@ -244,6 +289,18 @@ ArcMinima arc_minima(const BlockModel& model, const FaceArcs& arcs) {
     m.target[e] = m.chord[e];
     m.relaxed[e] = intervals(arc.outside ? 1 : kMeshEdgeArcSteps);
     m.relaxable = m.relaxable || m.relaxed[e] < m.chord[e];
+    m.tips[e] = m.chord[e];
+    // An edge from an acute tip: its intervals as fine as the tip wants.
+    for (int end = 0; end < 2; ++end) {
+      const double limit = tip[static_cast<size_t>(edge.arc)][static_cast<size_t>(end)];
+      if (!(limit > 0.0)) continue;
+      const Point2 p = end == 0 ? arc.first() : arc.last();
+      const Point2 a = model.vertices[static_cast<size_t>(edge.a)], b = model.vertices[static_cast<size_t>(edge.b)];
+      if (std::min(std::hypot(a.x - p.x, a.y - p.y), std::hypot(b.x - p.x, b.y - p.y)) > arcs.tolerance) continue;
+      const int fine = static_cast<int>(std::ceil(std::fabs(edge.arc_sweep) / limit - 1e-6));
+      m.tipped = m.tipped || fine > m.tips[e];
+      m.tips[e] = std::max(m.tips[e], fine);
+    }
   }
   return m;
 }
@@ -277,7 +334,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   // chord steps as the program's targets instead (IntervalOptions::edge_target), a convex arc's edge
   // turning by up to kMeshEdgeArcSteps chord steps, a hole's or a concave fillet's one as before; the
   // better mesh is kept (MeshResult::arc_targets).
-  const ArcMinima minima = arc_minima(result.block_model, face.arcs);
+  const ArcMinima minima = arc_minima(result.block_model, face.arcs, face.region.loops());
   const BlockModel& model = result.block_model;
   assign_arc_intervals(result, model, options, h, tolerance, minima.chord, {});
   result.interval_seconds = since(start);
@@ -336,12 +393,33 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     MeshResult again;
     again.block_model = block_model(d, d.rules, q, true);
     merge_arc_chains(again.block_model, face.arcs);
-    const ArcMinima again_minima = arc_minima(again.block_model, face.arcs);
+    const ArcMinima again_minima = arc_minima(again.block_model, face.arcs, face.region.loops());
     try {
       assign_arc_intervals(again, again.block_model, options, h, tolerance, again_minima.chord, {}, true);
       mesh_blocks(again, again.block_model, face, d, options, h, tolerance, again_minima.chord, {}, true);
       if (keep_if_better(again, true)) {
         result.two_corner = true;
+        result.arc_targets = false;
+      }
+    } catch (const std::runtime_error&) {
+      // as above
+    }
+    result.mesh_seconds += since(start);
+  }
+  // A convex corner sharper than kAcuteTip where an arc ends: the quad there has the angle of the
+  // chord from the corner to the arc's first node, not the tangent's. A mesh short of kTipShare of
+  // the face's bound is made again with the arc's edges from such tips as fine as acute_tip_step
+  // asks (more quads along them); the better mesh is kept (MeshResult::acute_tips).
+  // (The block model kept: the two-corner template's is another, with other edges.)
+  const ArcMinima kept = result.two_corner ? arc_minima(result.block_model, face.arcs, face.region.loops()) : minima;
+  if (kept.tipped && result.conformity.conformal && result.quality.min_scaled_jacobian < kTipShare * result.bound) {
+    start = std::chrono::steady_clock::now();
+    MeshResult again;
+    try {
+      assign_arc_intervals(again, result.block_model, options, h, tolerance, kept.tips, {}, true);
+      mesh_blocks(again, result.block_model, face, d, options, h, tolerance, kept.tips, {}, true);
+      if (keep_if_better(again, false)) {
+        result.acute_tips = true;
         result.arc_targets = false;
       }
     } catch (const std::runtime_error&) {

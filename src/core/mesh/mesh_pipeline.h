@@ -82,6 +82,9 @@ struct MeshResult {
   // A general face's: the mesh kept was made with the two-corner template on the parts where it beats
   // the template's default pieces (block.h, two_corner_improves; mesh_region_decomposition).
   bool two_corner = false;
+  // A general face's: the mesh kept was made with finer intervals on the arcs' edges from acute tips
+  // (a convex corner sharper than 60 degrees where an arc ends; mesh_region_decomposition).
+  bool acute_tips = false;
 };
 
 // Inputs:  face; decomposition of it (complete); options.

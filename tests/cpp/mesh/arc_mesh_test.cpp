@@ -2,7 +2,11 @@
 // the general engine, cut by OpenCASCADE on the true face, meshed with every boundary node on its arc.
 #include <catch2/catch.hpp>
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <GC_MakeArcOfCircle.hxx>
 #include <TopoDS.hxx>
 
 
@@ -142,6 +146,24 @@ TEST_CASE("arc faces: a disk meshes at the sizes where GLPK's integer presolve c
     const ArcMesh m = mesh_arc_face(face, "disk", h);
     check_arc_mesh(m, face);
   }
+}
+
+TEST_CASE("arc faces: a circular segment's 30-degree tips are meshed again with finer arc edges", "[mesh][arc][occt]") {
+  // The arc from (5, 8.66) over (0, 10) to (-5, 8.66) on the circle of radius 10 about the origin, closed
+  // by its chord: the tangent meets the chord at 30 degrees at each end (the face's bound: sin 30). A
+  // quad at a tip has the angle of the chord to the arc's first node, smaller than the tangent's by
+  // half that edge's turn: at the default size 26 degrees (0.44). The arc's edges from the tips are
+  // made fine enough to keep 0.97 of the tip's sine, and that mesh is kept.
+  const double s = 10.0 * std::sqrt(3.0) / 2.0;
+  const gp_Pnt a(5.0, s, 0.0), top(0.0, 10.0, 0.0), b(-5.0, s, 0.0);
+  const TopoDS_Edge arc = BRepBuilderAPI_MakeEdge(GC_MakeArcOfCircle(a, top, b).Value());
+  const TopoDS_Edge chord = BRepBuilderAPI_MakeEdge(b, a);
+  const TopoDS_Face occt = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(arc, chord).Wire());
+  const ArcMesh m = mesh_arc_face(occt, "segment");
+  check_arc_mesh(m, occt);
+  CHECK(m.mesh.bound == Approx(0.5).epsilon(1e-3));
+  CHECK(m.mesh.acute_tips);
+  CHECK(m.mesh.quality.min_scaled_jacobian >= 0.97 * 0.5 - 1e-3);
 }
 
 TEST_CASE("arc faces: an arc shorter than the default element size is one chord, its nodes still on it",
