@@ -369,18 +369,27 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     result.conformity = std::move(conformity);
     return true;
   };
-  if (options.arc_targets && minima.relaxable && poor()) {
+  // A second mesh of `on` (result's block model, or again's own) with these minima and targets, kept
+  // when better. Its failure (the fixed counts or the quad limit forbid it: InputError; or GLPK found
+  // no counts in its quick limit) leaves the first mesh standing; a logic error, a bug, is not
+  // swallowed.
+  auto remake = [&](MeshResult& again, const BlockModel& on, const std::vector<int>& minimum,
+                    const std::vector<double>& target, bool own_model) {
     start = std::chrono::steady_clock::now();
-    MeshResult again;  // its intervals, mesh and smoothing (of result's block model)
+    bool kept = false;
     try {
-      assign_arc_intervals(again, model, options, h, tolerance, minima.relaxed, minima.target, true);
-      mesh_blocks(again, model, face, d, options, h, tolerance, minima.relaxed, minima.target, true);
-      result.arc_targets = keep_if_better(again, false);
+      assign_arc_intervals(again, on, options, h, tolerance, minimum, target, true);
+      mesh_blocks(again, on, face, d, options, h, tolerance, minimum, target, true);
+      kept = keep_if_better(again, own_model);
     } catch (const std::runtime_error&) {
-      // the fixed counts or the quad limit forbid it (InputError), or GLPK found no counts in its
-      // quick limit: the first mesh stands (a logic error, a bug, is not swallowed)
+      // the first mesh stands
     }
     result.mesh_seconds += since(start);
+    return kept;
+  };
+  if (options.arc_targets && minima.relaxable && poor()) {
+    MeshResult again;  // its intervals, mesh and smoothing (of result's block model)
+    result.arc_targets = remake(again, model, minima.relaxed, minima.target, false);
   }
   // A poor mesh with a template part that the two-corner template would finish better (block.h,
   // two_corner_improves) is made again with that template there (its own block model, the chord
@@ -389,22 +398,14 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
       std::any_of(d.finished.begin(), d.finished.end(), [&](const FinishedRegion& f) {
         return f.is_template && two_corner_improves(f.region, d.rules);
       })) {
-    start = std::chrono::steady_clock::now();
     MeshResult again;
     again.block_model = block_model(d, d.rules, q, true);
     merge_arc_chains(again.block_model, face.arcs);
     const ArcMinima again_minima = arc_minima(again.block_model, face.arcs, face.region.loops());
-    try {
-      assign_arc_intervals(again, again.block_model, options, h, tolerance, again_minima.chord, {}, true);
-      mesh_blocks(again, again.block_model, face, d, options, h, tolerance, again_minima.chord, {}, true);
-      if (keep_if_better(again, true)) {
-        result.two_corner = true;
-        result.arc_targets = false;
-      }
-    } catch (const std::runtime_error&) {
-      // as above
+    if (remake(again, again.block_model, again_minima.chord, {}, true)) {
+      result.two_corner = true;
+      result.arc_targets = false;
     }
-    result.mesh_seconds += since(start);
   }
   // A convex corner sharper than kAcuteTip where an arc ends: the quad there has the angle of the
   // chord from the corner to the arc's first node, not the tangent's. A mesh short of kTipShare of
@@ -413,19 +414,11 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   // (The block model kept: the two-corner template's is another, with other edges.)
   const ArcMinima kept = result.two_corner ? arc_minima(result.block_model, face.arcs, face.region.loops()) : minima;
   if (kept.tipped && result.conformity.conformal && result.quality.min_scaled_jacobian < kTipShare * result.bound) {
-    start = std::chrono::steady_clock::now();
     MeshResult again;
-    try {
-      assign_arc_intervals(again, result.block_model, options, h, tolerance, kept.tips, {}, true);
-      mesh_blocks(again, result.block_model, face, d, options, h, tolerance, kept.tips, {}, true);
-      if (keep_if_better(again, false)) {
-        result.acute_tips = true;
-        result.arc_targets = false;
-      }
-    } catch (const std::runtime_error&) {
-      // as above
+    if (remake(again, result.block_model, kept.tips, {}, false)) {
+      result.acute_tips = true;
+      result.arc_targets = false;
     }
-    result.mesh_seconds += since(start);
   }
   return result;
 }
