@@ -27,7 +27,7 @@ TEST_CASE("autoblock decomposes generated general faces: report, picture and Ope
     const nlohmann::json report = test::read_json(folder + "/r.json");
     CHECK(report["engine"] == "general");
     CHECK(report["complete"] == true);
-    CHECK(report["blocks"].size() == report["n_blocks"].get<int>() + report["n_templates"].get<int>());
+    CHECK(report["blocks"].size() == report["n_blocks"].get<size_t>() + report["n_templates"].get<size_t>());
     double area = 0;
     for (const auto& block : report["blocks"]) {
       const auto& outline = block["outline"];
