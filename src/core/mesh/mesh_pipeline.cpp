@@ -334,7 +334,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   // chord steps as the program's targets instead (IntervalOptions::edge_target), a convex arc's edge
   // turning by up to kMeshEdgeArcSteps chord steps, a hole's or a concave fillet's one as before; the
   // better mesh is kept (MeshResult::arc_targets).
-  const ArcMinima minima = arc_minima(result.block_model, face.arcs, face.region.loops());
+  const ArcMinima minima = arc_minima(result.block_model, face.arcs, loops);
   const BlockModel& model = result.block_model;
   assign_arc_intervals(result, model, options, h, tolerance, minima.chord, {});
   result.interval_seconds = since(start);
@@ -401,7 +401,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     MeshResult again;
     again.block_model = block_model(d, d.rules, q, true);
     merge_arc_chains(again.block_model, face.arcs);
-    const ArcMinima again_minima = arc_minima(again.block_model, face.arcs, face.region.loops());
+    const ArcMinima again_minima = arc_minima(again.block_model, face.arcs, loops);
     if (remake(again, again.block_model, again_minima.chord, {}, true)) {
       result.two_corner = true;
       result.arc_targets = false;
@@ -412,7 +412,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   // the face's bound is made again with the arc's edges from such tips as fine as acute_tip_step
   // asks (more quads along them); the better mesh is kept (MeshResult::acute_tips).
   // (The block model kept: the two-corner template's is another, with other edges.)
-  const ArcMinima kept = result.two_corner ? arc_minima(result.block_model, face.arcs, face.region.loops()) : minima;
+  const ArcMinima kept = result.two_corner ? arc_minima(result.block_model, face.arcs, loops) : minima;
   if (kept.tipped && result.conformity.conformal && result.quality.min_scaled_jacobian < kTipShare * result.bound) {
     MeshResult again;
     if (remake(again, result.block_model, kept.tips, {}, false)) {
