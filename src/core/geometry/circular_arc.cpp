@@ -157,31 +157,38 @@ bool chord_on_arc(const CircularArc& arc, Point2 a, Point2 b, double tolerance) 
 
 int FaceArcs::arc_of_mesh_edge(Point2 a, Point2 b) const {
   const Point2 m{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
-  for (size_t k = 0; k < arcs.size(); ++k) {
-    const CircularArc& arc = arcs[k];
-    if (arc.outside) {  // a hole's arc or a concave fillet: its chords only (arc_of_chord)
-      if (chord_on_arc(arc, a, b, tolerance)) return static_cast<int>(k);
-      continue;
-    }
+  auto on = [&](const CircularArc& arc) {
+    if (arc.outside) return chord_on_arc(arc, a, b, tolerance);  // a hole's arc or a concave fillet: its chords only (arc_of_chord)
     const double step = std::fabs(arc.sweep) / arc_chord_count(arc);
     const double max_turn = std::max(kMeshEdgeArcSteps * kArcStepDegrees * kPi / 180.0, 2.0 * step);
-    if (!point_on_arc_polygon(a, arc, tolerance) || !point_on_arc_polygon(b, arc, tolerance)) continue;
+    if (!point_on_arc_polygon(a, arc, tolerance) || !point_on_arc_polygon(b, arc, tolerance)) return false;
     const double turn = turn_between(arc, a, b);
-    if (turn > max_turn + 1e-9 + tolerance / arc.radius) continue;  // (an edge of exactly max_turn, rounded)
-    if (radial(arc, a, b, tolerance)) continue;
+    if (turn > max_turn + 1e-9 + tolerance / arc.radius) return false;  // (an edge of exactly max_turn, rounded)
+    if (radial(arc, a, b, tolerance)) return false;
     // The middle: no nearer the centre than the chord of that turn (less the arc's own band), not
     // outside the circle, and within the arc's directions.
     const double d = std::hypot(m.x - arc.center.x, m.y - arc.center.y);
     const double inner = arc.radius * std::min(std::cos(0.5 * turn), std::cos(0.5 * step));
-    if (d < inner - tolerance || d > arc.radius + tolerance) continue;
+    if (d < inner - tolerance || d > arc.radius + tolerance) return false;
     if (!full_circle(arc)) {
       const double slack = tolerance / arc.radius;
       const double s = along(std::atan2(m.y - arc.center.y, m.x - arc.center.x), arc);
-      if (!(s <= std::fabs(arc.sweep) + slack || s >= kTwoPi - slack)) continue;
+      if (!(s <= std::fabs(arc.sweep) + slack || s >= kTwoPi - slack)) return false;
     }
-    return static_cast<int>(k);
+    return true;
+  };
+  // Where two arcs meet at an acute tip, an edge along one near the tip lies in the other's polygon
+  // band too: the arc whose circle both ends lie on is the edge's.
+  auto on_circle = [&](const CircularArc& arc, Point2 p) {
+    return std::fabs(std::hypot(p.x - arc.center.x, p.y - arc.center.y) - arc.radius) <= tolerance;
+  };
+  int found = -1;
+  for (size_t k = 0; k < arcs.size(); ++k) {
+    if (!on(arcs[k])) continue;
+    if (on_circle(arcs[k], a) && on_circle(arcs[k], b)) return static_cast<int>(k);
+    if (found < 0) found = static_cast<int>(k);
   }
-  return -1;
+  return found;
 }
 
 int FaceArcs::arc_of_chord(Point2 a, Point2 b) const {

@@ -128,7 +128,9 @@ struct FaceArcs {
   //         on, at most kMeshEdgeArcSteps chord steps apart as seen from the centre (or the whole of a
   //         short arc, two of its chord steps), the edge's middle on the chord between them (inside
   //         the circle by the edge's own sagitta) and within the arc's directions; along an arc with
-  //         `outside` (a hole's), as arc_of_chord; or -1.
+  //         `outside` (a hole's), as arc_of_chord; or -1. Of two such arcs (near an acute tip where
+  //         two arcs meet, an edge along one lies in the other's polygon band too), the one whose
+  //         circle both ends lie on.
   int arc_of_mesh_edge(Point2 a, Point2 b) const;
 };
 

@@ -228,56 +228,48 @@ constexpr double kTipShare = 0.97;                      // the tip quad's sine, 
 constexpr double kLeastTipStep = 0.5 * M_PI / 180.0;   // the finest turn asked of an edge from a tip
 
 // The interval counts a block model's edges along arcs take at least: one per chord step of the arc
-// (chord), finer on an edge from an acute tip (acute_tip_step); one per kMeshEdgeArcSteps of them on a convex arc (relaxed); the chord steps as targets
+// (chord), finer on an edge from an acute tip (acute_tip_steps); one per kMeshEdgeArcSteps of them on a convex arc (relaxed); the chord steps as targets
 // (target; 0 off arcs); relaxable when some relaxed count is below its chord count.
 struct ArcMinima {
   std::vector<int> chord, relaxed;
   std::vector<double> target;
   bool relaxable = false;
-  std::vector<int> tips;  // chord, finer on the edges from acute tips (acute_tip_step)
+  std::vector<int> tips;  // chord, finer on the edges from acute tips (acute_tip_steps)
   bool tipped = false;    // some edge's is finer
 };
-// Inputs: loops, the face's; arcs; p, an end of arc a. Output: the largest turn (radians) of a mesh
-//         edge along arc a from p, when p is a convex corner of the face sharper than kAcuteTip:
-//         the quad at the corner has the chord's angle there, not the tangent's, smaller by half
-//         the edge's turn; that turn keeps its sine within kTipShare of the corner's. Else 0.
-double acute_tip_step(const std::vector<Ring>& loops, const FaceArcs& arcs, size_t a, bool at_start) {
-  const CircularArc& arc = arcs.arcs[a];
-  const Point2 p = at_start ? arc.first() : arc.last();
-  for (const Ring& ring : loops) {
-    const size_t n = ring.size();
-    for (size_t i = 0; i < n; ++i) {
-      if (std::hypot(ring[i].x - p.x, ring[i].y - p.y) > arcs.tolerance) continue;
-      const Point2 prev = ring[(i + n - 1) % n], next = ring[(i + 1) % n];
-      // Convex: the loop turns left here (outer loops run counter-clockwise, holes clockwise).
-      if ((p.x - prev.x) * (next.y - p.y) - (p.y - prev.y) * (next.x - p.x) <= 0.0) return 0.0;
-      // The arc's tangent at p, along the arc away from p; the other side: the neighbour off the arc.
-      const double angle = arc.start + (at_start ? 0.0 : arc.sweep);
-      const double sense = (arc.sweep > 0.0) == at_start ? 1.0 : -1.0;
-      const Point2 tangent{-std::sin(angle) * sense, std::cos(angle) * sense};
-      const bool prev_on_arc = arcs.arc_of_point(prev) == static_cast<int>(a);
-      const Point2 other = prev_on_arc ? next : prev;
-      const double len = std::hypot(other.x - p.x, other.y - p.y);
-      if (!(len > 0.0)) return 0.0;
-      const double cosine = ((other.x - p.x) * tangent.x + (other.y - p.y) * tangent.y) / len;
-      const double corner = std::acos(std::clamp(cosine, -1.0, 1.0));
-      if (corner >= kAcuteTip) return 0.0;
-      return std::max(kLeastTipStep, 2.0 * (corner - std::asin(kTipShare * std::sin(corner))));
+// Per arc of the face, the largest turn (radians) of a mesh edge along it from its first and its last
+// end (0: no limit). An end at a convex corner sharper than kAcuteTip (boundary_corners, the arcs'
+// tangents taken there) is a tip: the quad there has the angle of the chords to the first nodes, not
+// the tangents', smaller by half of each first edge's turn. The turns keep the quad's sine within
+// kTipShare of the corner's, shared between the corner's arcs (a lens's tip: both sides are arcs).
+// Inputs: loops, arcs, the face's. Output: the limits, one pair per arc of arcs.
+std::vector<std::array<double, 2>> acute_tip_steps(const std::vector<Ring>& loops, const FaceArcs& arcs) {
+  std::vector<std::array<double, 2>> tip(arcs.arcs.size(), {0.0, 0.0});
+  for (const BoundaryCorner& corner : boundary_corners(loops, arcs)) {
+    if (corner.angle >= kAcuteTip) continue;
+    const int on_arcs = (corner.arc_in >= 0) + (corner.arc_out >= 0);
+    if (on_arcs == 0) continue;
+    const double deficit = corner.angle - std::asin(kTipShare * std::sin(corner.angle));
+    const double limit = std::max(kLeastTipStep, 2.0 * deficit / on_arcs);
+    for (const int a : {corner.arc_in, corner.arc_out}) {
+      if (a < 0) continue;
+      const CircularArc& arc = arcs.arcs[static_cast<size_t>(a)];
+      if (std::fabs(arc.sweep) >= 2.0 * M_PI - 1e-9) continue;  // a full circle has no end
+      const Point2 first = arc.first(), last = arc.last();
+      const bool at_first = std::hypot(first.x - corner.at.x, first.y - corner.at.y) <=
+                            std::hypot(last.x - corner.at.x, last.y - corner.at.y);
+      double& step = tip[static_cast<size_t>(a)][at_first ? 0 : 1];
+      step = step > 0.0 ? std::min(step, limit) : limit;
     }
   }
-  return 0.0;
+  return tip;
 }
 
-ArcMinima arc_minima(const BlockModel& model, const FaceArcs& arcs, const std::vector<Ring>& loops) {
+// Inputs: model, its edges on arcs; arcs, the face's; tip, acute_tip_steps of the face.
+ArcMinima arc_minima(const BlockModel& model, const FaceArcs& arcs, const std::vector<std::array<double, 2>>& tip) {
   const size_t n_edges = model.edges.size();
   ArcMinima m{std::vector<int>(n_edges, 0), std::vector<int>(n_edges, 0), std::vector<double>(n_edges, 0.0), false,
               std::vector<int>(n_edges, 0), false};
-  // Per arc, the largest turn of a mesh edge from each end (0: no limit).
-  std::vector<std::array<double, 2>> tip(arcs.arcs.size(), {0.0, 0.0});
-  for (size_t a = 0; a < arcs.arcs.size(); ++a) {
-    if (std::fabs(arcs.arcs[a].sweep) >= 2.0 * M_PI - 1e-9) continue;  // a full circle has no end
-    tip[a] = {acute_tip_step(loops, arcs, a, true), acute_tip_step(loops, arcs, a, false)};
-  }
   for (size_t e = 0; e < n_edges; ++e) {
     const ModelEdge& edge = model.edges[e];
     if (edge.arc < 0) continue;
@@ -334,7 +326,8 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   // chord steps as the program's targets instead (IntervalOptions::edge_target), a convex arc's edge
   // turning by up to kMeshEdgeArcSteps chord steps, a hole's or a concave fillet's one as before; the
   // better mesh is kept (MeshResult::arc_targets).
-  const ArcMinima minima = arc_minima(result.block_model, face.arcs, loops);
+  const std::vector<std::array<double, 2>> tip_steps = acute_tip_steps(loops, face.arcs);
+  const ArcMinima minima = arc_minima(result.block_model, face.arcs, tip_steps);
   const BlockModel& model = result.block_model;
   assign_arc_intervals(result, model, options, h, tolerance, minima.chord, {});
   result.interval_seconds = since(start);
@@ -401,7 +394,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     MeshResult again;
     again.block_model = block_model(d, d.rules, q, true);
     merge_arc_chains(again.block_model, face.arcs);
-    const ArcMinima again_minima = arc_minima(again.block_model, face.arcs, loops);
+    const ArcMinima again_minima = arc_minima(again.block_model, face.arcs, tip_steps);
     if (remake(again, again.block_model, again_minima.chord, {}, true)) {
       result.two_corner = true;
       result.arc_targets = false;
@@ -409,10 +402,10 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   }
   // A convex corner sharper than kAcuteTip where an arc ends: the quad there has the angle of the
   // chord from the corner to the arc's first node, not the tangent's. A mesh short of kTipShare of
-  // the face's bound is made again with the arc's edges from such tips as fine as acute_tip_step
+  // the face's bound is made again with the arc's edges from such tips as fine as acute_tip_steps
   // asks (more quads along them); the better mesh is kept (MeshResult::acute_tips).
   // (The block model kept: the two-corner template's is another, with other edges.)
-  const ArcMinima kept = result.two_corner ? arc_minima(result.block_model, face.arcs, loops) : minima;
+  const ArcMinima kept = result.two_corner ? arc_minima(result.block_model, face.arcs, tip_steps) : minima;
   if (kept.tipped && result.conformity.conformal && result.quality.min_scaled_jacobian < kTipShare * result.bound) {
     MeshResult again;
     if (remake(again, result.block_model, kept.tips, {}, false)) {

@@ -969,8 +969,8 @@ double interior_of_turn(double turn) {
 
 }  // namespace
 
-std::vector<double> boundary_corner_angles(const std::vector<Ring>& loops, const FaceArcs& arcs) {
-  std::vector<double> angles;
+std::vector<BoundaryCorner> boundary_corners(const std::vector<Ring>& loops, const FaceArcs& arcs) {
+  std::vector<BoundaryCorner> corners;
   for (const Ring& ring : loops) {
     const size_t n = ring.size();
     for (size_t i = 0; i < n; ++i) {
@@ -993,9 +993,15 @@ std::vector<double> boundary_corner_angles(const std::vector<Ring>& loops, const
       const double t = interior_of_turn(direction(arc_out, at, next) - direction(arc_in, prev, at));
       // A tangent join (an arc's end meeting its neighbour smoothly) is no corner.
       if (std::fabs(t - M_PI) < 1e-9) continue;
-      angles.push_back(t);
+      corners.push_back({at, t, arc_in, arc_out});
     }
   }
+  return corners;
+}
+
+std::vector<double> boundary_corner_angles(const std::vector<Ring>& loops, const FaceArcs& arcs) {
+  std::vector<double> angles;
+  for (const BoundaryCorner& c : boundary_corners(loops, arcs)) angles.push_back(c.angle);
   return angles;
 }
 

@@ -217,9 +217,18 @@ double scaled_jacobian_bound(const std::vector<Ring>& loops);
 // arc's tangent (a tangent join counts as 180 degrees).
 double scaled_jacobian_bound(const std::vector<Ring>& loops, const FaceArcs& arcs);
 
-// Inputs: loops, arcs, as for scaled_jacobian_bound. Output: the interior angles (radians, in
-//         (0, 2 pi)) of the face's true corners: every vertex but those inside an arc and the tangent
-//         joins of arcs with their neighbours.
+// A true corner of a face's boundary: where it is, its interior angle (radians, in (0, 2 pi), the
+// arcs' tangents taken there) and the arcs that end at it (arcs.arcs' index, the one arriving along
+// the loop and the one leaving; -1: a straight edge).
+struct BoundaryCorner {
+  Point2 at;
+  double angle = 0.0;
+  int arc_in = -1, arc_out = -1;
+};
+// Inputs: loops, arcs, as for scaled_jacobian_bound. Output: the face's true corners, loop by loop:
+//         every vertex but those inside an arc and the tangent joins of arcs with their neighbours.
+std::vector<BoundaryCorner> boundary_corners(const std::vector<Ring>& loops, const FaceArcs& arcs);
+// Inputs: loops, arcs, as for scaled_jacobian_bound. Output: boundary_corners' angles.
 std::vector<double> boundary_corner_angles(const std::vector<Ring>& loops, const FaceArcs& arcs);
 
 // The bound of the face's corners and its topology together (<= scaled_jacobian_bound). In an all-quad

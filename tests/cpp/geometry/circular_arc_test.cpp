@@ -78,6 +78,32 @@ TEST_CASE("a mesh's boundary edge along an arc may turn by up to three chord ste
   CHECK(hole.arc_of_mesh_edge(on(-5), on(10)) == hole.arc_of_chord(on(-5), on(10)));
 }
 
+TEST_CASE("near a lens's acute tip, an edge along one arc is that arc's, not the other's", "[geometry][arc]") {
+  // A lens: two arcs of radius 10 through (0, 0) and (2 r sin 12, 0), each at 12 degrees to the chord
+  // there (24-degree tips). Near a tip, points on the lower arc lie in the upper arc's polygon band
+  // (two 12-degree chords, a band 10 (1 - cos 6) = 0.055 deep): the edge is still the lower arc's.
+  const double half = 12 * kPi / 180, r = 10.0, c = r * std::cos(half);
+  const Point2 tip{0, 0};
+  FaceArcs arcs;
+  // The upper arc (centre below the chord) from the far tip back to (0, 0); the lower one onwards.
+  arcs.arcs.push_back(CircularArc{{r * std::sin(half), -c}, r, 0.5 * kPi - half, 2 * half});
+  arcs.arcs.push_back(CircularArc{{r * std::sin(half), c}, r, 1.5 * kPi - half, 2 * half});
+  arcs.tolerance = 1e-6;
+  REQUIRE(std::hypot(arcs.arcs[0].last().x - tip.x, arcs.arcs[0].last().y - tip.y) < 1e-9);
+  REQUIRE(std::hypot(arcs.arcs[1].first().x - tip.x, arcs.arcs[1].first().y - tip.y) < 1e-9);
+  const CircularArc& lower = arcs.arcs[1];
+  const auto on_lower = [&](double degrees) {
+    const double a = lower.start + degrees * kPi / 180;
+    return Point2{lower.center.x + r * std::cos(a), lower.center.y + r * std::sin(a)};
+  };
+  // 0.5 degrees along: 0.087 from the tip, 0.036 inside the upper circle, in its band.
+  const Point2 near = on_lower(0.5);
+  CHECK(arcs.arc_of_point(near) == 0);  // the band holds it
+  CHECK(arcs.arc_of_mesh_edge(tip, near) == 1);
+  CHECK(arcs.arc_of_mesh_edge(near, on_lower(1.0)) == 1);
+  CHECK(arcs.arc_of_mesh_edge(on_lower(5.0), on_lower(10.0)) == 1);
+}
+
 TEST_CASE("the gap between a segment and its arc against hand values", "[geometry][arc]") {
   const CircularArc circle2{{0, 0}, 2.0, 0.0, 2 * kPi}, circle3{{0, 0}, 3.0, 0.0, 2 * kPi};
   // A diameter cuts off a half disk; a chord of 90 degrees r^2 (pi / 4 - 1 / 2), positive with the

@@ -18,6 +18,7 @@
 #include <random>
 #include <string>
 
+#include "core/api/face_meshing.h"
 #include "core/data/arc_generator.h"
 #include "core/geometry/circular_arc.h"
 #include "core/geometry/occt_face.h"
@@ -164,6 +165,29 @@ TEST_CASE("arc faces: a circular segment's 30-degree tips are meshed again with 
   CHECK(m.mesh.bound == Approx(0.5).epsilon(1e-3));
   CHECK(m.mesh.acute_tips);
   CHECK(m.mesh.quality.min_scaled_jacobian >= 0.97 * 0.5 - 1e-3);
+}
+
+TEST_CASE("arc faces: a lens's tips, where two arcs meet at 24 degrees, share the finer edges", "[mesh][arc][occt]") {
+  // Two arcs through (0, 0) and (7, 0), each at 12 degrees to the chord there: tips of 24 degrees
+  // (the bound sin 24), both sides arcs. The tip quad loses half of each first edge's turn, so each
+  // arc's edges from the tip get half of what keeps 0.97 of sin 24; the mesh made so is judged
+  // conformal (its edges near a tip lie in the other arc's polygon band too, FaceArcs::arc_of_mesh_edge)
+  // and kept. (With the whole loss asked of each arc, as if the other side were straight: 0.961.)
+  const double half = 12.0 * M_PI / 180.0, r = 3.5 / std::sin(half), sag = r * (1.0 - std::cos(half));
+  const gp_Pnt p(0.0, 0.0, 0.0), q(7.0, 0.0, 0.0);
+  const TopoDS_Edge upper = BRepBuilderAPI_MakeEdge(GC_MakeArcOfCircle(q, gp_Pnt(3.5, sag, 0.0), p).Value());
+  const TopoDS_Edge lower = BRepBuilderAPI_MakeEdge(GC_MakeArcOfCircle(p, gp_Pnt(3.5, -sag, 0.0), q).Value());
+  const TopoDS_Face occt = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(upper, lower).Wire());
+  // The search's blocks (the greedy policy's one template meets the tips badly), at the default size.
+  const InputFace face = input_face_from_occt(occt, "lens");
+  REQUIRE(face.is_general());
+  DecomposeSettings settings;
+  settings.policy = "search";
+  const FaceMeshing m = mesh_input_face(face, settings, MeshOptions{});
+  CHECK(m.result.conformity.conformal);
+  CHECK(m.result.bound == Approx(std::sin(2.0 * half)).epsilon(1e-3));
+  CHECK(m.result.acute_tips);
+  CHECK(m.result.quality.min_scaled_jacobian >= 0.97 * std::sin(2.0 * half) - 1e-4);
 }
 
 TEST_CASE("arc faces: an arc shorter than the default element size is one chord, its nodes still on it",
