@@ -35,8 +35,50 @@ std::vector<int> edge_arcs(const BlockModel& model, const FaceArcs& arcs) {
 
 }  // namespace
 
+std::vector<double> graded_fractions(int n, double total, double first_a, double first_b, double ratio) {
+  std::vector<double> out(static_cast<size_t>(n) + 1, 0.0);
+  const double uniform = total / n;
+  const bool grade_a = first_a > 0.0 && first_a < uniform, grade_b = first_b > 0.0 && first_b < uniform;
+  if (n < 2 || !(total > 0.0) || (!grade_a && !grade_b)) {
+    for (int k = 0; k <= n; ++k) out[static_cast<size_t>(k)] = static_cast<double>(k) / n;
+    return out;
+  }
+  // Interval k's size, uncapped: the smaller of the two progressions (scaled by lambda).
+  auto grown = [&](int k, double lambda) {
+    double w = 1e300;
+    if (grade_a) w = std::min(w, lambda * first_a * std::pow(ratio, k));
+    if (grade_b) w = std::min(w, lambda * first_b * std::pow(ratio, n - 1 - k));
+    return w;
+  };
+  auto sum = [&](double lambda, double cap) {
+    double s = 0.0;
+    for (int k = 0; k < n; ++k) s += std::min(cap, grown(k, lambda));
+    return s;
+  };
+  double lambda = 1.0, cap = 1e300;
+  const double most = sum(1.0, 1e300);
+  if (most < total) {
+    lambda = total / most;  // the progressions cannot fill the edge: longer first intervals
+  } else {
+    double lo = uniform, hi = total;  // the cap: sum(cap) <= total at the uniform size, >= at the total
+    for (int round = 0; round < 100; ++round) {
+      const double mid = 0.5 * (lo + hi);
+      (sum(1.0, mid) < total ? lo : hi) = mid;
+    }
+    cap = 0.5 * (lo + hi);
+  }
+  double s = 0.0;
+  for (int k = 0; k < n; ++k) {
+    s += std::min(cap, grown(k, lambda));
+    out[static_cast<size_t>(k) + 1] = s;
+  }
+  for (double& f : out) f /= s;
+  out.back() = 1.0;
+  return out;
+}
+
 QuadMesh block_model_mesh(const BlockModel& model, const std::vector<int>& intervals, double z, const FaceArcs* arcs,
-                          const std::vector<char>* by_length) {
+                          const std::vector<char>* by_length, const ArcEndGrading* grading) {
   if (intervals.size() != model.edges.size()) throw std::logic_error("block_model_mesh: one count per edge expected");
   QuadMesh mesh;
   mesh.z = z;
@@ -69,8 +111,22 @@ QuadMesh block_model_mesh(const BlockModel& model, const std::vector<int>& inter
       if (turn > M_PI) turn -= 2.0 * M_PI;
       if (turn < -M_PI) turn += 2.0 * M_PI;
       if (edge.arc >= 0) turn = edge.arc_sweep;
+      // The largest first turn from each end of the edge that is an end of the arc with a limit.
+      auto end_step = [&](Point2 p) {
+        if (!grading) return 0.0;
+        const auto& steps = grading->steps[static_cast<size_t>(on_arc[e])];
+        const double near = std::max(arcs->tolerance, 1e-9 * arc.radius);
+        const Point2 first = arc.first(), last = arc.last();
+        if (std::hypot(p.x - first.x, p.y - first.y) <= near) return steps[0];
+        if (std::hypot(p.x - last.x, p.y - last.y) <= near) return steps[1];
+        return 0.0;
+      };
+      const double first_a = end_step(a), first_b = end_step(b);
+      const std::vector<double> at = first_a > 0.0 || first_b > 0.0
+                                         ? graded_fractions(n, std::fabs(turn), first_a, first_b, grading->ratio)
+                                         : std::vector<double>{};
       for (int k = 1; k < n; ++k) {
-        const double t = ta + turn * static_cast<double>(k) / n;
+        const double t = at.empty() ? ta + turn * static_cast<double>(k) / n : ta + turn * at[static_cast<size_t>(k)];
         nodes.push_back(static_cast<int>(mesh.nodes.size()));
         mesh.nodes.push_back(Point2{arc.center.x + arc.radius * std::cos(t), arc.center.y + arc.radius * std::sin(t)});
       }

@@ -7,6 +7,7 @@
 // (edge_intervals.h), and the block's interior nodes are the Coons patch of its four sides.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "core/geometry/circular_arc.h"
@@ -26,7 +27,26 @@ namespace autoblock {
 //          counter-clockwise. mesh.blocks is the number of parts.
 // Throws std::logic_error when a block's opposite sides carry different counts.
 //          by_length (nullptr: none), per model block: fill it with transfinite_grid_by_length.
+//          grading (nullptr: none): an edge of an arc from an end with a limit spaces its nodes by
+//          graded_fractions (an acute tip's quad, mesh_pipeline.cpp).
+constexpr double kGradingRatio = 1.25;
+struct ArcEndGrading {
+  // Per arc of the face, the largest turn (radians, 0: no limit) of the first interval from its
+  // first and from its last end.
+  std::vector<std::array<double, 2>> steps;
+  double ratio = kGradingRatio;  // each interval over the one before it, from such an end
+};
 QuadMesh block_model_mesh(const BlockModel& model, const std::vector<int>& intervals, double z,
-                          const FaceArcs* arcs = nullptr, const std::vector<char>* by_length = nullptr);
+                          const FaceArcs* arcs = nullptr, const std::vector<char>* by_length = nullptr,
+                          const ArcEndGrading* grading = nullptr);
+
+// Node spacing graded from an edge's ends: intervals growing by ratio from a first one at most
+// first_a (from the start) or first_b (from the end) long, up to a common size that makes them add
+// up; uniform where neither limit is below the uniform interval. Where the grading cannot fill the
+// edge at that ratio, the first intervals are as short as it allows (all scaled alike).
+// Inputs:  n >= 1 intervals; total > 0, the edge's length (or turn); first_a, first_b (<= 0: none);
+//          ratio > 1.
+// Outputs: n + 1 fractions of the total, from 0 to 1, increasing.
+std::vector<double> graded_fractions(int n, double total, double first_a, double first_b, double ratio = kGradingRatio);
 
 }  // namespace autoblock

@@ -110,8 +110,8 @@ void assign_arc_intervals(MeshResult& r, const BlockModel& model, const MeshOpti
 // edge_target), twisted and folded parts made again as below (second_pass: as assign_with_fixed's).
 void mesh_blocks(MeshResult& r, const BlockModel& model, const InputFace& face, const RegionDecomposition& d,
                  const MeshOptions& options, double h, double tolerance, std::vector<int> edge_minimum,
-                 const std::vector<double>& edge_target, bool second_pass = false) {
-  r.mesh = block_model_mesh(model, r.intervals.intervals, face.planar.z, &face.arcs);
+                 const std::vector<double>& edge_target, bool second_pass = false, const ArcEndGrading* graded = nullptr) {
+  r.mesh = block_model_mesh(model, r.intervals.intervals, face.planar.z, &face.arcs, nullptr, graded);
   r.smoothing = smooth_quad_mesh(r.mesh, options.smoothing_sweeps, kWorstRounds, &face.arcs);
   // A thin part whose two long sides have their vertices at different places along it gets a twisted
   // (inverted) quad when those sides carry few intervals, each vertex being a node: up to
@@ -135,7 +135,7 @@ void mesh_blocks(MeshResult& r, const BlockModel& model, const InputFace& face, 
     } catch (const InputError&) {
       break;  // too many quads, or the fixed counts forbid more: the mesh stays as it is
     }
-    r.mesh = block_model_mesh(model, r.intervals.intervals, face.planar.z, &face.arcs);
+    r.mesh = block_model_mesh(model, r.intervals.intervals, face.planar.z, &face.arcs, nullptr, graded);
     r.smoothing = smooth_quad_mesh(r.mesh, options.smoothing_sweeps, kWorstRounds, &face.arcs);
   }
   // A fold that finer intervals do not undo (opposite sides spacing their nodes differently: a long
@@ -145,7 +145,7 @@ void mesh_blocks(MeshResult& r, const BlockModel& model, const InputFace& face, 
   if (const int before = inverted_quads(r.mesh, &folded); before > 0) {
     std::vector<char> by_length(model.blocks.size(), 0);
     for (size_t b = 0; b < by_length.size(); ++b) by_length[b] = folded[static_cast<size_t>(model.blocks[b].part)];
-    QuadMesh again = block_model_mesh(model, r.intervals.intervals, face.planar.z, &face.arcs, &by_length);
+    QuadMesh again = block_model_mesh(model, r.intervals.intervals, face.planar.z, &face.arcs, &by_length, graded);
     const SmoothingReport smoothing = smooth_quad_mesh(again, options.smoothing_sweeps, kWorstRounds, &face.arcs);
     if (inverted_quads(again, nullptr) < before) {
       r.mesh = std::move(again);
@@ -226,6 +226,8 @@ namespace {
 constexpr double kAcuteTip = 60.0 * M_PI / 180.0;      // a convex corner sharper than this is a tip
 constexpr double kTipShare = 0.97;                      // the tip quad's sine, at least this share of the corner's
 constexpr double kLeastTipStep = 0.5 * M_PI / 180.0;   // the finest turn asked of an edge from a tip
+constexpr double kTipGradingRatios[] = {1.25, 1.4};     // the gradings from a tip tried (graded_fractions)
+constexpr double kGradedTipShare = 0.99;                // kTipShare of edges graded from the tip (a few quads more)
 
 // The interval counts a block model's edges along arcs take at least: one per chord step of the arc
 // (chord), finer on an edge from an acute tip (acute_tip_steps); one per kMeshEdgeArcSteps of them on a convex arc (relaxed); the chord steps as targets
@@ -241,15 +243,16 @@ struct ArcMinima {
 // end (0: no limit). An end at a convex corner sharper than kAcuteTip (boundary_corners, the arcs'
 // tangents taken there) is a tip: the quad there has the angle of the chords to the first nodes, not
 // the tangents', smaller by half of each first edge's turn. The turns keep the quad's sine within
-// kTipShare of the corner's, shared between the corner's arcs (a lens's tip: both sides are arcs).
+// share (kTipShare, kGradedTipShare) of the corner's, shared between the corner's arcs (a
+// crescent's tip: both sides are arcs).
 // Inputs: loops, arcs, the face's. Output: the limits, one pair per arc of arcs.
-std::vector<std::array<double, 2>> acute_tip_steps(const std::vector<Ring>& loops, const FaceArcs& arcs) {
+std::vector<std::array<double, 2>> acute_tip_steps(const std::vector<Ring>& loops, const FaceArcs& arcs, double share) {
   std::vector<std::array<double, 2>> tip(arcs.arcs.size(), {0.0, 0.0});
   for (const BoundaryCorner& corner : boundary_corners(loops, arcs)) {
     if (corner.angle >= kAcuteTip) continue;
     const int on_arcs = (corner.arc_in >= 0) + (corner.arc_out >= 0);
     if (on_arcs == 0) continue;
-    const double deficit = corner.angle - std::asin(kTipShare * std::sin(corner.angle));
+    const double deficit = corner.angle - std::asin(share * std::sin(corner.angle));
     const double limit = std::max(kLeastTipStep, 2.0 * deficit / on_arcs);
     for (const int a : {corner.arc_in, corner.arc_out}) {
       if (a < 0) continue;
@@ -297,6 +300,42 @@ ArcMinima arc_minima(const BlockModel& model, const FaceArcs& arcs, const std::v
   return m;
 }
 
+// The intervals of model's arc edges with their nodes graded from acute tips (graded_fractions at
+// grading's ratio): per edge from a tip, the fewest from its chord count up (chord) whose first
+// intervals keep within the tip's limits. Others: their chord count. *graded: some edge's first
+// interval is shorter than its uniform one.
+std::vector<int> graded_counts(const BlockModel& model, const FaceArcs& arcs, const ArcEndGrading& grading,
+                               const std::vector<int>& chord, bool* graded) {
+  std::vector<int> counts = chord;
+  *graded = false;
+  for (size_t e = 0; e < model.edges.size(); ++e) {
+    const ModelEdge& edge = model.edges[e];
+    if (edge.arc < 0) continue;
+    const CircularArc& arc = arcs.arcs[static_cast<size_t>(edge.arc)];
+    const auto& steps = grading.steps[static_cast<size_t>(edge.arc)];
+    auto limit_at = [&](int v) {
+      const Point2 p = model.vertices[static_cast<size_t>(v)], first = arc.first(), last = arc.last();
+      if (std::hypot(p.x - first.x, p.y - first.y) <= arcs.tolerance) return steps[0];
+      if (std::hypot(p.x - last.x, p.y - last.y) <= arcs.tolerance) return steps[1];
+      return 0.0;
+    };
+    const double fa = limit_at(edge.a), fb = limit_at(edge.b), sweep = std::fabs(edge.arc_sweep);
+    const double finest = std::min(fa > 0.0 ? fa : 1e300, fb > 0.0 ? fb : 1e300);
+    if (!(finest < sweep / chord[e])) continue;  // no tip, or the uniform intervals are fine enough
+    *graded = true;
+    // At most the uniform count that keeps every interval within the finest limit.
+    const int most = std::max(chord[e], static_cast<int>(std::ceil(sweep / finest - 1e-6)));
+    for (int n = chord[e]; n <= most; ++n) {
+      counts[e] = n;
+      const std::vector<double> f = graded_fractions(n, sweep, fa, fb, grading.ratio);
+      const bool a_fine = !(fa > 0.0) || f[1] * sweep <= fa * (1.0 + 1e-9);
+      const bool b_fine = !(fb > 0.0) || (1.0 - f[f.size() - 2]) * sweep <= fb * (1.0 + 1e-9);
+      if (a_fine && b_fine) break;
+    }
+  }
+  return counts;
+}
+
 }  // namespace
 
 MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecomposition& d, const MeshOptions& options) {
@@ -326,7 +365,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   // chord steps as the program's targets instead (IntervalOptions::edge_target), a convex arc's edge
   // turning by up to kMeshEdgeArcSteps chord steps, a hole's or a concave fillet's one as before; the
   // better mesh is kept (MeshResult::arc_targets).
-  const std::vector<std::array<double, 2>> tip_steps = acute_tip_steps(loops, face.arcs);
+  const std::vector<std::array<double, 2>> tip_steps = acute_tip_steps(loops, face.arcs, kTipShare);
   const ArcMinima minima = arc_minima(result.block_model, face.arcs, tip_steps);
   const BlockModel& model = result.block_model;
   assign_arc_intervals(result, model, options, h, tolerance, minima.chord, {});
@@ -367,12 +406,12 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   // no counts in its quick limit) leaves the first mesh standing; a logic error, a bug, is not
   // swallowed.
   auto remake = [&](MeshResult& again, const BlockModel& on, const std::vector<int>& minimum,
-                    const std::vector<double>& target, bool own_model) {
+                    const std::vector<double>& target, bool own_model, const ArcEndGrading* graded = nullptr) {
     start = std::chrono::steady_clock::now();
     bool kept = false;
     try {
       assign_arc_intervals(again, on, options, h, tolerance, minimum, target, true);
-      mesh_blocks(again, on, face, d, options, h, tolerance, minimum, target, true);
+      mesh_blocks(again, on, face, d, options, h, tolerance, minimum, target, true, graded);
       kept = keep_if_better(again, own_model);
     } catch (const std::runtime_error&) {
       // the first mesh stands
@@ -401,11 +440,33 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     }
   }
   // A convex corner sharper than kAcuteTip where an arc ends: the quad there has the angle of the
-  // chord from the corner to the arc's first node, not the tangent's. A mesh short of kTipShare of
-  // the face's bound is made again with the arc's edges from such tips as fine as acute_tip_steps
-  // asks (more quads along them); the better mesh is kept (MeshResult::acute_tips).
+  // chord from the corner to the arc's first node, not the tangent's. A mesh short of
+  // kGradedTipShare of the face's bound is made again with the arc's edges from such tips graded
+  // from them (their first intervals within what acute_tip_steps asks for kGradedTipShare, then for
+  // kTipShare, growing by each of kTipGradingRatios: a few more quads), until one reaches
+  // kGradedTipShare; one still short of kTipShare, with those edges fine enough for kTipShare all
+  // along (many more quads). The best mesh is kept
+  // (MeshResult::acute_tips). Which of them meshes a face best depends on its blocks: a crescent's
+  // row of quads along its tighter arc skews where a uniformly fine side meets coarse ones, and at
+  // one grading and not at another.
   // (The block model kept: the two-corner template's is another, with other edges.)
   const ArcMinima kept = result.two_corner ? arc_minima(result.block_model, face.arcs, tip_steps) : minima;
+  for (const double share : {kGradedTipShare, kTipShare}) {
+    if (!result.conformity.conformal || result.quality.min_scaled_jacobian >= kGradedTipShare * result.bound) break;
+    const std::vector<std::array<double, 2>> graded_steps = acute_tip_steps(loops, face.arcs, share);
+    for (const double ratio : kTipGradingRatios) {
+      if (result.quality.min_scaled_jacobian >= kGradedTipShare * result.bound) break;
+      const ArcEndGrading grading{graded_steps, ratio};
+      bool graded = false;
+      const std::vector<int> counts = graded_counts(result.block_model, face.arcs, grading, kept.chord, &graded);
+      if (!graded) break;
+      MeshResult again;
+      if (remake(again, result.block_model, counts, {}, false, &grading)) {
+        result.acute_tips = true;
+        result.arc_targets = false;
+      }
+    }
+  }
   if (kept.tipped && result.conformity.conformal && result.quality.min_scaled_jacobian < kTipShare * result.bound) {
     MeshResult again;
     if (remake(again, result.block_model, kept.tips, {}, false)) {

@@ -108,3 +108,22 @@ TEST_CASE("block mesh: every generated general face meshes all-quad and conforma
   }
   CHECK(faces > 900);  // the rest are chamfered unions whose chamfers all merged away (rectilinear)
 }
+
+TEST_CASE("graded spacing from an edge's ends against hand values", "[mesh][block]") {
+  auto check = [](const std::vector<double>& got, const std::vector<double>& want) {
+    REQUIRE(got.size() == want.size());
+    for (size_t k = 0; k < want.size(); ++k) CHECK(got[k] == Approx(want[k]).margin(1e-12));
+  };
+  // No limit, or limits no shorter than the uniform interval: uniform.
+  check(graded_fractions(4, 10.0, 0.0, 0.0, 2.0), {0.0, 0.25, 0.5, 0.75, 1.0});
+  check(graded_fractions(4, 10.0, 2.5, 3.0, 2.0), {0.0, 0.25, 0.5, 0.75, 1.0});
+  check(graded_fractions(1, 10.0, 0.1, 0.1, 2.0), {0.0, 1.0});
+  // From the start: 1, 2, then capped at the size that fills 10 (1 + 2 + 2 s = 10: 3.5, 3.5).
+  check(graded_fractions(4, 10.0, 1.0, 0.0, 2.0), {0.0, 0.1, 0.3, 0.65, 1.0});
+  // From the end, the same mirrored.
+  check(graded_fractions(4, 10.0, 0.0, 1.0, 2.0), {0.0, 0.35, 0.7, 0.9, 1.0});
+  // From both ends: 1, 2, 4, 2, 1 fill 10 exactly.
+  check(graded_fractions(5, 10.0, 1.0, 1.0, 2.0), {0.0, 0.1, 0.3, 0.7, 0.9, 1.0});
+  // Too few intervals to fill 10 from a first of 1 at ratio 2 (1 + 2 + 4 = 7): all scaled by 10 / 7.
+  check(graded_fractions(3, 10.0, 1.0, 0.0, 2.0), {0.0, 1.0 / 7.0, 3.0 / 7.0, 1.0});
+}
