@@ -72,10 +72,12 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
   std::optional<FaceDecomposition> first = decompose_try(0);
   if (first->region.policy != "search") {
     // Another policy: its one decomposition, meshed. When its blocks do not mesh (a reason of ours:
-    // no interval counts for them), the search's tries mesh the face instead, and say so.
+    // no interval counts for them, or a mesh that fails its own conformity check: quads inverted in
+    // a greedy policy's sliver), the search's tries mesh the face instead, and say so.
     options.general.reward = first->region.reward;
     try {
       out.result = mesh_region_decomposition(face, first->region, options);
+      require_conformal(out.result);
       out.decomposition = std::move(*first);
       out.corner_fraction = settings.corner_fraction;
       finish();

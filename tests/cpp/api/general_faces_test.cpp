@@ -470,6 +470,21 @@ TEST_CASE("a policy whose blocks do not mesh: mesh makes the search's tries inst
   CHECK_FALSE(face_meshing_json("plate", mesh_input_face(face, DecomposeSettings{}, MeshOptions{})).contains("policy_fallback"));
 }
 
+TEST_CASE("a policy whose mesh fails its conformity check: mesh makes the search's tries instead, and says so",
+          "[api][general][mesh][arc]") {
+  // A flange of `perforated_plates.py flanges.brep 20261206 30 flanges` (its 13th face): greedy's
+  // blocks mesh, but with inverted quads (a sliver between the rim and a bolt hole). The user who
+  // asked for greedy gets the search's conformal mesh and the reason, not an internal error.
+  const InputFace face = arc_test_face("greedy-inverted");
+  DecomposeSettings settings;
+  settings.policy = "greedy";
+  const FaceMeshing m = mesh_input_face(face, settings, MeshOptions{});
+  CHECK(m.decomposition.region.fallback_from == "greedy");
+  CHECK(m.decomposition.region.fallback_reason.find("conformity check") != std::string::npos);
+  CHECK(m.policy() == "search");
+  CHECK(m.result.conformity.conformal);
+}
+
 TEST_CASE("decompose keeps the decomposition mesh keeps, its cuts, replayed under its rules, mesh the same",
           "[api][general][mesh]") {
   // The hexagon above, whose first try is poor: the tries keep another width, other rules or finer
