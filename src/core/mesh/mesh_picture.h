@@ -2,8 +2,12 @@
 //
 // Blocks are filled in the colours of the decomposition pictures (svg_picture.h), mesh edges are
 // thin dark lines, block sides thicker, the face's outline (holes included) thickest; y points up
-// as in the model. The face's holes are filled white over the blocks: a part finished around a hole
-// (the O-grid template) is given by its outer ring, which would paint the hole over.
+// as in the model. A mesh whose quads carry their parts (QuadMesh::quad_block) is drawn from itself:
+// each part filled within the outline of its quads, its sides (edges between quads of two parts) and
+// the face's outline (edges of one quad) along the mesh's edges, so that an arc is drawn through the
+// mesh's nodes on it rather than as the parts' coarse polygon. Otherwise (no quads) the rings given
+// are drawn, the face's holes filled white over the blocks: a part finished around a hole (the
+// O-grid template) is given by its outer ring, which would paint the hole over.
 #pragma once
 
 #include <string>

@@ -10,6 +10,7 @@
 #include "core/baselines/baseline_policy.h"
 #include "core/env/decomposition.h"
 #include "core/geometry/occt_face.h"
+#include "core/io/svg_picture.h"
 #include "core/io/text_file.h"
 #include "core/mesh/mesh_conformity.h"
 #include "core/mesh/mesh_export.h"
@@ -159,4 +160,36 @@ TEST_CASE("a mesh picture leaves the face's holes white under a part finished ar
   CHECK(std::count(path.begin(), path.end(), 'L') == 3);
   // A face without holes has no such path.
   CHECK(mesh_svg({outer}, {outer}, QuadMesh{}, "no hole").find("fill=\"white\" d=") == std::string::npos);
+}
+
+TEST_CASE("a mesh picture draws each part from its quads, part sides and the outline along mesh edges",
+          "[mesh][export][picture]") {
+  // Three quads in a row, the first two of part 0, the third of part 1. The parts' rings given (a
+  // coarse polygon, as an arc's part would have) are not what is drawn: the mesh is.
+  QuadMesh mesh;
+  for (int y = 0; y < 2; ++y) {
+    for (int x = 0; x < 4; ++x) mesh.nodes.push_back(Point2{static_cast<double>(x), static_cast<double>(y)});
+  }
+  mesh.quads = {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}};
+  mesh.quad_block = {0, 0, 1};
+  mesh.blocks = 2;
+  const Ring outer{{0, 0}, {3, 0}, {3, 1}, {0, 1}};
+  const std::string svg = mesh_svg({outer}, {Ring{{0, 0}, {2, 0}, {2, 1}}, Ring{{2, 0}, {3, 0}, {3, 1}}}, mesh, "parts");
+  // The path that follows a marker, up to its end.
+  auto path_after = [&](const std::string& marker) {
+    const size_t at = svg.find(marker);
+    REQUIRE(at != std::string::npos);
+    return svg.substr(at, svg.find("\"/>", at) - at);
+  };
+  auto count = [](const std::string& text, char c) { return std::count(text.begin(), text.end(), c); };
+  // Each part filled within one loop of its quads' outline: part 0's six nodes, part 1's four.
+  const std::string part0 = path_after("<path fill=\"" + block_colour(0) + "\"");
+  CHECK(count(part0, 'M') == 1);
+  CHECK(count(part0, 'L') == 5);
+  const std::string part1 = path_after("<path fill=\"" + block_colour(1) + "\"");
+  CHECK(count(part1, 'M') == 1);
+  CHECK(count(part1, 'L') == 3);
+  CHECK(count(path_after("stroke-width=\"1.6\""), 'M') == 1);  // the edge between the parts, x = 2
+  CHECK(count(path_after("stroke-width=\"2.5\""), 'M') == 8);  // the mesh's boundary edges
+  CHECK(count(path_after("stroke-width=\"0.6\""), 'M') == 10);  // every mesh edge
 }
