@@ -104,14 +104,16 @@ int FaceArcs::arc_of_point(Point2 p) const {
   return -1;
 }
 
+int CircularArc::end_at(Point2 p, double tolerance) const {
+  const double near = std::max(1e-9 * radius, tolerance);
+  const Point2 a = first(), b = last();
+  if (std::hypot(p.x - a.x, p.y - a.y) <= near) return 0;
+  if (std::hypot(p.x - b.x, p.y - b.y) <= near) return 1;
+  return -1;
+}
+
 bool FaceArcs::at_arc_end(Point2 p) const {
-  for (const CircularArc& arc : arcs) {
-    const double near = std::max(1e-9 * arc.radius, tolerance);
-    for (const Point2 end : {arc.first(), arc.last()}) {
-      if (std::hypot(p.x - end.x, p.y - end.y) <= near) return true;
-    }
-  }
-  return false;
+  return std::any_of(arcs.begin(), arcs.end(), [&](const CircularArc& arc) { return arc.end_at(p, tolerance) >= 0; });
 }
 
 namespace {

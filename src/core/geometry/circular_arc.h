@@ -54,6 +54,9 @@ struct CircularArc {
   Point2 first() const { return point_at(0.0); }
   Point2 last() const { return point_at(1.0); }
   double length() const;
+  // Inputs: p; tolerance. Output: 0 when p lies within tolerance (at least 1e-9 of the radius) of
+  //         the arc's first point, else 1 when of its last, else -1.
+  int end_at(Point2 p, double tolerance) const;
 };
 
 // Inputs:  arc; max_step_degrees, the largest turn of a chord.

@@ -113,15 +113,12 @@ QuadMesh block_model_mesh(const BlockModel& model, const std::vector<int>& inter
       if (edge.arc >= 0) turn = edge.arc_sweep;
       // The largest first turn from each end of the edge that is an end of the arc with a limit.
       auto end_step = [&](Point2 p) {
-        if (!grading) return 0.0;
-        const auto& steps = grading->steps[static_cast<size_t>(on_arc[e])];
-        const double near = std::max(arcs->tolerance, 1e-9 * arc.radius);
-        const Point2 first = arc.first(), last = arc.last();
-        if (std::hypot(p.x - first.x, p.y - first.y) <= near) return steps[0];
-        if (std::hypot(p.x - last.x, p.y - last.y) <= near) return steps[1];
-        return 0.0;
+        const int end = grading ? arc.end_at(p, arcs->tolerance) : -1;
+        return end < 0 ? 0.0 : grading->steps[static_cast<size_t>(on_arc[e])][static_cast<size_t>(end)];
       };
       const double first_a = end_step(a), first_b = end_step(b);
+      // (Ungraded, the spacing is computed as it always was: smoothing follows another path when the
+      // nodes move by their last bit.)
       const std::vector<double> at = first_a > 0.0 || first_b > 0.0
                                          ? graded_fractions(n, std::fabs(turn), first_a, first_b, grading->ratio)
                                          : std::vector<double>{};

@@ -268,6 +268,19 @@ std::vector<std::array<double, 2>> acute_tip_steps(const std::vector<Ring>& loop
   return tip;
 }
 
+// Inputs: model's edge along an arc of arcs; steps, per arc of arcs (acute_tip_steps). Output: the
+//         limits at the edge's ends a and b where they are ends of its arc (0: none).
+std::array<double, 2> edge_tip_limits(const BlockModel& model, const ModelEdge& edge, const FaceArcs& arcs,
+                                      const std::vector<std::array<double, 2>>& steps) {
+  const CircularArc& arc = arcs.arcs[static_cast<size_t>(edge.arc)];
+  std::array<double, 2> limits{0.0, 0.0};
+  for (int k = 0; k < 2; ++k) {
+    const int end = arc.end_at(model.vertices[static_cast<size_t>(k == 0 ? edge.a : edge.b)], arcs.tolerance);
+    if (end >= 0) limits[static_cast<size_t>(k)] = steps[static_cast<size_t>(edge.arc)][static_cast<size_t>(end)];
+  }
+  return limits;
+}
+
 // Inputs: model, its edges on arcs; arcs, the face's; tip, acute_tip_steps of the face.
 ArcMinima arc_minima(const BlockModel& model, const FaceArcs& arcs, const std::vector<std::array<double, 2>>& tip) {
   const size_t n_edges = model.edges.size();
@@ -286,12 +299,8 @@ ArcMinima arc_minima(const BlockModel& model, const FaceArcs& arcs, const std::v
     m.relaxable = m.relaxable || m.relaxed[e] < m.chord[e];
     m.tips[e] = m.chord[e];
     // An edge from an acute tip: its intervals as fine as the tip wants.
-    for (int end = 0; end < 2; ++end) {
-      const double limit = tip[static_cast<size_t>(edge.arc)][static_cast<size_t>(end)];
+    for (const double limit : edge_tip_limits(model, edge, arcs, tip)) {
       if (!(limit > 0.0)) continue;
-      const Point2 p = end == 0 ? arc.first() : arc.last();
-      const Point2 a = model.vertices[static_cast<size_t>(edge.a)], b = model.vertices[static_cast<size_t>(edge.b)];
-      if (std::min(std::hypot(a.x - p.x, a.y - p.y), std::hypot(b.x - p.x, b.y - p.y)) > arcs.tolerance) continue;
       const int fine = static_cast<int>(std::ceil(std::fabs(edge.arc_sweep) / limit - 1e-6));
       m.tipped = m.tipped || fine > m.tips[e];
       m.tips[e] = std::max(m.tips[e], fine);
@@ -311,15 +320,8 @@ std::vector<int> graded_counts(const BlockModel& model, const FaceArcs& arcs, co
   for (size_t e = 0; e < model.edges.size(); ++e) {
     const ModelEdge& edge = model.edges[e];
     if (edge.arc < 0) continue;
-    const CircularArc& arc = arcs.arcs[static_cast<size_t>(edge.arc)];
-    const auto& steps = grading.steps[static_cast<size_t>(edge.arc)];
-    auto limit_at = [&](int v) {
-      const Point2 p = model.vertices[static_cast<size_t>(v)], first = arc.first(), last = arc.last();
-      if (std::hypot(p.x - first.x, p.y - first.y) <= arcs.tolerance) return steps[0];
-      if (std::hypot(p.x - last.x, p.y - last.y) <= arcs.tolerance) return steps[1];
-      return 0.0;
-    };
-    const double fa = limit_at(edge.a), fb = limit_at(edge.b), sweep = std::fabs(edge.arc_sweep);
+    const auto [fa, fb] = edge_tip_limits(model, edge, arcs, grading.steps);
+    const double sweep = std::fabs(edge.arc_sweep);
     const double finest = std::min(fa > 0.0 ? fa : 1e300, fb > 0.0 ? fb : 1e300);
     if (!(finest < sweep / chord[e])) continue;  // no tip, or the uniform intervals are fine enough
     *graded = true;
@@ -453,7 +455,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   const ArcMinima kept = result.two_corner ? arc_minima(result.block_model, face.arcs, tip_steps) : minima;
   for (const double share : {kGradedTipShare, kTipShare}) {
     if (!result.conformity.conformal || result.quality.min_scaled_jacobian >= kGradedTipShare * result.bound) break;
-    const std::vector<std::array<double, 2>> graded_steps = acute_tip_steps(loops, face.arcs, share);
+    const std::vector<std::array<double, 2>> graded_steps = share == kTipShare ? tip_steps : acute_tip_steps(loops, face.arcs, share);
     for (const double ratio : kTipGradingRatios) {
       if (result.quality.min_scaled_jacobian >= kGradedTipShare * result.bound) break;
       const ArcEndGrading grading{graded_steps, ratio};
