@@ -18,6 +18,8 @@ constexpr double kDegree = M_PI / 180.0;
 // room between the hole and every side, in the hole's radii.
 constexpr double kOgridMinCorner = 60.0;
 constexpr double kOgridClearance = 0.5;
+constexpr double kOgridSideTurn = 60.0;  // the most a side may bend along an arc, degrees in all
+constexpr double kOgridCurvedPatch = 0.45;  // the least Coons patch Jacobian of its pieces with curved sides
 
 // The centre of the largest circle inside a convex polygon (counter-clockwise): the linear program
 // max r subject to dist_k(p) >= r for every side's line, solved at its vertices (three sides' lines
@@ -507,6 +509,8 @@ std::vector<QuadPiece> smooth_template_pieces(const Region& region, const std::v
 
 // The O-grid template's pieces (see block.h) when it applies, else nothing: made once, both to decide
 // and to use.
+double pieces_patch_jacobian(const std::vector<QuadPiece>& pieces);  // below
+
 std::optional<std::vector<QuadPiece>> applicable_ogrid_template(const Region& region, const BlockRules& rules) {
   if (region.holes().size() != 1) return std::nullopt;
   const double q = region.quantum();
@@ -535,23 +539,40 @@ std::optional<std::vector<QuadPiece>> applicable_ogrid_template(const Region& re
     corner.push_back(i);
   }
   if (corner.size() != 4) return std::nullopt;
-  // Side k runs from corner k to corner k + 1: its unit direction, inward normal, and the hole
-  // centre's distance from it. Side vertices (T-junctions) must lie on its chord.
+  // Side k runs from corner k to corner k + 1: its chord's unit direction, inward normal, and the
+  // hole centre's distance from the side (from its nearest vertex: a side along an arc, a bore's, may
+  // bulge towards the hole). A side is straight (its side vertices, T-junctions, on its chord) or
+  // bends along an arc (an annular sector of a flange) by at most kOgridSideTurn in all, its vertices
+  // in order along its chord.
   std::array<Point2, 4> e, normal;
   std::array<double, 4> length{}, d{}, reach{};
+  std::array<bool, 4> curved{};
   for (size_t k = 0; k < 4; ++k) {
     const Point2 a = ring[corner[k]], b = ring[corner[(k + 1) % 4]];
     length[k] = std::hypot(b.x - a.x, b.y - a.y);
     e[k] = {(b.x - a.x) / length[k], (b.y - a.y) / length[k]};
     normal[k] = {-e[k].y, e[k].x};
     d[k] = normal[k].x * (c.x - a.x) + normal[k].y * (c.y - a.y);
+    double turn = 0.0, along = -std::numeric_limits<double>::infinity(), nearest = d[k];
     for (size_t i = corner[k]; i != corner[(k + 1) % 4]; i = (i + 1) % n) {
       const Point2 v = ring[i];
-      if (std::fabs(normal[k].x * (v.x - a.x) + normal[k].y * (v.y - a.y)) > 2.0 * q) return std::nullopt;
+      curved[k] = curved[k] || std::fabs(normal[k].x * (v.x - a.x) + normal[k].y * (v.y - a.y)) > 2.0 * q;
+      nearest = std::min(nearest, normal[k].x * (c.x - v.x) + normal[k].y * (c.y - v.y));
+      const double t = e[k].x * (v.x - a.x) + e[k].y * (v.y - a.y);
+      if (t <= along) return std::nullopt;
+      along = t;
+      if (i != corner[k]) turn += std::fabs(interior_angle(ring, i) - M_PI);
     }
+    if (turn > kOgridSideTurn * kDegree) return std::nullopt;
+    if (curved[k]) d[k] = nearest;
     // How far the hole reaches from its centre towards side k.
     for (const Point2& v : hole) reach[k] = std::max(reach[k], -(normal[k].x * (v.x - c.x) + normal[k].y * (v.y - c.y)));
   }
+  // Curved sides only as an annular sector's: two opposite sides along arcs. (With one, a cell the
+  // search cut next to a rim, the O-grid's intervals round a small hole forced fine meshes on its
+  // neighbours: two flanges of two bolt circles fell from 0.64 and 0.75 to 0.33 and 0.48.)
+  const bool any_curved = curved[0] || curved[1] || curved[2] || curved[3];
+  if (any_curved && !((curved[0] && curved[2]) || (curved[1] && curved[3]))) return std::nullopt;
   // Room on every side: the gap to the side at least half the hole's smallest reach (its radius) and
   // 64 quanta, for a ring and a strip beyond it.
   const double radius = *std::min_element(reach.begin(), reach.end());
@@ -587,9 +608,25 @@ std::optional<std::vector<QuadPiece>> applicable_ogrid_template(const Region& re
     auto along = [&](Point2 v) { return e[k].x * (v.x - a.x) + e[k].y * (v.y - a.y); };
     const double t1 = along(foot_on_side[k]), t2 = along(foot_on_previous[(k + 1) % 4]);
     if (!(t1 > 32.0 * q && t2 - t1 > 32.0 * q && length[k] - t2 > 32.0 * q)) return std::nullopt;
+    // The side's point at a position along its chord: on the chord, or on a curved side's polygon.
+    auto at = [&](double t) {
+      Point2 p{a.x + t * e[k].x, a.y + t * e[k].y};
+      if (curved[k]) {
+        for (size_t i = corner[k]; i != corner[(k + 1) % 4]; i = (i + 1) % n) {
+          const Point2 u = ring[i], w = ring[(i + 1) % n];
+          const double tu = along(u), tw = along(w);
+          if (t >= tu && t <= tw) {
+            const double f = tw > tu ? (t - tu) / (tw - tu) : 0.0;
+            p = {u.x + f * (w.x - u.x), u.y + f * (w.y - u.y)};
+            break;
+          }
+        }
+      }
+      return Point2{snap_to_lattice(p.x, q), snap_to_lattice(p.y, q)};
+    };
     SideSplit& s = split[k];
-    s.first = {snap_to_lattice(a.x + t1 * e[k].x, q), snap_to_lattice(a.y + t1 * e[k].y, q)};
-    s.second = {snap_to_lattice(a.x + t2 * e[k].x, q), snap_to_lattice(a.y + t2 * e[k].y, q)};
+    s.first = at(t1);
+    s.second = at(t2);
     for (size_t i = corner[k]; i != corner[(k + 1) % 4]; i = (i + 1) % n) {
       const double t = along(ring[i]);
       if (std::fabs(t - t1) <= 2.0 * q) s.first = ring[i];
@@ -642,6 +679,9 @@ std::optional<std::vector<QuadPiece>> applicable_ogrid_template(const Region& re
     add(std::move(loop), {0, 1, 2, at_last});
   }
   if (!pieces_well_shaped(pieces)) return std::nullopt;
+  // Curved sides: the pieces' Coons patches must keep their cells from skewing more than a square
+  // cell's do (a wide sector's box is a trapezoid, its ring pieces skewed).
+  if (any_curved && pieces_patch_jacobian(pieces) < kOgridCurvedPatch) return std::nullopt;
   return pieces;
 }
 

@@ -156,16 +156,21 @@ bool two_corner_improves(const Region& region, const BlockRules& rules = {});
 
 // A part with one round hole (issue 13: a circle reaches the engine as a ring of side vertices,
 // circular_arc.h), or any smooth convex one (a slot), and four convex corners of 60-120 degrees joined
-// by straight sides gets the O-grid template: a box around the hole, its side k parallel to the part's
-// side k, halfway between the hole and that side but at most one radius (the hole's smallest reach
-// from its centroid) beyond the hole; four pieces between the box and the hole (each box corner
+// by straight sides, or sides along arcs that bend by at most 60 degrees each (a flange's cell: an
+// annular sector), gets the O-grid template: a box around the hole, its side k parallel to the chord
+// of the part's side k, halfway between the hole and that side (its nearest vertex: a bore's arc bulges
+// towards the hole) but at most one radius (the hole's smallest reach from its centroid) beyond the
+// hole; four pieces between the box and the hole (each box corner
 // joined to the hole's vertex in its direction from the hole's centroid), four between the box and
 // the sides (the box corners' feet on the sides), and four at the part's corners: twelve pieces in
 // that order, every corner of the part, foot and box side a right angle on a rectangle. The box
 // corners are the five-valent vertices that a quad mesh of a part with a round hole needs
 // (topology_jacobian_bound). It applies only where every side leaves room (the hole at least half a
 // radius and 64 quanta from it), the feet fall inside their sides, and every piece's quadrilateral of
-// corners is convex with angles within [20, 160] degrees.
+// corners is convex with angles within [20, 160] degrees; with curved sides (their feet on the sides'
+// polygons), also where the pieces' Coons patches keep a scaled Jacobian of 0.45 (a sector as long
+// round its middle as it is deep gives 0.48-0.54 as it spans 50-36 degrees, a plate's O-grid
+// 0.59-0.65; a wider one's box is a trapezoid whose ring pieces skew: 0.42 at 120 degrees).
 // Inputs: region; rules. Output: true when the O-grid template applies (template_pieces makes it).
 bool ogrid_template(const Region& region, const BlockRules& rules = {});
 

@@ -24,6 +24,7 @@ constexpr double kArcDominated = 0.35;  // the least share of the outer loop's l
 constexpr double kCentreClear = 0.05;   // radial lines only with their centre this far (times the part's size) out of it
 constexpr double kArcStep = 0.5;        // the longest segment (times the radius) of a vertex voting for its circle
 constexpr double kRadialClearance = 0.5;  // a radial line keeps this times a hole's radius from it
+constexpr double kSectorLeast = 0.25;     // divide_sector's least piece, in the hole's square cells
 
 Point2 unit(Point2 d) {
   const double len = std::hypot(d.x, d.y);
@@ -147,7 +148,140 @@ bool meets_square_enough(const Region& part, const std::vector<Chord>& chords) {
   return true;
 }
 
+// Inputs: holes; their centres. Output: each hole's radius (its farthest vertex from its centre).
+std::vector<double> hole_radii(const std::vector<Ring>& holes, const std::vector<Point2>& centre) {
+  std::vector<double> radius(holes.size());
+  for (size_t h = 0; h < holes.size(); ++h) {
+    for (const Point2& v : holes[h]) radius[h] = std::max(radius[h], std::hypot(v.x - centre[h].x, v.y - centre[h].y));
+  }
+  return radius;
+}
+
+// Inputs: part; size, its minimum-area rectangle's longer side; its holes' centres and radii.
+// Output: the centre of the part's arcs (pattern_centre) where lines through it meet away from the
+//         part: in a hole (a bore), or outside the part by kCentreClear of its size (the notch a bore
+//         left: a sector of a flange); lines meeting inside it would leave its pieces a sharp corner
+//         there. Else nothing.
+std::optional<Point2> radial_centre(const Region& part, double size, const std::vector<Point2>& centre,
+                                    const std::vector<double>& radius) {
+  const std::optional<Point2> c = pattern_centre(part, size);
+  if (!c) return std::nullopt;
+  for (size_t h = 0; h < centre.size(); ++h) {
+    if (std::hypot(centre[h].x - c->x, centre[h].y - c->y) < radius[h]) return c;  // a bore
+  }
+  const Ring& outer = part.outer();
+  if (point_in_ring(*c, outer)) return std::nullopt;
+  double distance = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < outer.size(); ++i) distance = std::min(distance, segment_distance(*c, outer[i], outer[(i + 1) % outer.size()]));
+  if (distance < kCentreClear * size) return std::nullopt;
+  return c;
+}
+
+// Inputs: holes. Output: each hole's centre, the mean of its vertices.
+std::vector<Point2> hole_centres(const std::vector<Ring>& holes) {
+  std::vector<Point2> centre(holes.size());
+  for (size_t h = 0; h < holes.size(); ++h) {
+    double x = 0.0, y = 0.0;
+    for (const Point2& v : holes[h]) {
+      x += v.x;
+      y += v.y;
+    }
+    centre[h] = {x / static_cast<double>(holes[h].size()), y / static_cast<double>(holes[h].size())};
+  }
+  return centre;
+}
+
+// Inputs: part; skip, a loop number to leave out (-1: none); origin; unit direction u.
+// Output: the distances along the ray from origin along u at which it crosses the part's loops.
+std::vector<double> ray_crossings(const Region& part, int skip, Point2 origin, Point2 u) {
+  std::vector<double> at;
+  for (int l = 0; l < part.loop_count(); ++l) {
+    if (l == skip) continue;
+    const Ring& ring = part.loop(l);
+    for (size_t i = 0; i < ring.size(); ++i) {
+      const Point2 a = ring[i], b = ring[(i + 1) % ring.size()];
+      const Point2 ab{b.x - a.x, b.y - a.y};
+      const double det = u.x * (-ab.y) - u.y * (-ab.x);
+      if (std::fabs(det) < 1e-15) continue;
+      const Point2 w{a.x - origin.x, a.y - origin.y};
+      const double t = (w.x * (-ab.y) - w.y * (-ab.x)) / det;  // along the ray
+      const double s = (u.x * w.y - u.y * w.x) / det;           // along the segment
+      if (t > 0.0 && s >= 0.0 && s < 1.0) at.push_back(t);
+    }
+  }
+  std::sort(at.begin(), at.end());
+  return at;
+}
+
 }  // namespace
+
+std::optional<HoleDivision> divide_sector(const Region& part) {
+  const std::vector<Ring>& holes = part.holes();
+  const size_t k = holes.size();
+  if (k == 0) return std::nullopt;
+  const double size = min_area_rectangle(part).longer_side();
+  const std::vector<Point2> centre = hole_centres(holes);
+  const std::vector<double> radius = hole_radii(holes, centre);
+  const std::optional<Point2> c = radial_centre(part, size, centre, radius);
+  if (!c) return std::nullopt;
+  // Each hole's direction from the centre and its square cell's half angle (none: the bore, or no
+  // depth along its ray).
+  std::vector<double> mid(k), half(k, 0.0), depth(k, 0.0);
+  std::vector<char> bore(k, 0);
+  for (size_t h = 0; h < k; ++h) {
+    const double distance = std::hypot(centre[h].x - c->x, centre[h].y - c->y);
+    bore[h] = distance < radius[h];
+    if (bore[h]) continue;
+    mid[h] = std::atan2(centre[h].y - c->y, centre[h].x - c->x);
+    // The part's depth along the ray through the hole: from the crossing before it to the one after
+    // (the hole's own loop left out).
+    const std::vector<double> at = ray_crossings(part, static_cast<int>(h) + 1, *c, {std::cos(mid[h]), std::sin(mid[h])});
+    const auto after = std::upper_bound(at.begin(), at.end(), distance);
+    if (after == at.begin() || after == at.end()) continue;
+    depth[h] = *after - *(after - 1);
+    half[h] = 0.5 * depth[h] / distance;
+  }
+  // The lines tried, in order: between two holes, the bisector of their directions (a sector of two
+  // bolt holes halved, as divide_holes would); then each cell's sides.
+  struct Line {
+    double angle, cell;  // cell: the square cell's side length the pieces are measured against
+    bool separates;      // every piece must hold fewer holes than the part
+  };
+  std::vector<Line> lines;
+  for (size_t h = 0; h < k; ++h) {
+    for (size_t g = h + 1; g < k; ++g) {
+      if (half[h] <= 0.0 || half[g] <= 0.0) continue;
+      const double turn = std::remainder(mid[g] - mid[h], 2.0 * M_PI);
+      lines.push_back({mid[h] + 0.5 * turn, std::min(depth[h], depth[g]), true});
+    }
+  }
+  for (size_t h = 0; h < k; ++h) {
+    if (half[h] <= 0.0) continue;
+    for (const double side : {1.0, -1.0}) lines.push_back({mid[h] + side * half[h], depth[h], false});
+  }
+  for (const Line& line : lines) {
+    const Point2 u{std::cos(line.angle), std::sin(line.angle)}, n{-u.y, u.x};
+    bool clear = true;
+    for (size_t g = 0; g < k && clear; ++g) {
+      if (bore[g]) continue;  // the line runs across it
+      clear = std::fabs(dot(n, {centre[g].x - c->x, centre[g].y - c->y})) - radius[g] >= kRadialClearance * radius[g];
+    }
+    if (!clear) continue;
+    const std::optional<Point2> origin = line_meets_outer(part, *c, u);
+    if (!origin) continue;
+    HoleDivision division;
+    division.cut = {CutKind::Full, *origin, u};
+    division.outcome = cut_region(part, division.cut);
+    if (division.outcome.pieces.size() < 2 || !meets_square_enough(part, division.outcome.chords)) continue;
+    // No sliver: every piece at least half the cell's square; a bisector leaves fewer holes in each.
+    bool take = true;
+    for (const Region& piece : division.outcome.pieces) {
+      take = take && piece.area() >= kSectorLeast * line.cell * line.cell && (!line.separates || piece.holes().size() < k);
+    }
+    if (take) return division;
+  }
+  return std::nullopt;
+}
 
 std::optional<HoleDivision> divide_holes(const Region& part) {
   const std::vector<Ring>& holes = part.holes();
@@ -173,15 +307,7 @@ std::optional<HoleDivision> divide_holes(const Region& part) {
   }
 
   // Each hole's centre (the mean of its vertices) and the direction to its nearest neighbour.
-  std::vector<Point2> centre(k);
-  for (size_t h = 0; h < k; ++h) {
-    double x = 0.0, y = 0.0;
-    for (const Point2& v : holes[h]) {
-      x += v.x;
-      y += v.y;
-    }
-    centre[h] = {x / static_cast<double>(holes[h].size()), y / static_cast<double>(holes[h].size())};
-  }
+  const std::vector<Point2> centre = hole_centres(holes);
   std::vector<std::pair<int, double>> neighbour_angles;  // (count, angle), clustered
   for (size_t h = 0; h < k; ++h) {
     double nearest = std::numeric_limits<double>::infinity();
@@ -276,24 +402,9 @@ std::optional<HoleDivision> divide_holes(const Region& part) {
   // Radial lines: through the centre of the part's arcs, between the holes as seen from it (a
   // flange's bolt circle, a polar pattern; the bore, a hole around the centre, is cut across). A line
   // through the centre reaches both ways, so the holes' angular extents count modulo pi.
-  const std::optional<Point2> c = pattern_centre(part, frame.longer_side());
-  std::vector<double> radius(k);
-  bool bore = false;  // the centre lies in a hole
-  for (size_t h = 0; h < k; ++h) {
-    for (const Point2& v : holes[h]) radius[h] = std::max(radius[h], std::hypot(v.x - centre[h].x, v.y - centre[h].y));
-    bore = bore || (c && std::hypot(centre[h].x - c->x, centre[h].y - c->y) < radius[h]);
-  }
-  // Only where the lines meet away from the part (in a bore, or in the notch a bore left: a sector of
-  // a flange): lines meeting inside it would leave it pieces with a sharp corner there.
-  bool clear_of_part = bore;
-  if (c && !bore && !point_in_ring(*c, outer)) {
-    double distance = std::numeric_limits<double>::infinity();
-    for (size_t i = 0; i < outer.size(); ++i) {
-      distance = std::min(distance, segment_distance(*c, outer[i], outer[(i + 1) % outer.size()]));
-    }
-    clear_of_part = distance >= kCentreClear * frame.longer_side();
-  }
-  if (clear_of_part) {
+  const std::vector<double> radius = hole_radii(holes, centre);
+  const std::optional<Point2> c = radial_centre(part, frame.longer_side(), centre, radius);
+  if (c) {
     std::vector<std::pair<double, double>> blocked;  // angular extents, in [0, pi) (may wrap)
     std::vector<size_t> around;  // the holes that do not hold the centre
     for (size_t h = 0; h < k; ++h) {

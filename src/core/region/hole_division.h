@@ -66,4 +66,23 @@ struct HoleDivision {
 //          meet the boundary too obliquely).
 std::optional<HoleDivision> divide_holes(const Region& part);
 
+// A flange's sector with a bolt hole or two (fewer than kDivideHoles: divide_holes leaves it to the
+// search) is wider than the hole's cell: divide_holes's radial lines run through the middles of the
+// gaps between the holes, so a flange of four bolt holes leaves quarter rings, too wide for an O-grid
+// with straight box sides (ogrid_template). An analyst cuts a square cell about each hole instead and
+// leaves the ring between the cells to blocks. Where the centre of the part's arcs lies away from the
+// part as for divide_holes's radial lines, divide_sector cuts along the first of these lines through
+// that centre that keeps half a radius from every hole, meets the boundary at 60 degrees or more and
+// leaves no piece smaller than a quarter of a hole's square cell:
+//   bisector  between two holes (not the bore), the bisector of their directions from the centre,
+//             leaving fewer holes in each piece (a sector of two bolt holes halved);
+//   cell side for each hole, at half a square cell's angle from its direction, on either side: the
+//             cell as wide, round the hole's circle about the centre, as the part is deep along the
+//             ray through the hole.
+// Measured (BENCHMARKS.md, "Flanges: square cells"): a flange of four bolt holes 0.41 -> 0.84, one bolt circle of square sectors 0.81-0.82 -> 0.93-0.95.
+// Inputs:  part.
+// Outputs: the cut and its outcome, or nothing (no hole, no such centre, every hole's cell already as
+//          narrow as that, or no line that cut_region makes with those checks).
+std::optional<HoleDivision> divide_sector(const Region& part);
+
 }  // namespace autoblock

@@ -31,8 +31,9 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
   const auto now = std::chrono::steady_clock::now();
   const bool late = options_.time_limit > 0.0 && now > deadline_;
   if (late) capped_ = true;
-  if (options_.divide_holes && static_cast<int>(part.holes().size()) >= kDivideHoles) {
-    if (const std::optional<HoleDivision> division = divide_holes(part)) {
+  if (options_.divide_holes && !part.holes().empty()) {
+    const bool many = static_cast<int>(part.holes().size()) >= kDivideHoles;
+    if (const std::optional<HoleDivision> division = many ? divide_holes(part) : divide_sector(part)) {
       Entry entry;
       entry.action = {RegionAction::Kind::Cut, division->cut};
       entry.value = region_cut_reward(options.reward, division->outcome, face_size, options.rules);

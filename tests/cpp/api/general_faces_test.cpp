@@ -485,6 +485,23 @@ TEST_CASE("a policy whose mesh fails its conformity check: mesh makes the search
   CHECK(m.result.conformity.conformal);
 }
 
+TEST_CASE("a flange of four bolt holes: a square O-grid cell about each hole, blocks in the ring between",
+          "[api][general][mesh][arc]") {
+  // A disk of radius 50, a bore of 20, four bolt holes of radius 4 on a circle of 34 (45 degrees off
+  // the axes). divide_holes halves it, divide_sector quarters it and cuts a cell about each hole; each
+  // cell is an annular sector, meshed by the O-grid with its arcs as sides.
+  const InputFace face = arc_test_face("flange-four-bolts");
+  const FaceMeshing m = mesh_input_face(face, untimed_settings(), MeshOptions{});
+  REQUIRE(m.decomposition.region.complete());
+  CHECK(m.result.conformity.conformal);
+  CHECK(m.decomposition.region.templates == 4);  // the four O-grids
+  // Four cells and eight sectors between them (two beside each cell, split where the quarters met).
+  CHECK(m.decomposition.region.finished.size() == 12);
+  // The O-grids' quads keep the cells' right angles (0.95 measured; the search's own cuts in the
+  // quarter rings gave 0.84).
+  CHECK(m.result.quality.min_scaled_jacobian > 0.9);
+}
+
 TEST_CASE("decompose keeps the decomposition mesh keeps, its cuts, replayed under its rules, mesh the same",
           "[api][general][mesh]") {
   // The hexagon above, whose first try is poor: the tries keep another width, other rules or finer

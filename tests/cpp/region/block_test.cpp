@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include <catch2/catch.hpp>
@@ -213,6 +214,70 @@ TEST_CASE("the O-grid template: a box around a round hole, twelve pieces", "[reg
   CHECK_FALSE(ogrid_template(Region(plate, {round_hole(2.5, 3, 0.8), round_hole(7.5, 3, 0.8)}, kQ)));
   const Ring l_shape{{0, 0}, {10, 0}, {10, 6}, {6, 6}, {6, 10}, {0, 10}};
   CHECK_FALSE(ogrid_template(Region(l_shape, {round_hole(3, 3, 1)}, kQ)));
+}
+
+namespace {
+// An annular sector about the origin (a flange's cell): radii r1 < r2, from angle -half to half
+// (degrees), its arcs sampled every step degrees, counter-clockwise.
+Ring annular_sector(double r1, double r2, double half, double step) {
+  Ring ring;
+  const int n = static_cast<int>(std::lround(2.0 * half / step));
+  auto at = [](double r, double degrees) {
+    return Point2{r * std::cos(degrees * M_PI / 180.0), r * std::sin(degrees * M_PI / 180.0)};
+  };
+  for (int i = 0; i <= n; ++i) ring.push_back(at(r2, -half + i * step));  // the rim, anticlockwise
+  for (int i = 0; i <= n; ++i) ring.push_back(at(r1, half - i * step));   // the bore, back
+  return ring;
+}
+}  // namespace
+
+TEST_CASE("the O-grid template in an annular sector: curved sides, twelve pieces", "[region][block][arc]") {
+  // A flange's cell: radii 20 and 40, 36 degrees wide (as long round its middle as it is deep), a
+  // bolt hole of radius 3 at its middle. The bore's arc bulges towards the hole, the rim's away.
+  const Region part(annular_sector(20, 40, 18, 6), {test::round_hole({30, 0}, 3)}, kQ);
+  REQUIRE(ogrid_template(part));
+  const std::vector<QuadPiece> pieces = template_pieces(part);
+  REQUIRE(pieces.size() == 12);
+  double area = 0.0;
+  for (const QuadPiece& piece : pieces) {
+    CHECK(signed_area(piece.ring) > 0.0);
+    area += signed_area(piece.ring);
+  }
+  // (The feet on the arcs are rounded to the lattice, off their chords by half a quantum.)
+  CHECK(area == Approx(part.area()).epsilon(1e-8));
+  // The feet on the arcs lie on their polygons: each corner piece's second and fourth corners are on
+  // the part's boundary, each within a quantum or two of a chord of the ring.
+  auto on_ring = [&](Point2 p) {
+    double best = std::numeric_limits<double>::infinity();
+    const Ring& ring = part.outer();
+    for (size_t i = 0; i < ring.size(); ++i) best = std::min(best, segment_distance(p, ring[i], ring[(i + 1) % ring.size()]));
+    return best;
+  };
+  for (size_t p = 0; p < 4; ++p) {
+    CHECK(on_ring(pieces[p].ring[static_cast<size_t>(pieces[p].corners[1])]) < 3 * kQ);
+    CHECK(on_ring(pieces[p].ring[static_cast<size_t>(pieces[p].corners[3])]) < 3 * kQ);
+  }
+  // The box keeps clear of the bore's bulge: every box corner is farther from the origin than the
+  // bore's radius and nearer than the rim's.
+  for (size_t p = 8; p < 12; ++p) {
+    const Point2 box = pieces[p].ring[0];
+    CHECK(std::hypot(box.x, box.y) > 20.0);
+    CHECK(std::hypot(box.x, box.y) < 40.0);
+  }
+  // A quarter ring bends its sides by 90 degrees: too much for the box's straight sides.
+  CHECK_FALSE(ogrid_template(Region(annular_sector(20, 40, 45, 15), {test::round_hole({30, 0}, 3)}, kQ)));
+  // One curved side (a plate's cell under a rounded edge): no O-grid; only an annular sector's two.
+  // (an arc of radius 13 about (5, -6) from (10, 6) to (0, 6), turning 45 degrees).
+  Ring arched{{0, 0}, {10, 0}, {10, 6}};
+  const double from = std::atan2(12.0, 5.0), to = std::atan2(12.0, -5.0);
+  for (int i = 1; i < 6; ++i) {
+    const double t = from + i * (to - from) / 6.0;
+    arched.push_back({5 + 13 * std::cos(t), -6 + 13 * std::sin(t)});
+  }
+  arched.push_back({0, 6});
+  CHECK_FALSE(ogrid_template(Region(arched, {test::round_hole({5, 3.5}, 1)}, kQ)));
+  // A hole near the bore: no room.
+  CHECK_FALSE(ogrid_template(Region(annular_sector(20, 40, 18, 6), {test::round_hole({23.5, 0}, 3)}, kQ)));
 }
 
 TEST_CASE("the topology bound: corners and the irregular vertices a face's holes and smooth loops need",

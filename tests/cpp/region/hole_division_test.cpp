@@ -185,3 +185,62 @@ TEST_CASE("the search divides a perforated plate along its ligaments and finishe
   RegionSearchPolicy searched(options);
   CHECK(decompose_region(plate, searched, mesh).complete());
 }
+
+TEST_CASE("divide_sector cuts a square cell about each bolt hole of a wide sector, each an O-grid", "[region][division][arc]") {
+  // A flange of four bolt holes: divide_holes halves it and leaves two holes a part, a quarter ring
+  // each once halved again (divide_sector's bisector); a square cell about a hole (30 deep, radius 36
+  // to its middle) is 47.7 degrees wide, the pitch 90. Divided (divide_holes from three holes,
+  // divide_sector below) until nothing more is cut: four cells with a hole, and on either side of
+  // each a sector without, 21.1 degrees wide.
+  auto divide_all_sectors = [](const Region& face) {
+    std::vector<Region> parts;
+    std::function<void(const Region&)> divide = [&](const Region& part) {
+      const std::optional<HoleDivision> division =
+          part.holes().size() >= static_cast<size_t>(kDivideHoles) ? divide_holes(part) : divide_sector(part);
+      if (!division) {
+        parts.push_back(part);
+        return;
+      }
+      REQUIRE(division->outcome.pieces.size() >= 2);
+      for (const Region& piece : division->outcome.pieces) divide(piece);
+    };
+    divide(face);
+    return parts;
+  };
+  const Region four = flange(4, 0.3);
+  const std::vector<Region> parts = divide_all_sectors(four);
+  double area = 0.0;
+  size_t cells = 0, sectors = 0;
+  const double half = 0.5 * 30.0 / 36.0;  // the cell's half angle
+  for (const Region& part : parts) {
+    area += part.area();
+    // The part's angular width about the origin: its extreme vertex directions.
+    double lo = 1e9, hi = -1e9;
+    const Point2 c = part.centroid();
+    const double axis = std::atan2(c.y, c.x);
+    for (const Point2& v : part.outer()) {
+      const double a = std::remainder(std::atan2(v.y, v.x) - axis, 2.0 * M_PI);
+      lo = std::min(lo, a);
+      hi = std::max(hi, a);
+    }
+    if (part.holes().size() == 1) {
+      ++cells;
+      CHECK(hi - lo == Approx(2.0 * half).margin(0.01));
+      CHECK(ogrid_template(part));  // an annular sector: the O-grid with its arcs as sides
+    } else {
+      CHECK(part.holes().empty());
+      ++sectors;
+      CHECK(hi - lo == Approx(0.25 * M_PI - half).margin(0.01));
+    }
+  }
+  CHECK(cells == 4);
+  CHECK(sectors == 8);
+  CHECK(area == Approx(four.area()).epsilon(1e-7));
+  // Eight bolt holes, 45 degrees apart: the sectors between the gaps' middles are narrower than a
+  // square cell already; nothing more is cut.
+  const std::vector<Region> eight = divide_all_sectors(flange(8, 0.3));
+  CHECK(eight.size() == 8);
+  for (const Region& part : eight) CHECK(part.holes().size() == 1);
+  // A plate (no arcs about one centre): no sector to divide.
+  CHECK_FALSE(divide_sector(perforated_plate(2, 1, 10.0, 2.5, 0.3)).has_value());
+}
