@@ -20,6 +20,7 @@ constexpr double kOgridMinCorner = 60.0;
 constexpr double kOgridClearance = 0.5;
 constexpr double kOgridSideTurn = 60.0;  // the most a side may bend along an arc, degrees in all
 constexpr double kOgridCurvedPatch = 0.45;  // the least Coons patch Jacobian of its pieces with curved sides
+constexpr double kOgridCurvedBeyond = 1.5;  // how far beyond the hole its box may lie with curved sides, in radii
 
 // The centre of the largest circle inside a convex polygon (counter-clockwise): the linear program
 // max r subject to dist_k(p) >= r for every side's line, solved at its vertices (three sides' lines
@@ -582,8 +583,12 @@ std::optional<std::vector<QuadPiece>> applicable_ogrid_template(const Region& re
   // The box: its side k parallel to side k, halfway from the hole to the side (the ring and the strip
   // beyond equally thick) but at most a radius beyond the hole.
   std::array<double, 4> offset{};
-  for (size_t k = 0; k < 4; ++k) offset[k] = std::min(0.5 * (reach[k] + d[k]), reach[k] + radius);
-  std::array<Point2, 4> box, foot_on_side, foot_on_previous;
+  // (In an annular sector up to kOgridCurvedBeyond radii: an eight-bolt flange's sectors, 45 degrees
+  // wide, 0.867 with the box one radius beyond its holes, 0.947 with one and a half.)
+  const double beyond = any_curved ? kOgridCurvedBeyond : 1.0;
+  for (size_t k = 0; k < 4; ++k) offset[k] = std::min(0.5 * (reach[k] + d[k]), reach[k] + beyond * radius);
+  std::array<Point2, 4> box, foot_on_side, foot_on_previous, strip_on_side, strip_on_previous;
+  bool strips = any_curved;
   for (size_t k = 0; k < 4; ++k) {
     // Box corner k: on box lines k - 1 and k, normal . (x - c) = -offset.
     const size_t p = (k + 3) % 4;
@@ -595,6 +600,36 @@ std::optional<std::vector<QuadPiece>> applicable_ogrid_template(const Region& re
     box[k] = {snap_to_lattice(x.x, q), snap_to_lattice(x.y, q)};
     foot_on_side[k] = {x.x - (d[k] - offset[k]) * normal[k].x, x.y - (d[k] - offset[k]) * normal[k].y};
     foot_on_previous[k] = {x.x - (d[p] - offset[p]) * normal[p].x, x.y - (d[p] - offset[p]) * normal[p].y};
+    if (!strips) continue;
+    // An annular sector's other feet: where the box line through the corner meets the side's chord
+    // (along box line k - 1 to side k, along box line k to side k - 1), so that the strips between
+    // the box and the radial sides keep their width.
+    const Point2 ak = ring[corner[k]], ap = ring[corner[p]];
+    const double across_k = normal[k].x * e[p].x + normal[k].y * e[p].y, across_p = normal[p].x * e[k].x + normal[p].y * e[k].y;
+    strips = std::fabs(across_k) > 0.1 && std::fabs(across_p) > 0.1;
+    if (!strips) continue;
+    const double s_k = -(normal[k].x * (x.x - ak.x) + normal[k].y * (x.y - ak.y)) / across_k;
+    const double s_p = -(normal[p].x * (x.x - ap.x) + normal[p].y * (x.y - ap.y)) / across_p;
+    strip_on_side[k] = {x.x + s_k * e[p].x, x.y + s_k * e[p].y};
+    strip_on_previous[k] = {x.x + s_p * e[k].x, x.y + s_p * e[k].y};
+  }
+  // The feet must fall inside their sides, in order, clear of the corners. A deep, narrow sector's
+  // perpendicular feet fall outside its bore's side (the radial sides converge on it): there the
+  // feet along the box lines are taken (a wide sector's box lines cross before the bore's side).
+  auto feet_fit = [&](const std::array<Point2, 4>& on_side, const std::array<Point2, 4>& on_previous) {
+    for (size_t k = 0; k < 4; ++k) {
+      const Point2 a = ring[corner[k]];
+      const double t1 = e[k].x * (on_side[k].x - a.x) + e[k].y * (on_side[k].y - a.y);
+      const Point2 f2 = on_previous[(k + 1) % 4];
+      const double t2 = e[k].x * (f2.x - a.x) + e[k].y * (f2.y - a.y);
+      if (!(t1 > 32.0 * q && t2 - t1 > 32.0 * q && length[k] - t2 > 32.0 * q)) return false;
+    }
+    return true;
+  };
+  if (!feet_fit(foot_on_side, foot_on_previous)) {
+    if (!strips || !feet_fit(strip_on_side, strip_on_previous)) return std::nullopt;
+    foot_on_side = strip_on_side;
+    foot_on_previous = strip_on_previous;
   }
   // Side k's vertices from corner k up to corner k + 1 (exclusive) with the two feet in place: a
   // side vertex within 2 quanta of a foot is the foot.

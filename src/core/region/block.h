@@ -170,7 +170,10 @@ bool two_corner_improves(const Region& region, const BlockRules& rules = {});
 // corners is convex with angles within [20, 160] degrees; with curved sides (their feet on the sides'
 // polygons), also where the pieces' Coons patches keep a scaled Jacobian of 0.45 (a sector as long
 // round its middle as it is deep gives 0.48-0.54 as it spans 50-36 degrees, a plate's O-grid
-// 0.59-0.65; a wider one's box is a trapezoid whose ring pieces skew: 0.42 at 120 degrees).
+// 0.59-0.65; a wider one's box is a trapezoid whose ring pieces skew: 0.42 at 120 degrees). In an
+// annular sector the box may lie up to 1.5 radii beyond the hole, and where the feet square to a side
+// fall outside it (a deep, narrow sector, its radial sides converging on the bore) each foot is
+// where the box line through the box corner meets the side instead.
 // Inputs: region; rules. Output: true when the O-grid template applies (template_pieces makes it).
 bool ogrid_template(const Region& region, const BlockRules& rules = {});
 

@@ -79,7 +79,7 @@ std::optional<HoleDivision> divide_holes(const Region& part);
 //   cell side for each hole, at half a square cell's angle from its direction, on either side: the
 //             cell as wide, round the hole's circle about the centre, as the part is deep along the
 //             ray through the hole.
-// Measured (BENCHMARKS.md, "Flanges: square cells"): a flange of four bolt holes 0.41 -> 0.84, one bolt circle of square sectors 0.81-0.82 -> 0.93-0.95.
+// Measured (BENCHMARKS.md, "Flanges: square cells"): a flange of four bolt holes 0.41 -> 0.83, one bolt circle of square sectors 0.81-0.82 -> 0.93-0.95.
 // Inputs:  part.
 // Outputs: the cut and its outcome, or nothing (no hole, no such centre, every hole's cell already as
 //          narrow as that, or no line that cut_region makes with those checks).

@@ -264,6 +264,19 @@ TEST_CASE("the O-grid template in an annular sector: curved sides, twelve pieces
     CHECK(std::hypot(box.x, box.y) > 20.0);
     CHECK(std::hypot(box.x, box.y) < 40.0);
   }
+  // A deep, narrow sector (a flange of 24 bolt holes: 15 degrees, 40 deep): the radial sides
+  // converge so fast that the feet square to the bore's side fall outside it; the feet along the box
+  // lines are taken, and the strips beside the box keep their width.
+  const Region narrow(annular_sector(20, 60, 7.5, 2.5), {test::round_hole({40, 0}, 2.5)}, kQ);
+  REQUIRE(ogrid_template(narrow));
+  const std::vector<QuadPiece> strips = template_pieces(narrow);
+  REQUIRE(strips.size() == 12);
+  double narrow_area = 0.0;
+  for (const QuadPiece& piece : strips) {
+    CHECK(signed_area(piece.ring) > 0.0);
+    narrow_area += signed_area(piece.ring);
+  }
+  CHECK(narrow_area == Approx(narrow.area()).epsilon(1e-8));
   // A quarter ring bends its sides by 90 degrees: too much for the box's straight sides.
   CHECK_FALSE(ogrid_template(Region(annular_sector(20, 40, 45, 15), {test::round_hole({30, 0}, 3)}, kQ)));
   // One curved side (a plate's cell under a rounded edge): no O-grid; only an annular sector's two.
