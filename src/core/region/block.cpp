@@ -641,8 +641,7 @@ std::optional<std::vector<QuadPiece>> applicable_ogrid_template(const Region& re
   for (size_t k = 0; k < 4; ++k) {
     const Point2 a = ring[corner[k]];
     auto along = [&](Point2 v) { return e[k].x * (v.x - a.x) + e[k].y * (v.y - a.y); };
-    const double t1 = along(foot_on_side[k]), t2 = along(foot_on_previous[(k + 1) % 4]);
-    if (!(t1 > 32.0 * q && t2 - t1 > 32.0 * q && length[k] - t2 > 32.0 * q)) return std::nullopt;
+    const double t1 = along(foot_on_side[k]), t2 = along(foot_on_previous[(k + 1) % 4]);  // inside: feet_fit
     // The side's point at a position along its chord: on the chord, or on a curved side's polygon.
     auto at = [&](double t) {
       Point2 p{a.x + t * e[k].x, a.y + t * e[k].y};
