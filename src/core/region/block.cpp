@@ -616,12 +616,14 @@ std::optional<std::vector<QuadPiece>> applicable_ogrid_template(const Region& re
   // The feet must fall inside their sides, in order, clear of the corners. A deep, narrow sector's
   // perpendicular feet fall outside its bore's side (the radial sides converge on it): there the
   // feet along the box lines are taken (a wide sector's box lines cross before the bore's side).
+  // A point's position along side k's chord, from corner k.
+  auto along_side = [&](size_t k, Point2 v) {
+    const Point2 a = ring[corner[k]];
+    return e[k].x * (v.x - a.x) + e[k].y * (v.y - a.y);
+  };
   auto feet_fit = [&](const std::array<Point2, 4>& on_side, const std::array<Point2, 4>& on_previous) {
     for (size_t k = 0; k < 4; ++k) {
-      const Point2 a = ring[corner[k]];
-      const double t1 = e[k].x * (on_side[k].x - a.x) + e[k].y * (on_side[k].y - a.y);
-      const Point2 f2 = on_previous[(k + 1) % 4];
-      const double t2 = e[k].x * (f2.x - a.x) + e[k].y * (f2.y - a.y);
+      const double t1 = along_side(k, on_side[k]), t2 = along_side(k, on_previous[(k + 1) % 4]);
       if (!(t1 > 32.0 * q && t2 - t1 > 32.0 * q && length[k] - t2 > 32.0 * q)) return false;
     }
     return true;
@@ -640,7 +642,7 @@ std::optional<std::vector<QuadPiece>> applicable_ogrid_template(const Region& re
   std::array<SideSplit, 4> split;
   for (size_t k = 0; k < 4; ++k) {
     const Point2 a = ring[corner[k]];
-    auto along = [&](Point2 v) { return e[k].x * (v.x - a.x) + e[k].y * (v.y - a.y); };
+    auto along = [&](Point2 v) { return along_side(k, v); };
     const double t1 = along(foot_on_side[k]), t2 = along(foot_on_previous[(k + 1) % 4]);  // inside: feet_fit
     // The side's point at a position along its chord: on the chord, or on a curved side's polygon.
     auto at = [&](double t) {

@@ -273,7 +273,8 @@ std::optional<HoleDivision> divide_sector(const Region& part) {
     division.cut = {CutKind::Full, *origin, u};
     division.outcome = cut_region(part, division.cut);
     if (division.outcome.pieces.size() < 2 || !meets_square_enough(part, division.outcome.chords)) continue;
-    // No sliver: every piece at least half the cell's square; a bisector leaves fewer holes in each.
+    // No sliver: every piece at least a quarter of the cell's square; a bisector leaves fewer holes in
+    // each.
     bool take = true;
     for (const Region& piece : division.outcome.pieces) {
       take = take && piece.area() >= kSectorLeast * line.cell * line.cell && (!line.separates || piece.holes().size() < k);

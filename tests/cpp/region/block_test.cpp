@@ -229,6 +229,16 @@ Ring annular_sector(double r1, double r2, double half, double step) {
   for (int i = 0; i <= n; ++i) ring.push_back(at(r1, half - i * step));   // the bore, back
   return ring;
 }
+
+// Inputs: a template's pieces. Output: their total area, each piece checked counter-clockwise.
+double checked_pieces_area(const std::vector<QuadPiece>& pieces) {
+  double area = 0.0;
+  for (const QuadPiece& piece : pieces) {
+    CHECK(signed_area(piece.ring) > 0.0);
+    area += signed_area(piece.ring);
+  }
+  return area;
+}
 }  // namespace
 
 TEST_CASE("the O-grid template in an annular sector: curved sides, twelve pieces", "[region][block][arc]") {
@@ -238,13 +248,8 @@ TEST_CASE("the O-grid template in an annular sector: curved sides, twelve pieces
   REQUIRE(ogrid_template(part));
   const std::vector<QuadPiece> pieces = template_pieces(part);
   REQUIRE(pieces.size() == 12);
-  double area = 0.0;
-  for (const QuadPiece& piece : pieces) {
-    CHECK(signed_area(piece.ring) > 0.0);
-    area += signed_area(piece.ring);
-  }
   // (The feet on the arcs are rounded to the lattice, off their chords by half a quantum.)
-  CHECK(area == Approx(part.area()).epsilon(1e-8));
+  CHECK(checked_pieces_area(pieces) == Approx(part.area()).epsilon(1e-8));
   // The feet on the arcs lie on their polygons: each corner piece's second and fourth corners are on
   // the part's boundary, each within a quantum or two of a chord of the ring.
   auto on_ring = [&](Point2 p) {
@@ -271,12 +276,7 @@ TEST_CASE("the O-grid template in an annular sector: curved sides, twelve pieces
   REQUIRE(ogrid_template(narrow));
   const std::vector<QuadPiece> strips = template_pieces(narrow);
   REQUIRE(strips.size() == 12);
-  double narrow_area = 0.0;
-  for (const QuadPiece& piece : strips) {
-    CHECK(signed_area(piece.ring) > 0.0);
-    narrow_area += signed_area(piece.ring);
-  }
-  CHECK(narrow_area == Approx(narrow.area()).epsilon(1e-8));
+  CHECK(checked_pieces_area(strips) == Approx(narrow.area()).epsilon(1e-8));
   // A quarter ring bends its sides by 90 degrees: too much for the box's straight sides.
   CHECK_FALSE(ogrid_template(Region(annular_sector(20, 40, 45, 15), {test::round_hole({30, 0}, 3)}, kQ)));
   // One curved side (a plate's cell under a rounded edge): no O-grid; only an annular sector's two.
