@@ -569,11 +569,11 @@ std::optional<std::vector<QuadPiece>> applicable_ogrid_template(const Region& re
     // How far the hole reaches from its centre towards side k.
     for (const Point2& v : hole) reach[k] = std::max(reach[k], -(normal[k].x * (v.x - c.x) + normal[k].y * (v.y - c.y)));
   }
-  // Curved sides only as an annular sector's: two opposite sides along arcs. (With one, a cell the
-  // search cut next to a rim, the O-grid's intervals round a small hole forced fine meshes on its
-  // neighbours: two flanges of two bolt circles fell from 0.64 and 0.75 to 0.33 and 0.48.)
+  // Curved sides: an annular sector's two, or one over a straight side (a cell that a chord between
+  // two bolt circles cut off from the bore or the rim, divide_sector). (One curved side was refused
+  // while the search cut such cells itself, next to a rim: two flanges of two bolt circles fell from
+  // 0.64 and 0.75 to 0.33 and 0.48; with divide_sector's chords, 30 flanges 0.70 -> 0.75.)
   const bool any_curved = curved[0] || curved[1] || curved[2] || curved[3];
-  if (any_curved && !((curved[0] && curved[2]) || (curved[1] && curved[3]))) return std::nullopt;
   // Room on every side: the gap to the side at least half the hole's smallest reach (its radius) and
   // 64 quanta, for a ring and a strip beyond it.
   const double radius = *std::min_element(reach.begin(), reach.end());

@@ -157,7 +157,8 @@ bool two_corner_improves(const Region& region, const BlockRules& rules = {});
 // A part with one round hole (issue 13: a circle reaches the engine as a ring of side vertices,
 // circular_arc.h), or any smooth convex one (a slot), and four convex corners of 60-120 degrees joined
 // by straight sides, or sides along arcs that bend by at most 60 degrees each (a flange's cell: an
-// annular sector), gets the O-grid template: a box around the hole, its side k parallel to the chord
+// annular sector; or one arc over a straight side, a cell that a chord between two bolt circles cut
+// off from the bore or the rim), gets the O-grid template: a box around the hole, its side k parallel to the chord
 // of the part's side k, halfway between the hole and that side (its nearest vertex: a bore's arc bulges
 // towards the hole) but at most one radius (the hole's smallest reach from its centroid) beyond the
 // hole; four pieces between the box and the hole (each box corner
@@ -170,8 +171,8 @@ bool two_corner_improves(const Region& region, const BlockRules& rules = {});
 // corners is convex with angles within [20, 160] degrees; with curved sides (their feet on the sides'
 // polygons), also where the pieces' Coons patches keep a scaled Jacobian of 0.45 (a sector as long
 // round its middle as it is deep gives 0.48-0.54 as it spans 50-36 degrees, a plate's O-grid
-// 0.59-0.65; a wider one's box is a trapezoid whose ring pieces skew: 0.42 at 120 degrees). In an
-// annular sector the box may lie up to 1.5 radii beyond the hole, and where the feet square to a side
+// 0.59-0.65; a wider one's box is a trapezoid whose ring pieces skew: 0.42 at 120 degrees). With
+// curved sides the box may lie up to 1.5 radii beyond the hole, and where the feet square to a side
 // fall outside it (a deep, narrow sector, its radial sides converging on the bore) each foot is
 // where the box line through the box corner meets the side instead.
 // Inputs: region; rules. Output: true when the O-grid template applies (template_pieces makes it).

@@ -22,9 +22,12 @@ constexpr size_t kMaxCuts = 32;  // lines cut before giving up (each cut costs a
 constexpr double kCentreSame = 0.01;    // circumcentres within this times the part's size are one centre
 constexpr double kArcDominated = 0.35;  // the least share of the outer loop's length on circles about one centre
 constexpr double kCentreClear = 0.05;   // radial lines only with their centre this far (times the part's size) out of it
+constexpr double kConcentricShare = 0.1;  // divide_sector's least share for two concentric arcs (a narrow sector)
+constexpr double kConcentricApart = 1.2;  // their radii at least this far apart (a ratio)
 constexpr double kArcStep = 0.5;        // the longest segment (times the radius) of a vertex voting for its circle
 constexpr double kRadialClearance = 0.5;  // a radial line keeps this times a hole's radius from it
 constexpr double kSectorLeast = 0.25;     // divide_sector's least piece, in the hole's square cells
+constexpr double kCellLong = 1.5;         // divide_sector cuts a cell's ends where the part is this much deeper than wide
 
 Point2 unit(Point2 d) {
   const double len = std::hypot(d.x, d.y);
@@ -62,19 +65,25 @@ bool better(const Gap& a, const Gap& b) {
          std::make_tuple(b.roomy, b.radial, b.aligned, b.smaller_side, b.clearance);
 }
 
-// Inputs: part. Output: the centre of the circles that make most of its outer loop (a disk's, a
-//         flange's rim and bore, a sector of either), or nothing when no one centre holds
-//         kArcDominated of the loop's length. Each run of three consecutive vertices that turns
-//         votes for its circumcentre with half the length of its two segments; votes within kCentreSame
-//         of the part's size are one centre; segments longer than kArcStep of the circle's radius
-//         (29 degrees of it) are no arc's samples.
-std::optional<Point2> pattern_centre(const Region& part, double size) {
+// Inputs: part. Output (arc_centre): the centre with the most of its outer loop's length on circles
+//         about it (a disk's, a flange's rim and bore, a sector of either), that share, and whether
+//         those circles are two of radii apart; nothing when no vertex votes. Each run of three
+//         consecutive vertices that turns votes for its circumcentre with half the length of its two
+//         segments; votes within kCentreSame of the part's size are one centre; segments longer than
+//         kArcStep of the circle's radius (29 degrees of it) are no arc's samples. pattern_centre: that
+//         centre where it holds kArcDominated of the loop's length, else nothing.
+struct ArcCentre {
+  Point2 at;
+  double share = 0.0;       // of the outer loop's length on circles about it
+  bool concentric = false;  // on two circles about it, of radii kConcentricApart apart or more
+};
+std::optional<ArcCentre> arc_centre(const Region& part, double size) {
   const Ring& outer = part.outer();
   const size_t n = outer.size();
   if (n < 3) return std::nullopt;
   struct Vote {
     Point2 centre;
-    double weight;
+    double weight, radius;
   };
   std::vector<Vote> votes;
   double perimeter = 0.0;
@@ -93,7 +102,7 @@ std::optional<Point2> pattern_centre(const Region& part, double size) {
     // rectangle's vertices lie on a circle too).
     const double radius = std::hypot(centre.x - b.x, centre.y - b.y);
     if (radius > 2.0 * size || std::max(ab, bc) > kArcStep * radius) continue;
-    votes.push_back({centre, 0.5 * (ab + bc)});
+    votes.push_back({centre, 0.5 * (ab + bc), radius});
   }
   double best_weight = 0.0;
   Point2 best{0.0, 0.0};
@@ -111,8 +120,20 @@ std::optional<Point2> pattern_centre(const Region& part, double size) {
       best = {x / weight, y / weight};
     }
   }
-  if (best_weight < kArcDominated * perimeter) return std::nullopt;
-  return best;
+  if (votes.empty()) return std::nullopt;
+  double least = std::numeric_limits<double>::infinity(), most = 0.0;
+  for (const Vote& v : votes) {
+    if (std::hypot(v.centre.x - best.x, v.centre.y - best.y) > kCentreSame * size) continue;
+    least = std::min(least, v.radius);
+    most = std::max(most, v.radius);
+  }
+  return ArcCentre{best, best_weight / perimeter, most > kConcentricApart * least};
+}
+
+std::optional<Point2> pattern_centre(const Region& part, double size) {
+  const std::optional<ArcCentre> c = arc_centre(part, size);
+  if (!c || c->share < kArcDominated) return std::nullopt;
+  return c->at;
 }
 
 // Inputs: part; p, a point on its boundary. Output: the unit direction of the boundary segment nearest p.
@@ -163,8 +184,7 @@ std::vector<double> hole_radii(const std::vector<Ring>& holes, const std::vector
 //         left: a sector of a flange); lines meeting inside it would leave its pieces a sharp corner
 //         there. Else nothing.
 std::optional<Point2> radial_centre(const Region& part, double size, const std::vector<Point2>& centre,
-                                    const std::vector<double>& radius) {
-  const std::optional<Point2> c = pattern_centre(part, size);
+                                    const std::vector<double>& radius, std::optional<Point2> c) {
   if (!c) return std::nullopt;
   for (size_t h = 0; h < centre.size(); ++h) {
     if (std::hypot(centre[h].x - c->x, centre[h].y - c->y) < radius[h]) return c;  // a bore
@@ -215,76 +235,127 @@ std::vector<double> ray_crossings(const Region& part, int skip, Point2 origin, P
 
 }  // namespace
 
-std::optional<HoleDivision> divide_sector(const Region& part) {
+std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Point2> hint) {
   const std::vector<Ring>& holes = part.holes();
   const size_t k = holes.size();
   if (k == 0) return std::nullopt;
   const double size = min_area_rectangle(part).longer_side();
   const std::vector<Point2> centre = hole_centres(holes);
   const std::vector<double> radius = hole_radii(holes, centre);
-  const std::optional<Point2> c = radial_centre(part, size, centre, radius);
+  // The arcs' centre: of most of the outer loop as for divide_holes, or of less of it where that
+  // loop runs along two arcs about it (a narrow annular sector's bore and rim), else the parent's.
+  const std::optional<ArcCentre> arcs = arc_centre(part, size);
+  std::optional<Point2> at = hint;
+  if (arcs && (arcs->share >= kArcDominated || (arcs->share >= kConcentricShare && arcs->concentric))) at = arcs->at;
+  struct Line {
+    Point2 through, direction;
+    double cell;     // the square cell's side length the pieces are measured against
+    bool separates;  // every piece must hold fewer holes than the part
+    bool radial;     // through the centre (running across the bore); else a chord: two pieces
+  };
+  // The first line that keeps clear of the holes and cuts the part as asked (see above).
+  std::vector<char> bore(k, 0);
+  auto first_cut = [&](const std::vector<Line>& lines) -> std::optional<HoleDivision> {
+    for (const Line& line : lines) {
+      const Point2 u = line.direction, n{-u.y, u.x};
+      bool clear = true;
+      for (size_t g = 0; g < k && clear; ++g) {
+        if (bore[g] && line.radial) continue;  // the line runs across it
+        clear = std::fabs(dot(n, {centre[g].x - line.through.x, centre[g].y - line.through.y})) - radius[g] >= kRadialClearance * radius[g];
+      }
+      if (!clear) continue;
+      const std::optional<Point2> origin = line_meets_outer(part, line.through, u);
+      if (!origin) continue;
+      HoleDivision division;
+      division.cut = {CutKind::Full, *origin, u};
+      division.outcome = cut_region(part, division.cut);
+      const size_t pieces = division.outcome.pieces.size();
+      if (pieces < 2 || (!line.radial && pieces != 2) || !meets_square_enough(part, division.outcome.chords)) continue;
+      // No sliver: every piece at least a quarter of the cell's square; a bisector leaves fewer holes in
+      // each.
+      bool take = true;
+      for (const Region& piece : division.outcome.pieces) {
+        take = take && piece.area() >= kSectorLeast * line.cell * line.cell && (!line.separates || piece.holes().size() < k);
+      }
+      if (take) return division;
+    }
+    return std::nullopt;
+  };
+  const std::optional<Point2> c = radial_centre(part, size, centre, radius, at);
   if (!c) return std::nullopt;
   // Each hole's direction from the centre and its square cell's half angle (none: the bore, or no
-  // depth along its ray).
-  std::vector<double> mid(k), half(k, 0.0), depth(k, 0.0);
-  std::vector<char> bore(k, 0);
+  // depth along its ray); the part's extent along the ray (from the crossing before the hole to the
+  // one after, the hole's own loop left out) and across it, through the hole's centre.
+  std::vector<double> mid(k), half(k, 0.0), depth(k, 0.0), before(k, 0.0), after(k, 0.0), width(k, 0.0), distance(k, 0.0);
   for (size_t h = 0; h < k; ++h) {
-    const double distance = std::hypot(centre[h].x - c->x, centre[h].y - c->y);
-    bore[h] = distance < radius[h];
+    distance[h] = std::hypot(centre[h].x - c->x, centre[h].y - c->y);
+    bore[h] = distance[h] < radius[h];
     if (bore[h]) continue;
     mid[h] = std::atan2(centre[h].y - c->y, centre[h].x - c->x);
-    // The part's depth along the ray through the hole: from the crossing before it to the one after
-    // (the hole's own loop left out).
-    const std::vector<double> at = ray_crossings(part, static_cast<int>(h) + 1, *c, {std::cos(mid[h]), std::sin(mid[h])});
-    const auto after = std::upper_bound(at.begin(), at.end(), distance);
-    if (after == at.begin() || after == at.end()) continue;
-    depth[h] = *after - *(after - 1);
-    half[h] = 0.5 * depth[h] / distance;
+    const Point2 u{std::cos(mid[h]), std::sin(mid[h])}, n{-u.y, u.x};
+    const std::vector<double> at = ray_crossings(part, static_cast<int>(h) + 1, *c, u);
+    const auto next = std::upper_bound(at.begin(), at.end(), distance[h]);
+    if (next == at.begin() || next == at.end()) continue;
+    before[h] = *(next - 1);
+    after[h] = *next;
+    depth[h] = after[h] - before[h];
+    half[h] = 0.5 * depth[h] / distance[h];
+    const std::vector<double> left = ray_crossings(part, static_cast<int>(h) + 1, centre[h], n);
+    const std::vector<double> right = ray_crossings(part, static_cast<int>(h) + 1, centre[h], {-n.x, -n.y});
+    if (!left.empty() && !right.empty()) width[h] = left.front() + right.front();
   }
-  // The lines tried, in order: between two holes, the bisector of their directions (a sector of two
-  // bolt holes halved, as divide_holes would); then each cell's sides.
-  struct Line {
-    double angle, cell;  // cell: the square cell's side length the pieces are measured against
-    bool separates;      // every piece must hold fewer holes than the part
-  };
+  // The lines tried, in order, each through a point along a direction:
+  //   bisector  between two holes (not the bore), the radial bisector of their directions from the
+  //             centre (a sector of two bolt holes halved, as divide_holes would);
+  //   between   between two holes in line (two bolt circles), the chord square to their bisector
+  //             halfway between them;
+  //   sides     each hole's square cell's radial sides;
+  //   ends      where the part is deeper along a hole's ray than kCellLong times its width across
+  //             the hole (a narrow sector), the chords square to the ray at the ends of the hole's
+  //             square cell, as wide as the part there.
   std::vector<Line> lines;
+  auto ray = [&](double angle) { return Point2{std::cos(angle), std::sin(angle)}; };
+  auto chord = [&](double angle, double at, double cell, bool separates) {
+    const Point2 u = ray(angle);
+    lines.push_back({{c->x + at * u.x, c->y + at * u.y}, {-u.y, u.x}, cell, separates, false});
+  };
   for (size_t h = 0; h < k; ++h) {
     for (size_t g = h + 1; g < k; ++g) {
       if (half[h] <= 0.0 || half[g] <= 0.0) continue;
       const double turn = std::remainder(mid[g] - mid[h], 2.0 * M_PI);
-      lines.push_back({mid[h] + 0.5 * turn, std::min(depth[h], depth[g]), true});
+      lines.push_back({*c, ray(mid[h] + 0.5 * turn), std::min(depth[h], depth[g]), true, true});
+    }
+  }
+  for (size_t h = 0; h < k; ++h) {
+    for (size_t g = 0; g < k; ++g) {
+      if (half[h] <= 0.0 || half[g] <= 0.0 || distance[h] >= distance[g]) continue;
+      const double turn = std::remainder(mid[g] - mid[h], 2.0 * M_PI);
+      chord(mid[h] + 0.5 * turn, 0.5 * (distance[h] + radius[h] + distance[g] - radius[g]), 2.0 * std::max(radius[h], radius[g]), true);
     }
   }
   for (size_t h = 0; h < k; ++h) {
     if (half[h] <= 0.0) continue;
-    for (const double side : {1.0, -1.0}) lines.push_back({mid[h] + side * half[h], depth[h], false});
+    for (const double side : {1.0, -1.0}) lines.push_back({*c, ray(mid[h] + side * half[h]), depth[h], false, true});
   }
-  for (const Line& line : lines) {
-    const Point2 u{std::cos(line.angle), std::sin(line.angle)}, n{-u.y, u.x};
-    bool clear = true;
-    for (size_t g = 0; g < k && clear; ++g) {
-      if (bore[g]) continue;  // the line runs across it
-      clear = std::fabs(dot(n, {centre[g].x - c->x, centre[g].y - c->y})) - radius[g] >= kRadialClearance * radius[g];
+  for (size_t h = 0; h < k; ++h) {
+    const double s = width[h];
+    if (half[h] <= 0.0 || !(s > 0.0) || depth[h] <= kCellLong * s) continue;
+    // The cell [lo, hi] along the ray, about the hole, inside the part.
+    double lo = distance[h] - 0.5 * s, hi = distance[h] + 0.5 * s;
+    if (lo < before[h]) hi += before[h] - lo, lo = before[h];
+    if (hi > after[h]) lo -= hi - after[h], hi = after[h];
+    const bool outer_first = after[h] - hi >= lo - before[h];
+    for (const bool outer_end : {outer_first, !outer_first}) {
+      const double at = outer_end ? hi : lo, left = outer_end ? after[h] - hi : lo - before[h];
+      if (left >= kSectorLeast * s) chord(mid[h], at, s, false);
     }
-    if (!clear) continue;
-    const std::optional<Point2> origin = line_meets_outer(part, *c, u);
-    if (!origin) continue;
-    HoleDivision division;
-    division.cut = {CutKind::Full, *origin, u};
-    division.outcome = cut_region(part, division.cut);
-    if (division.outcome.pieces.size() < 2 || !meets_square_enough(part, division.outcome.chords)) continue;
-    // No sliver: every piece at least a quarter of the cell's square; a bisector leaves fewer holes in
-    // each.
-    bool take = true;
-    for (const Region& piece : division.outcome.pieces) {
-      take = take && piece.area() >= kSectorLeast * line.cell * line.cell && (!line.separates || piece.holes().size() < k);
-    }
-    if (take) return division;
   }
-  return std::nullopt;
+  std::optional<HoleDivision> division = first_cut(lines);
+  if (division) division->centre = c;
+  return division;
 }
 
-std::optional<HoleDivision> divide_holes(const Region& part) {
+std::optional<HoleDivision> divide_holes(const Region& part, std::optional<Point2> hint) {
   const std::vector<Ring>& holes = part.holes();
   const size_t k = holes.size();
   if (k < 2) return std::nullopt;
@@ -404,7 +475,9 @@ std::optional<HoleDivision> divide_holes(const Region& part) {
   // flange's bolt circle, a polar pattern; the bore, a hole around the centre, is cut across). A line
   // through the centre reaches both ways, so the holes' angular extents count modulo pi.
   const std::vector<double> radius = hole_radii(holes, centre);
-  const std::optional<Point2> c = radial_centre(part, frame.longer_side(), centre, radius);
+  std::optional<Point2> arcs = pattern_centre(part, frame.longer_side());
+  if (!arcs) arcs = hint;
+  const std::optional<Point2> c = radial_centre(part, frame.longer_side(), centre, radius, arcs);
   if (c) {
     std::vector<std::pair<double, double>> blocked;  // angular extents, in [0, pi) (may wrap)
     std::vector<size_t> around;  // the holes that do not hold the centre
@@ -471,7 +544,10 @@ std::optional<HoleDivision> divide_holes(const Region& part) {
     if (division.outcome.pieces.size() < 2 || !meets_square_enough(part, division.outcome.chords)) continue;
     bool fewer = true;
     for (const Region& piece : division.outcome.pieces) fewer = fewer && piece.holes().size() < k;
-    if (fewer) return division;
+    if (fewer) {
+      division.centre = c;
+      return division;
+    }
   }
   return std::nullopt;
 }

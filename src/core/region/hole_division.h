@@ -57,32 +57,49 @@ constexpr int kDivideHoles = 3;
 struct HoleDivision {
   RegionCut cut;
   CutOutcome outcome;  // cut_region's: two pieces or more, each with fewer holes than the part
+  // The centre of the part's arcs that the division found (its pieces' hint for divide_sector), if any.
+  std::optional<Point2> centre;
 };
 
-// Inputs:  part.
-// Outputs: the division cut above and its outcome, or nothing when the part has fewer than two holes
+// Inputs:  part; hint, the centre its parent's division found (HoleDivision::centre), the radial
+//          lines' centre where the part's own arcs give none (a part of a flange cut off by chords,
+//          whose arcs are too short to show it).
+// Outputs: the division cut above, its outcome and the centre, or nothing when the part has fewer than two holes
 //          or no line in the directions above separates them (holes that overlap across every
 //          direction, a bore in the middle of a bolt circle, lines that cut_region refuses or that
 //          meet the boundary too obliquely).
-std::optional<HoleDivision> divide_holes(const Region& part);
+std::optional<HoleDivision> divide_holes(const Region& part, std::optional<Point2> hint = std::nullopt);
 
 // A flange's sector with a bolt hole or two (fewer than kDivideHoles: divide_holes leaves it to the
 // search) is wider than the hole's cell: divide_holes's radial lines run through the middles of the
 // gaps between the holes, so a flange of four bolt holes leaves quarter rings, too wide for an O-grid
 // with straight box sides (ogrid_template). An analyst cuts a square cell about each hole instead and
 // leaves the ring between the cells to blocks. Where the centre of the part's arcs lies away from the
-// part as for divide_holes's radial lines, divide_sector cuts along the first of these lines through
-// that centre that keeps half a radius from every hole, meets the boundary at 60 degrees or more and
-// leaves no piece smaller than a quarter of a hole's square cell:
-//   bisector  between two holes (not the bore), the bisector of their directions from the centre,
-//             leaving fewer holes in each piece (a sector of two bolt holes halved);
-//   cell side for each hole, at half a square cell's angle from its direction, on either side: the
-//             cell as wide, round the hole's circle about the centre, as the part is deep along the
-//             ray through the hole.
-// Measured (BENCHMARKS.md, "Flanges: square cells"): a flange of four bolt holes 0.41 -> 0.83, one bolt circle of square sectors 0.81-0.82 -> 0.93-0.95.
-// Inputs:  part.
-// Outputs: the cut and its outcome, or nothing (no hole, no such centre, every hole's cell already as
-//          narrow as that, or no line that cut_region makes with those checks).
-std::optional<HoleDivision> divide_sector(const Region& part);
+// part as for divide_holes's radial lines (the centre of most of its outer loop, or of a tenth of it
+// where that loop runs along two arcs about it of radii 1.2 apart, a narrow sector's bore and rim;
+// else the centre its parent's division found: a piece's arcs, polygonised in steps of up to 15
+// degrees and cut short, vote for centres far apart), divide_sector cuts along the first of these lines that keeps half a radius
+// from every hole, meets the boundary at 60 degrees or more and leaves no piece smaller than a
+// quarter of a hole's square cell:
+//   bisector  between two holes (not the bore), the radial bisector of their directions from the
+//             centre, leaving fewer holes in each piece (a sector of two bolt holes halved);
+//   between   between two holes in line (a flange's two bolt circles), the chord square to their
+//             bisector halfway between them, leaving fewer holes in each of its two pieces;
+//   cell side for each hole, radially at half a square cell's angle from its direction, on either
+//             side: the cell as wide, round the hole's circle about the centre, as the part is deep
+//             along the ray through the hole;
+//   cell end  where the part is more than 1.5 times as deep along a hole's ray as it is wide across
+//             the hole (a narrow sector), the chord square to the ray at the end of the hole's square
+//             cell (as long as the part is wide there, kept inside the part), the larger leftover first;
+//             a chord must leave two pieces.
+// The cells that chords leave have one side along the bore or the rim: the O-grid takes them too.
+// Measured (BENCHMARKS.md, "Flanges: square cells", "Two bolt circles"): a flange of four bolt holes
+// 0.41 -> 0.83, one bolt circle of square sectors 0.81-0.82 -> 0.93-0.95; flanges of two bolt
+// circles 0.49-0.57 -> 0.81-0.87 of the bound.
+// Inputs:  part; hint, the centre its parent's division found (HoleDivision::centre), taken where the
+//          part's own arcs give none (as for divide_holes).
+// Outputs: the cut, its outcome and the centre, or nothing (no hole, no such centre, every hole's cell
+//          already as narrow as that, or no line that cut_region makes with those checks).
+std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Point2> hint = std::nullopt);
 
 }  // namespace autoblock

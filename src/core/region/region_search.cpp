@@ -33,7 +33,12 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
   if (late) capped_ = true;
   if (options_.divide_holes && !part.holes().empty()) {
     const bool many = static_cast<int>(part.holes().size()) >= kDivideHoles;
-    if (const std::optional<HoleDivision> division = many ? divide_holes(part) : divide_sector(part)) {
+    const auto inherited = centres_.find(part);
+    const std::optional<Point2> hint = inherited != centres_.end() ? std::optional<Point2>(inherited->second) : std::nullopt;
+    if (const std::optional<HoleDivision> division = many ? divide_holes(part, hint) : divide_sector(part, hint)) {
+      if (const std::optional<Point2> centre = division->centre ? division->centre : hint) {
+        for (const Region& piece : division->outcome.pieces) centres_.emplace(piece, *centre);
+      }
       Entry entry;
       entry.action = {RegionAction::Kind::Cut, division->cut};
       entry.value = region_cut_reward(options.reward, division->outcome, face_size, options.rules);
@@ -121,6 +126,7 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
 RegionAction RegionSearchPolicy::choose(const RegionEpisode& episode) {
   if (!started_ || episode.face().hash() != face_hash_ || episode.steps() == 0) {
     memo_.clear();
+    centres_.clear();
     face_hash_ = episode.face().hash();
     started_ = true;
     capped_ = false;

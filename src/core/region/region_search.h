@@ -71,6 +71,9 @@ class RegionSearchPolicy : public RegionPolicy {
 
   RegionSearchOptions options_;
   std::unordered_map<Region, Entry, RegionHash> memo_;
+  // The centre of a divided part's arcs, for its pieces (hole_division.h: a piece's own arcs may be
+  // too short to find it).
+  std::unordered_map<Region, Point2, RegionHash> centres_;
   size_t face_hash_ = 0;
   bool started_ = false;
   bool capped_ = false;

@@ -279,8 +279,9 @@ TEST_CASE("the O-grid template in an annular sector: curved sides, twelve pieces
   CHECK(checked_pieces_area(strips) == Approx(narrow.area()).epsilon(1e-8));
   // A quarter ring bends its sides by 90 degrees: too much for the box's straight sides.
   CHECK_FALSE(ogrid_template(Region(annular_sector(20, 40, 45, 15), {test::round_hole({30, 0}, 3)}, kQ)));
-  // One curved side (a plate's cell under a rounded edge): no O-grid; only an annular sector's two.
-  // (an arc of radius 13 about (5, -6) from (10, 6) to (0, 6), turning 45 degrees).
+  // One curved side (a cell that a chord between two bolt circles cut off from the rim, or a plate's
+  // cell under a rounded edge): an arc of radius 13 about (5, -6) from (10, 6) to (0, 6), turning 45
+  // degrees, over a straight side. The feet on it lie on its polygon.
   Ring arched{{0, 0}, {10, 0}, {10, 6}};
   const double from = std::atan2(12.0, 5.0), to = std::atan2(12.0, -5.0);
   for (int i = 1; i < 6; ++i) {
@@ -288,7 +289,19 @@ TEST_CASE("the O-grid template in an annular sector: curved sides, twelve pieces
     arched.push_back({5 + 13 * std::cos(t), -6 + 13 * std::sin(t)});
   }
   arched.push_back({0, 6});
-  CHECK_FALSE(ogrid_template(Region(arched, {test::round_hole({5, 3.5}, 1)}, kQ)));
+  const Region cell(arched, {test::round_hole({5, 3.5}, 1)}, kQ);
+  REQUIRE(ogrid_template(cell));
+  const std::vector<QuadPiece> under_arc = template_pieces(cell);
+  REQUIRE(under_arc.size() == 12);
+  CHECK(checked_pieces_area(under_arc) == Approx(cell.area()).epsilon(1e-8));
+  for (size_t p = 0; p < 4; ++p) {
+    for (const int corner : {1, 3}) {
+      const Point2 foot = under_arc[p].ring[static_cast<size_t>(under_arc[p].corners[static_cast<size_t>(corner)])];
+      double best = std::numeric_limits<double>::infinity();
+      for (size_t i = 0; i < arched.size(); ++i) best = std::min(best, segment_distance(foot, arched[i], arched[(i + 1) % arched.size()]));
+      CHECK(best < 3 * kQ);
+    }
+  }
   // A hole near the bore: no room.
   CHECK_FALSE(ogrid_template(Region(annular_sector(20, 40, 18, 6), {test::round_hole({23.5, 0}, 3)}, kQ)));
 }

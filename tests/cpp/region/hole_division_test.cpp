@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "core/geometry/circular_arc.h"
 #include "core/region/block.h"
 #include "core/region/region_search.h"
 #include "support/test_shapes.h"
@@ -243,4 +244,52 @@ TEST_CASE("divide_sector cuts a square cell about each bolt hole of a wide secto
   for (const Region& part : eight) CHECK(part.holes().size() == 1);
   // A plate (no arcs about one centre): no sector to divide.
   CHECK_FALSE(divide_sector(perforated_plate(2, 1, 10.0, 2.5, 0.3)).has_value());
+}
+
+TEST_CASE("divide_sector parts a flange's two bolt circles with chords, one O-grid cell a bolt hole", "[region][division][arc]") {
+  // A flange of two bolt circles, twelve holes of radius 2.5 on each, in line, at radii 25 and 40
+  // about a bore of radius 15 in a disk of radius 50. divide_holes cuts it into sectors (radial
+  // lines, or chords between the circles), leaving two holes in line in a part; divide_sector cuts
+  // the chord between them (before it, such a part was left to the search: 0.33 of the bound on a
+  // flange of 24 and 24 holes, 0.85 with these cells).
+  // The rim inscribed, as a face's convex arcs are (circular_arc.h), the holes circumscribed.
+  CircularArc rim_arc;
+  rim_arc.radius = 50.0;
+  rim_arc.sweep = 2.0 * M_PI;
+  Ring rim = polygonise_arc(rim_arc);
+  rim.pop_back();  // a full circle ends where it starts
+  std::vector<Ring> holes{round_hole({0.0, 0.0}, 15.0)};
+  for (const double r : {25.0, 40.0}) {
+    for (int i = 0; i < 12; ++i) {
+      const double a = 0.2 + 2.0 * M_PI * i / 12;
+      holes.push_back(round_hole({r * std::cos(a), r * std::sin(a)}, 2.5));
+    }
+  }
+  const Region face(rim, holes, kQ);
+  // Divided as the search divides: each piece given the centre its parent's division found (a
+  // sector's rim and bore, polygonised in 15-degree steps and cut short, vote for centres far apart).
+  std::vector<Region> parts;
+  std::function<void(const Region&, std::optional<Point2>)> divide = [&](const Region& part, std::optional<Point2> hint) {
+    const std::optional<HoleDivision> division =
+        part.holes().size() >= static_cast<size_t>(kDivideHoles) ? divide_holes(part, hint) : divide_sector(part, hint);
+    if (!division) {
+      parts.push_back(part);
+      return;
+    }
+    REQUIRE(division->outcome.pieces.size() >= 2);
+    for (const Region& piece : division->outcome.pieces) divide(piece, division->centre ? division->centre : hint);
+  };
+  divide(face, std::nullopt);
+  double area = 0.0;
+  size_t cells = 0;
+  for (const Region& part : parts) {
+    area += part.area();
+    REQUIRE(part.holes().size() <= 1);
+    if (part.holes().size() == 1) {
+      ++cells;
+      CHECK(ogrid_template(part));  // a cell with a side along the bore or the rim, or none
+    }
+  }
+  CHECK(cells == 24);
+  CHECK(area == Approx(face.area()).epsilon(1e-7));
 }
