@@ -253,40 +253,13 @@ std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Poin
     bool separates;  // every piece must hold fewer holes than the part
     bool radial;     // through the centre (running across the bore); else a chord: two pieces
   };
-  // The first line that keeps clear of the holes and cuts the part as asked (see above).
-  std::vector<char> bore(k, 0);
-  auto first_cut = [&](const std::vector<Line>& lines) -> std::optional<HoleDivision> {
-    for (const Line& line : lines) {
-      const Point2 u = line.direction, n{-u.y, u.x};
-      bool clear = true;
-      for (size_t g = 0; g < k && clear; ++g) {
-        if (bore[g] && line.radial) continue;  // the line runs across it
-        clear = std::fabs(dot(n, {centre[g].x - line.through.x, centre[g].y - line.through.y})) - radius[g] >= kRadialClearance * radius[g];
-      }
-      if (!clear) continue;
-      const std::optional<Point2> origin = line_meets_outer(part, line.through, u);
-      if (!origin) continue;
-      HoleDivision division;
-      division.cut = {CutKind::Full, *origin, u};
-      division.outcome = cut_region(part, division.cut);
-      const size_t pieces = division.outcome.pieces.size();
-      if (pieces < 2 || (!line.radial && pieces != 2) || !meets_square_enough(part, division.outcome.chords)) continue;
-      // No sliver: every piece at least a quarter of the cell's square; a bisector leaves fewer holes in
-      // each.
-      bool take = true;
-      for (const Region& piece : division.outcome.pieces) {
-        take = take && piece.area() >= kSectorLeast * line.cell * line.cell && (!line.separates || piece.holes().size() < k);
-      }
-      if (take) return division;
-    }
-    return std::nullopt;
-  };
   const std::optional<Point2> c = radial_centre(part, size, centre, radius, at);
   if (!c) return std::nullopt;
   // Each hole's direction from the centre and its square cell's half angle (none: the bore, or no
   // depth along its ray); the part's extent along the ray (from the crossing before the hole to the
   // one after, the hole's own loop left out) and across it, through the hole's centre.
   std::vector<double> mid(k), half(k, 0.0), depth(k, 0.0), before(k, 0.0), after(k, 0.0), width(k, 0.0), distance(k, 0.0);
+  std::vector<char> bore(k, 0);
   for (size_t h = 0; h < k; ++h) {
     distance[h] = std::hypot(centre[h].x - c->x, centre[h].y - c->y);
     bore[h] = distance[h] < radius[h];
@@ -350,9 +323,34 @@ std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Poin
       if (left >= kSectorLeast * s) chord(mid[h], at, s, false);
     }
   }
-  std::optional<HoleDivision> division = first_cut(lines);
-  if (division) division->centre = c;
-  return division;
+  // The first line that keeps clear of the holes and cuts the part as asked (see above).
+  for (const Line& line : lines) {
+    const Point2 u = line.direction, n{-u.y, u.x};
+    bool clear = true;
+    for (size_t g = 0; g < k && clear; ++g) {
+      if (bore[g] && line.radial) continue;  // the line runs across it
+      clear = std::fabs(dot(n, {centre[g].x - line.through.x, centre[g].y - line.through.y})) - radius[g] >= kRadialClearance * radius[g];
+    }
+    if (!clear) continue;
+    const std::optional<Point2> origin = line_meets_outer(part, line.through, u);
+    if (!origin) continue;
+    HoleDivision division;
+    division.cut = {CutKind::Full, *origin, u};
+    division.outcome = cut_region(part, division.cut);
+    const size_t pieces = division.outcome.pieces.size();
+    if (pieces < 2 || (!line.radial && pieces != 2) || !meets_square_enough(part, division.outcome.chords)) continue;
+    // No sliver: every piece at least a quarter of the cell's square; a bisector leaves fewer holes in
+    // each.
+    bool take = true;
+    for (const Region& piece : division.outcome.pieces) {
+      take = take && piece.area() >= kSectorLeast * line.cell * line.cell && (!line.separates || piece.holes().size() < k);
+    }
+    if (take) {
+      division.centre = c;
+      return division;
+    }
+  }
+  return std::nullopt;
 }
 
 std::optional<HoleDivision> divide_holes(const Region& part, std::optional<Point2> hint) {
