@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -18,7 +19,8 @@ class VertexIndex {
  public:
   VertexIndex(std::vector<Point2>* vertices, double tolerance) : vertices_(vertices), tolerance_(tolerance) {}
 
-  int find_or_add(Point2 p) {
+  // The vertex within the tolerance of p, or -1.
+  int find(Point2 p) const {
     const auto [cx, cy] = cell(p);
     for (std::int64_t dx = -1; dx <= 1; ++dx) {
       for (std::int64_t dy = -1; dy <= 1; ++dy) {
@@ -30,6 +32,12 @@ class VertexIndex {
         }
       }
     }
+    return -1;
+  }
+
+  int find_or_add(Point2 p) {
+    if (const int id = find(p); id >= 0) return id;
+    const auto [cx, cy] = cell(p);
     const int id = static_cast<int>(vertices_->size());
     vertices_->push_back(p);
     cells_[key(cx, cy)].push_back(id);
@@ -56,6 +64,118 @@ struct LoopPiece {
   bool from_template = false;
 };
 
+
+// Two templates' feet on the side their parts share, a hair apart, would make a model edge a tiny
+// fraction of its neighbours: given an interval, it holds the minimum down; round a ring of parts the
+// counts cannot balance at all (each template places its feet from its own part alone: a flange's
+// twelve sector O-grids put theirs on the radial lines between them up to 0.004 apart, their holes
+// polygonised differently, and admitted no counts). A vertex a template makes (on no part's outline
+// as its vertex: a foot, an inner point), nearer another part's vertex than kFootSnap times the
+// shortest piece side at either, each on the line of a piece side at the other, is taken to be
+// that vertex.
+
+// Inputs:  pieces, their loops as ids into vertices; movable, per vertex (a template's own); tolerance,
+//          how far off a side's line a point may lie and be on it.
+// Outputs: pieces with the snapped vertices replaced (a loop's repeats dropped, its corners kept);
+//          vertices without those no loop uses any more (ids renumbered); the number snapped.
+int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices, const std::vector<char>& movable,
+                   double tolerance) {
+  const size_t n = vertices.size();
+  std::vector<double> shortest(n, std::numeric_limits<double>::infinity());
+  std::vector<std::vector<int>> neighbours(n), parts(n);
+  for (const LoopPiece& piece : pieces) {
+    const size_t m = piece.loop.size();
+    for (size_t i = 0; i < m; ++i) {
+      const int a = piece.loop[i], b = piece.loop[(i + 1) % m];
+      const Point2 pa = vertices[static_cast<size_t>(a)], pb = vertices[static_cast<size_t>(b)];
+      const double length = std::hypot(pb.x - pa.x, pb.y - pa.y);
+      shortest[static_cast<size_t>(a)] = std::min(shortest[static_cast<size_t>(a)], length);
+      shortest[static_cast<size_t>(b)] = std::min(shortest[static_cast<size_t>(b)], length);
+      neighbours[static_cast<size_t>(a)].push_back(b);
+      neighbours[static_cast<size_t>(b)].push_back(a);
+      parts[static_cast<size_t>(a)].push_back(piece.part);
+    }
+  }
+  for (auto& p : parts) {
+    std::sort(p.begin(), p.end());
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+  }
+  auto on_side_line = [&](int p, int v) {  // p on the line of a piece side at v
+    const Point2 a = vertices[static_cast<size_t>(v)], q = vertices[static_cast<size_t>(p)];
+    for (int w : neighbours[static_cast<size_t>(v)]) {
+      const Point2 b = vertices[static_cast<size_t>(w)];
+      const double length = std::hypot(b.x - a.x, b.y - a.y);
+      if (length > 0.0 && std::fabs((q.x - a.x) * (b.y - a.y) - (q.y - a.y) * (b.x - a.x)) / length <= tolerance) return true;
+    }
+    return false;
+  };
+  auto disjoint = [](const std::vector<int>& a, const std::vector<int>& b) {
+    for (int x : a) {
+      if (std::binary_search(b.begin(), b.end(), x)) return false;
+    }
+    return true;
+  };
+  std::vector<int> order(n), to(n);
+  for (size_t v = 0; v < n; ++v) order[v] = to[v] = static_cast<int>(v);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return vertices[static_cast<size_t>(a)].x < vertices[static_cast<size_t>(b)].x; });
+  auto root = [&](int v) {
+    while (to[static_cast<size_t>(v)] != v) v = to[static_cast<size_t>(v)];
+    return v;
+  };
+  int snapped = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const int v = order[i];
+    const size_t vi = static_cast<size_t>(v);
+    if (!movable[vi] || parts[vi].empty()) continue;
+    const Point2 pv = vertices[vi];
+    const double reach = kFootSnap * shortest[vi];
+    int best = -1;
+    double best_distance = std::numeric_limits<double>::infinity();
+    for (int step : {-1, 1}) {
+      for (long j = static_cast<long>(i) + step; j >= 0 && j < static_cast<long>(n); j += step) {
+        const int u = order[static_cast<size_t>(j)];
+        const Point2 pu = vertices[static_cast<size_t>(u)];
+        if (std::fabs(pu.x - pv.x) > reach) break;
+        const double d = std::hypot(pu.x - pv.x, pu.y - pv.y);
+        if (d >= best_distance || d > kFootSnap * std::min(shortest[vi], shortest[static_cast<size_t>(u)])) continue;
+        const int r = root(u);
+        if (r == v || !disjoint(parts[vi], parts[static_cast<size_t>(r)]) || !on_side_line(u, v) || !on_side_line(v, u)) continue;
+        best = r;
+        best_distance = d;
+      }
+    }
+    if (best < 0) continue;
+    to[vi] = best;
+    auto& into = parts[static_cast<size_t>(best)];
+    into.insert(into.end(), parts[vi].begin(), parts[vi].end());
+    std::sort(into.begin(), into.end());
+    into.erase(std::unique(into.begin(), into.end()), into.end());
+    ++snapped;
+  }
+  if (snapped == 0) return 0;
+  std::vector<int> renumber(n, -1);
+  std::vector<Point2> kept;
+  for (LoopPiece& piece : pieces) {
+    std::vector<int> loop;
+    std::vector<int> position(piece.loop.size());
+    for (size_t i = 0; i < piece.loop.size(); ++i) {
+      const int r = root(piece.loop[i]);
+      int& id = renumber[static_cast<size_t>(r)];
+      if (id < 0) {
+        id = static_cast<int>(kept.size());
+        kept.push_back(vertices[static_cast<size_t>(r)]);
+      }
+      if (loop.empty() || loop.back() != id) loop.push_back(id);
+      position[i] = static_cast<int>(loop.size()) - 1;
+    }
+    while (loop.size() > 1 && loop.back() == loop.front()) loop.pop_back();
+    for (int& c : piece.corners) c = std::min(position[static_cast<size_t>(c)], static_cast<int>(loop.size()) - 1);
+    piece.loop = std::move(loop);
+  }
+  vertices = std::move(kept);
+  return snapped;
+}
+
 }  // namespace
 
 double BlockModel::side_length(const ModelSide& side) const {
@@ -64,7 +184,8 @@ double BlockModel::side_length(const ModelSide& side) const {
   return total;
 }
 
-BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, double quantum, bool two_corner) {
+BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, double quantum, bool two_corner,
+                       bool snap_feet) {
   if (!d.complete()) throw std::logic_error("block_model: the decomposition is incomplete");
   if (!(quantum > 0.0)) throw std::logic_error("block_model: the quantum must be positive");
   BlockModel model;
@@ -114,6 +235,27 @@ BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, do
       }
       pieces.push_back(std::move(piece));
     }
+  }
+
+  // A vertex a template makes may move (snap_near_feet); a part's own vertices, and every vertex of a
+  // block part, stay.
+  if (snap_feet) {
+    std::vector<char> movable(model.vertices.size(), 1);
+    for (const LoopPiece& piece : pieces) {
+      if (piece.from_template) continue;
+      for (int v : piece.loop) movable[static_cast<size_t>(v)] = 0;
+    }
+    for (const FinishedRegion& part : d.finished) {
+      if (!part.is_template) continue;
+      auto fix = [&](const Ring& ring) {
+        for (const Point2& p : ring) {
+          if (const int v = index.find(p); v >= 0) movable[static_cast<size_t>(v)] = 0;
+        }
+      };
+      fix(part.region.outer());
+      for (const Ring& hole : part.region.holes()) fix(hole);
+    }
+    model.snapped_feet = snap_near_feet(pieces, model.vertices, movable, tolerance);
   }
 
   // Imprint: every vertex on the inside of a loop's segment goes into the loop, in order along it.

@@ -27,6 +27,10 @@ namespace autoblock {
 // 2.2 quanta on a face with a hole). The mesh's conformity is checked to the same tolerance.
 constexpr double kModelToleranceQuanta = 3.0;
 
+// Feet a hair apart (block_model's snap_feet): nearer than this share of the shortest piece side at
+// either.
+constexpr double kFootSnap = 0.05;
+
 struct ModelEdge {
   int a = 0, b = 0;  // vertex ids; the edge runs from a to b
   double length = 0.0;
@@ -54,6 +58,7 @@ struct BlockModel {
   std::vector<ModelEdge> edges;
   std::vector<ModelBlock> blocks;
   int parts = 0;  // finished parts
+  int snapped_feet = 0;  // template vertices made one with a neighbour's (block_model's snap_feet)
 
   // Inputs: side. Output: its length, the sum of its edges'.
   double side_length(const ModelSide& side) const;
@@ -61,13 +66,15 @@ struct BlockModel {
 
 // Inputs:  decomposition, complete; rules, the block rules it was made with (side vertices);
 //          quantum, the face's lattice spacing (Region::quantum); two_corner, as template_pieces
-//          takes it (block.h).
+//          takes it (block.h); snap_feet: two templates' feet on the side their parts share, a
+//          hair apart (within kFootSnap of the shortest piece side at either), made one (one moves
+//          to the other, along the side; a part's own vertices never move).
 // Outputs: the model above, blocks part by part in the decomposition's order (a template's pieces
 //          in template_pieces's order).
 // Throws std::logic_error when the pieces do not fit together (an edge used by more than two
 // pieces, a corner lost).
 BlockModel block_model(const RegionDecomposition& decomposition, const BlockRules& rules, double quantum,
-                       bool two_corner = false);
+                       bool two_corner = false, bool snap_feet = true);
 
 // Along an arc of the face's boundary every sample of its polygon is a model vertex, so each chord
 // would get its own whole number of intervals and the nodes would bunch where chords round up. This

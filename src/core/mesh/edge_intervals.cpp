@@ -234,7 +234,7 @@ IntervalAssignment assign_edge_intervals(const BlockModel& model, const Interval
   if ((code == GLP_ENOPFS || status == GLP_NOFEAS) && options.fixed.empty()) {
     // Not the user's doing: the blocks themselves admit no counts (a block whose opposite sides
     // share edges so that they cannot be equal).
-    throw std::runtime_error("the blocks admit no interval assignment (opposite sides of some block cannot get equal counts)");
+    throw NoIntervalAssignment();
   }
   if (code == GLP_ENOPFS || status == GLP_NOFEAS) {
     std::string list;

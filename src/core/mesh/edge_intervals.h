@@ -18,6 +18,7 @@
 // Reported deviations are those of interval_assignment.h (|L_e / n_e - h| / h), over edges.
 #pragma once
 
+#include <stdexcept>
 #include <vector>
 
 #include "core/mesh/block_model.h"
@@ -38,12 +39,21 @@ constexpr double kIntervalQuickLimit = 1.0;
 //          vertices: corners of blocks or T-junctions) or the count is below 1.
 FixedIntervals fixed_edge_intervals(const BlockModel& model, Point2 a, Point2 b, int intervals, double tolerance);
 
+// The blocks themselves admit no counts (opposite sides of some block cannot be equal, whatever the
+// size): no user's doing, a fault of the block model.
+class NoIntervalAssignment : public std::runtime_error {
+ public:
+  NoIntervalAssignment()
+      : std::runtime_error("the blocks admit no interval assignment (opposite sides of some block cannot get equal counts)") {}
+};
+
 // Inputs:  model; options (target size h, fixed counts over edges, the quad limit, GLPK's time:
 //          kIntervalQuickLimit, then the rest of options.time_limit only when nothing was found).
 // Outputs: the counts per model edge (IntervalAssignment::intervals indexed by edge, worst_strip an
 //          edge) and the deviation figures.
 // Throws InputError when h is not a positive finite number, the mesh would exceed max_quads or the
-//          fixed counts cannot hold; std::runtime_error when GLPK fails.
+//          fixed counts cannot hold; NoIntervalAssignment when the blocks admit none; std::runtime_error
+//          when GLPK fails.
 IntervalAssignment assign_edge_intervals(const BlockModel& model, const IntervalOptions& options);
 
 // Inputs: model; intervals per edge. Output: the number of quadrilaterals they give.

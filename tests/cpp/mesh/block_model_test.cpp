@@ -136,3 +136,67 @@ TEST_CASE("block model: an O-grid's hole is four edges along its arc, each a qua
     }
   }
 }
+
+TEST_CASE("block model: two templates' feet a hair apart on their shared side are made one", "[mesh][block_model]") {
+  // Two triangles on the side (0, 0)-(10, 0), each a template: a spoke of each meets that side where
+  // the perpendicular from its centre does. Apexes nearly mirrored put the two feet a hair apart;
+  // far from mirrored, a fair way apart.
+  auto triangles = [](double lower_apex_x) {
+    RegionDecomposition d;
+    d.status = EpisodeStatus::Complete;
+    for (const Ring& ring : {Ring{{0, 0}, {10, 0}, {5, 6}}, Ring{{10, 0}, {0, 0}, {lower_apex_x, -6}}}) {
+      FinishedRegion t;
+      t.id = static_cast<int>(d.finished.size());
+      t.region = Region(ring, {}, kQ);
+      t.is_template = true;
+      d.finished.push_back(t);
+    }
+    return d;
+  };
+  auto shortest_edge = [](const BlockModel& m) {
+    double shortest = 1e300;
+    for (const ModelEdge& e : m.edges) shortest = std::min(shortest, e.length);
+    return shortest;
+  };
+  auto check_pieces = [](const BlockModel& m) {
+    REQUIRE(m.blocks.size() == 6);
+    for (size_t e = 0; e < m.edges.size(); ++e) {
+      const int uses = edge_uses(m, e);
+      CHECK((uses == 1 || uses == 2));
+    }
+  };
+  SECTION("a hair apart: one foot") {
+    const RegionDecomposition d = triangles(5.05);
+    const BlockModel as_placed = block_model(d, BlockRules{}, kQ, false, false);
+    check_pieces(as_placed);
+    CHECK(as_placed.snapped_feet == 0);
+    // The two feet and the hair-thin edge between them.
+    CHECK(shortest_edge(as_placed) > 0.0);
+    CHECK(shortest_edge(as_placed) < 0.01 * 5.0);
+    // 4 corners, 2 + 2 feet on the outer sides, 2 on (0, 0)-(10, 0), 2 centres.
+    CHECK(as_placed.vertices.size() == 12);
+    const BlockModel snapped = block_model(d, BlockRules{}, kQ);
+    check_pieces(snapped);
+    CHECK(snapped.snapped_feet == 1);
+    CHECK(snapped.vertices.size() == 11);
+    CHECK(shortest_edge(snapped) > 2.0);
+    // The shared side is two edges, each used by one piece of either triangle.
+    int shared = 0;
+    for (size_t e = 0; e < snapped.edges.size(); ++e) {
+      const Point2 a = snapped.vertices[static_cast<size_t>(snapped.edges[e].a)];
+      const Point2 b = snapped.vertices[static_cast<size_t>(snapped.edges[e].b)];
+      if (std::fabs(a.y) < 1e-9 && std::fabs(b.y) < 1e-9) {
+        ++shared;
+        CHECK(edge_uses(snapped, e) == 2);
+      }
+    }
+    CHECK(shared == 2);
+  }
+  SECTION("a fair way apart: both feet") {
+    const BlockModel m = block_model(triangles(8.0), BlockRules{}, kQ);
+    check_pieces(m);
+    CHECK(m.snapped_feet == 0);
+    CHECK(m.vertices.size() == 12);
+    CHECK(shortest_edge(m) > 0.05 * 5.0);
+  }
+}
