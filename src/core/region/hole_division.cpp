@@ -233,40 +233,30 @@ std::vector<double> ray_crossings(const Region& part, int skip, Point2 origin, P
   return at;
 }
 
-}  // namespace
+// A line divide_sector tries (see its lines below).
+struct Line {
+  Point2 through, direction;
+  double cell;     // the square cell's side length the pieces are measured against
+  bool separates;  // every piece must hold fewer holes than the part
+  bool radial;     // through the centre (running across the bore); else a chord: two pieces
+  bool ogrid = false;  // the piece that holds a hole must take an O-grid (ogrid_template) or be long still
+};
 
-std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Point2> hint) {
-  const std::vector<Ring>& holes = part.holes();
-  const size_t k = holes.size();
-  if (k == 0) return std::nullopt;
-  const double size = min_area_rectangle(part).longer_side();
-  const std::vector<Point2> centre = hole_centres(holes);
-  const std::vector<double> radius = hole_radii(holes, centre);
-  // The arcs' centre: of most of the outer loop as for divide_holes, or of less of it where that
-  // loop runs along two arcs about it (a narrow annular sector's bore and rim), else the parent's.
-  const std::optional<ArcCentre> arcs = arc_centre(part, size);
-  std::optional<Point2> at = hint;
-  if (arcs && (arcs->share >= kArcDominated || (arcs->share >= kConcentricShare && arcs->concentric))) at = arcs->at;
-  struct Line {
-    Point2 through, direction;
-    double cell;     // the square cell's side length the pieces are measured against
-    bool separates;  // every piece must hold fewer holes than the part
-    bool radial;     // through the centre (running across the bore); else a chord: two pieces
-  };
-  const std::optional<Point2> c = radial_centre(part, size, centre, radius, at);
-  if (!c) return std::nullopt;
+// divide_sector's lines about a centre c (its Inputs), in order; bore marks the holes holding c.
+void sector_lines(const Region& part, Point2 c, const std::vector<Point2>& centre, const std::vector<double>& radius,
+                  std::vector<Line>& lines, std::vector<char>& bore) {
+  const size_t k = centre.size();
   // Each hole's direction from the centre and its square cell's half angle (none: the bore, or no
   // depth along its ray); the part's extent along the ray (from the crossing before the hole to the
   // one after, the hole's own loop left out) and across it, through the hole's centre.
   std::vector<double> mid(k), half(k, 0.0), depth(k, 0.0), before(k, 0.0), after(k, 0.0), width(k, 0.0), distance(k, 0.0);
-  std::vector<char> bore(k, 0);
   for (size_t h = 0; h < k; ++h) {
-    distance[h] = std::hypot(centre[h].x - c->x, centre[h].y - c->y);
+    distance[h] = std::hypot(centre[h].x - c.x, centre[h].y - c.y);
     bore[h] = distance[h] < radius[h];
     if (bore[h]) continue;
-    mid[h] = std::atan2(centre[h].y - c->y, centre[h].x - c->x);
+    mid[h] = std::atan2(centre[h].y - c.y, centre[h].x - c.x);
     const Point2 u{std::cos(mid[h]), std::sin(mid[h])}, n{-u.y, u.x};
-    const std::vector<double> at = ray_crossings(part, static_cast<int>(h) + 1, *c, u);
+    const std::vector<double> at = ray_crossings(part, static_cast<int>(h) + 1, c, u);
     const auto next = std::upper_bound(at.begin(), at.end(), distance[h]);
     if (next == at.begin() || next == at.end()) continue;
     before[h] = *(next - 1);
@@ -286,17 +276,16 @@ std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Poin
   //   ends      where the part is deeper along a hole's ray than kCellLong times its width across
   //             the hole (a narrow sector), the chords square to the ray at the ends of the hole's
   //             square cell, as wide as the part there.
-  std::vector<Line> lines;
   auto ray = [&](double angle) { return Point2{std::cos(angle), std::sin(angle)}; };
   auto chord = [&](double angle, double at, double cell, bool separates) {
     const Point2 u = ray(angle);
-    lines.push_back({{c->x + at * u.x, c->y + at * u.y}, {-u.y, u.x}, cell, separates, false});
+    lines.push_back({{c.x + at * u.x, c.y + at * u.y}, {-u.y, u.x}, cell, separates, false});
   };
   for (size_t h = 0; h < k; ++h) {
     for (size_t g = h + 1; g < k; ++g) {
       if (half[h] <= 0.0 || half[g] <= 0.0) continue;
       const double turn = std::remainder(mid[g] - mid[h], 2.0 * M_PI);
-      lines.push_back({*c, ray(mid[h] + 0.5 * turn), std::min(depth[h], depth[g]), true, true});
+      lines.push_back({c, ray(mid[h] + 0.5 * turn), std::min(depth[h], depth[g]), true, true});
     }
   }
   for (size_t h = 0; h < k; ++h) {
@@ -308,7 +297,7 @@ std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Poin
   }
   for (size_t h = 0; h < k; ++h) {
     if (half[h] <= 0.0) continue;
-    for (const double side : {1.0, -1.0}) lines.push_back({*c, ray(mid[h] + side * half[h]), depth[h], false, true});
+    for (const double side : {1.0, -1.0}) lines.push_back({c, ray(mid[h] + side * half[h]), depth[h], false, true});
   }
   for (size_t h = 0; h < k; ++h) {
     const double s = width[h];
@@ -322,6 +311,77 @@ std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Poin
       const double at = outer_end ? hi : lo, left = outer_end ? after[h] - hi : lo - before[h];
       if (left >= kSectorLeast * s) chord(mid[h], at, s, false);
     }
+  }
+}
+
+// A hole's cell along an axis u: the part's extent through the hole's centre along u (before < 0 <
+// after, from the centre, the hole's own loop left out) and across u (width).
+struct StripCell {
+  double before = 0.0, after = 0.0, width = 0.0;
+  // Room for the square cell and a leftover at one end at least (kSectorLeast of a cell): the part
+  // cut at one end only keeps the length for its other end.
+  bool long_enough() const { return after - before > (1.0 + kSectorLeast) * width; }
+};
+
+// Inputs: part; h, a hole's index; c, its centre; unit axis u. Output: its cell, or nothing where a ray
+//         meets no loop.
+std::optional<StripCell> strip_cell(const Region& part, size_t h, Point2 c, Point2 u) {
+  const int own = static_cast<int>(h) + 1;
+  const Point2 n{-u.y, u.x};
+  const std::vector<double> ahead = ray_crossings(part, own, c, u), behind = ray_crossings(part, own, c, {-u.x, -u.y});
+  const std::vector<double> left = ray_crossings(part, own, c, n), right = ray_crossings(part, own, c, {-n.x, -n.y});
+  if (ahead.empty() || behind.empty() || left.empty() || right.empty()) return std::nullopt;
+  return StripCell{-behind.front(), ahead.front(), left.front() + right.front()};
+}
+
+// divide_sector's lines in a part with no centre (a strip of a perforated plate between two of
+// divide_holes's lines): along each axis of the part's minimum-area rectangle, where the part is
+// longer through a hole than the hole's square cell and a quarter cell's leftover, the lines square
+// to the axis at the ends of that cell, as for a narrow sector's rays (the larger leftover first; a
+// plate 10 by 6 with a central hole: both ends, not only the first as kCellLong would leave it). Each is taken where the hole's piece then takes an O-grid or is still that long (Line::ogrid):
+// a hole too near the strip's sides is left to the search (plate-three-holes.brep's largest hole,
+// 0.950 -> 0.866 when cut at its cell's end).
+void strip_lines(const Region& part, const std::vector<Point2>& centre, std::vector<Line>& lines) {
+  const OrientedRectangle frame = min_area_rectangle(part);
+  for (const Point2 u : {frame.axis, Point2{-frame.axis.y, frame.axis.x}}) {
+    const Point2 n{-u.y, u.x};
+    for (size_t h = 0; h < centre.size(); ++h) {
+      const std::optional<StripCell> cell = strip_cell(part, h, centre[h], u);
+      if (!cell || !cell->long_enough()) continue;
+      const double before = cell->before, after = cell->after, s = cell->width;
+      double lo = -0.5 * s, hi = 0.5 * s;
+      if (lo < before) hi += before - lo, lo = before;
+      if (hi > after) lo -= hi - after, hi = after;
+      const bool ahead_first = after - hi >= lo - before;
+      for (const bool ahead_end : {ahead_first, !ahead_first}) {
+        const double at = ahead_end ? hi : lo, leftover = ahead_end ? after - hi : lo - before;
+        if (leftover >= kSectorLeast * s) lines.push_back({{centre[h].x + at * u.x, centre[h].y + at * u.y}, n, s, false, false, true});
+      }
+    }
+  }
+}
+
+}  // namespace
+
+std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Point2> hint) {
+  const std::vector<Ring>& holes = part.holes();
+  const size_t k = holes.size();
+  if (k == 0) return std::nullopt;
+  const double size = min_area_rectangle(part).longer_side();
+  const std::vector<Point2> centre = hole_centres(holes);
+  const std::vector<double> radius = hole_radii(holes, centre);
+  // The arcs' centre: of most of the outer loop as for divide_holes, or of less of it where that
+  // loop runs along two arcs about it (a narrow annular sector's bore and rim), else the parent's.
+  const std::optional<ArcCentre> arcs = arc_centre(part, size);
+  std::optional<Point2> at = hint;
+  if (arcs && (arcs->share >= kArcDominated || (arcs->share >= kConcentricShare && arcs->concentric))) at = arcs->at;
+  const std::optional<Point2> c = radial_centre(part, size, centre, radius, at);
+  std::vector<Line> lines;
+  std::vector<char> bore(k, 0);
+  if (c) {
+    sector_lines(part, *c, centre, radius, lines, bore);
+  } else {
+    strip_lines(part, centre, lines);
   }
   // The first line that keeps clear of the holes and cuts the part as asked (see above).
   for (const Line& line : lines) {
@@ -344,6 +404,16 @@ std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Poin
     bool take = true;
     for (const Region& piece : division.outcome.pieces) {
       take = take && piece.area() >= kSectorLeast * line.cell * line.cell && (!line.separates || piece.holes().size() < k);
+      // A strip's cell end: the hole's piece an O-grid, or still long enough for its other end.
+      if (take && line.ogrid && !piece.holes().empty() && !ogrid_template(piece)) {
+        const std::vector<Point2> piece_centre = hole_centres(piece.holes());
+        bool still_long = false;
+        for (size_t h = 0; h < piece_centre.size(); ++h) {
+          const std::optional<StripCell> cell = strip_cell(piece, h, piece_centre[h], {-u.y, u.x});
+          still_long = still_long || (cell && cell->long_enough());
+        }
+        take = still_long;
+      }
     }
     if (take) {
       division.centre = c;

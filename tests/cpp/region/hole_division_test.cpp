@@ -242,7 +242,8 @@ TEST_CASE("divide_sector cuts a square cell about each bolt hole of a wide secto
   const std::vector<Region> eight = divide_all_sectors(flange(8, 0.3));
   CHECK(eight.size() == 8);
   for (const Region& part : eight) CHECK(part.holes().size() == 1);
-  // A plate (no arcs about one centre): no sector to divide.
+  // A plate of two holes (no arcs about one centre), each hole's cell as long as it is wide: nothing
+  // to divide.
   CHECK_FALSE(divide_sector(perforated_plate(2, 1, 10.0, 2.5, 0.3)).has_value());
 }
 
@@ -292,4 +293,47 @@ TEST_CASE("divide_sector parts a flange's two bolt circles with chords, one O-gr
   }
   CHECK(cells == 24);
   CHECK(area == Approx(face.area()).epsilon(1e-7));
+}
+
+TEST_CASE("divide_sector cuts a plate's long strip at its hole's cell ends where the cell takes an O-grid", "[region][division][arc]") {
+  // A strip 20 by 60 (a plate's, between two of divide_holes's lines), turned by 0.4, one hole of
+  // radius 3 a little below its middle: no centre of arcs, so the cell's ends are cut square to the
+  // strip's axis, the longer leftover first. Left: a square cell about the hole, an O-grid, and two
+  // blocks.
+  const double angle = 0.4;
+  Ring outer;
+  for (const Point2 p : {Point2{0, 0}, Point2{20, 0}, Point2{20, 60}, Point2{0, 60}}) outer.push_back(turned(p, angle));
+  const Region strip(outer, {round_hole(turned({10, 25}, angle), 3.0)}, kQ);
+  std::vector<Region> parts;
+  std::function<void(const Region&)> divide = [&](const Region& part) {
+    const std::optional<HoleDivision> division = part.holes().empty() ? std::nullopt : divide_sector(part);
+    if (!division) {
+      parts.push_back(part);
+      return;
+    }
+    REQUIRE(division->outcome.pieces.size() == 2);
+    REQUIRE(division->outcome.chords.size() == 1);
+    // Square to the strip's axis: the chord runs across it, 20 long.
+    const Chord chord = division->outcome.chords[0];
+    CHECK(std::hypot(chord.b.x - chord.a.x, chord.b.y - chord.a.y) == Approx(20.0).margin(1e-5));
+    for (const Region& piece : division->outcome.pieces) divide(piece);
+  };
+  divide(strip);
+  REQUIRE(parts.size() == 3);
+  double area = 0.0;
+  for (const Region& part : parts) {
+    area += part.area();
+    if (part.holes().empty()) {
+      CHECK(part.outer().size() == 4);
+      continue;
+    }
+    CHECK(ogrid_template(part));
+    CHECK(part.area() + M_PI * 9.0 == Approx(400.0).epsilon(0.01));  // the 20 by 20 cell, less the hole
+  }
+  CHECK(area == Approx(strip.area()).epsilon(1e-7));
+  // A hole too near the strip's sides for an O-grid (radius 7, 3 from each side) is left whole: its
+  // cell's end would leave a short piece no O-grid takes.
+  const Region tight(outer, {round_hole(turned({10, 14}, angle), 7.0)}, kQ);
+  CHECK_FALSE(ogrid_template(tight));
+  CHECK_FALSE(divide_sector(tight).has_value());
 }
