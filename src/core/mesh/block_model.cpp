@@ -64,7 +64,6 @@ struct LoopPiece {
   bool from_template = false;
 };
 
-
 // Two templates' feet on the side their parts share, a hair apart, would make a model edge a tiny
 // fraction of its neighbours: given an interval, it holds the minimum down; round a ring of parts the
 // counts cannot balance at all (each template places its feet from its own part alone: a flange's
@@ -72,8 +71,7 @@ struct LoopPiece {
 // polygonised differently, and admitted no counts). A vertex a template makes (on no part's outline
 // as its vertex: a foot, an inner point), nearer another part's vertex than kFootSnap times the
 // shortest piece side at either, each on the line of a piece side at the other, is taken to be
-// that vertex.
-
+// that vertex (the nearest such; snapped vertices move on together).
 // Inputs:  pieces, their loops as ids into vertices; movable, per vertex (a template's own); tolerance,
 //          how far off a side's line a point may lie and be on it.
 // Outputs: pieces with the snapped vertices replaced (a loop's repeats dropped, its corners kept);
