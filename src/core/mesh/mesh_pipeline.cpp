@@ -380,12 +380,12 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     merge_arc_chains(m, face.arcs);
     return m;
   };
-  result.feet_snapped = model.snapped_feet > 0;
+  bool snap = model.snapped_feet > 0;  // the model kept has feet made one
   try {
     assign_arc_intervals(result, model, options, h, tolerance, minima.chord, {});
   } catch (const NoIntervalAssignment&) {
-    if (!result.feet_snapped) throw;
-    result.feet_snapped = false;
+    if (!snap) throw;
+    snap = false;
     result.block_model = unsnapped_model();
     minima = arc_minima(result.block_model, face.arcs, tip_steps);
     assign_arc_intervals(result, model, options, h, tolerance, minima.chord, {});
@@ -440,7 +440,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     result.mesh_seconds += since(start);
     return kept;
   };
-  if (result.feet_snapped) {
+  if (snap) {
     // Feet made one move pieces and take edges from the program: the model as the templates place
     // them can mesh better (60 unseen flanges, the feet made one always: 15 rose, and 8 fell by
     // 0.006-0.12).
@@ -448,7 +448,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     again.block_model = unsnapped_model();
     const ArcMinima again_minima = arc_minima(again.block_model, face.arcs, tip_steps);
     if (remake(again, again.block_model, again_minima.chord, {}, true)) {
-      result.feet_snapped = false;
+      snap = false;
       minima = again_minima;
     }
   }
@@ -464,7 +464,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
         return f.is_template && two_corner_improves(f.region, d.rules);
       })) {
     MeshResult again;
-    again.block_model = block_model(d, d.rules, q, true, result.feet_snapped);
+    again.block_model = block_model(d, d.rules, q, true, snap);
     merge_arc_chains(again.block_model, face.arcs);
     const ArcMinima again_minima = arc_minima(again.block_model, face.arcs, tip_steps);
     if (remake(again, again.block_model, again_minima.chord, {}, true)) {

@@ -85,9 +85,6 @@ struct MeshResult {
   // A general face's: the mesh kept was made with finer intervals on the arcs' edges from acute tips
   // (a convex corner sharper than 60 degrees where an arc ends; mesh_region_decomposition).
   bool acute_tips = false;
-  // A general face's: the kept mesh's block model has two templates' feet a hair apart made one
-  // (block_model's snap_feet); false: the model as the templates place them.
-  bool feet_snapped = false;
 };
 
 // Inputs:  face; decomposition of it (complete); options.

@@ -233,6 +233,23 @@ std::vector<double> ray_crossings(const Region& part, int skip, Point2 origin, P
   return at;
 }
 
+// Inputs:  at, a hole's centre along an axis (a ray's from the centre, or 0 from the hole's own);
+//          before < at < after, the part's extent along it; s, the hole's square cell's side.
+// Output:  where along the axis to cut the cell's ends: the cell [lo, hi] about the hole, moved inside
+//          the part, and of its two ends those leaving at least kSectorLeast of a cell beyond, the
+//          larger leftover first.
+std::vector<double> cell_ends(double at, double before, double after, double s) {
+  double lo = at - 0.5 * s, hi = at + 0.5 * s;
+  if (lo < before) hi += before - lo, lo = before;
+  if (hi > after) lo -= hi - after, hi = after;
+  const bool after_first = after - hi >= lo - before;
+  std::vector<double> ends;
+  for (const bool after_end : {after_first, !after_first}) {
+    if ((after_end ? after - hi : lo - before) >= kSectorLeast * s) ends.push_back(after_end ? hi : lo);
+  }
+  return ends;
+}
+
 // A line divide_sector tries (see its lines below).
 struct Line {
   Point2 through, direction;
@@ -302,15 +319,7 @@ void sector_lines(const Region& part, Point2 c, const std::vector<Point2>& centr
   for (size_t h = 0; h < k; ++h) {
     const double s = width[h];
     if (half[h] <= 0.0 || !(s > 0.0) || depth[h] <= kCellLong * s) continue;
-    // The cell [lo, hi] along the ray, about the hole, inside the part.
-    double lo = distance[h] - 0.5 * s, hi = distance[h] + 0.5 * s;
-    if (lo < before[h]) hi += before[h] - lo, lo = before[h];
-    if (hi > after[h]) lo -= hi - after[h], hi = after[h];
-    const bool outer_first = after[h] - hi >= lo - before[h];
-    for (const bool outer_end : {outer_first, !outer_first}) {
-      const double at = outer_end ? hi : lo, left = outer_end ? after[h] - hi : lo - before[h];
-      if (left >= kSectorLeast * s) chord(mid[h], at, s, false);
-    }
+    for (const double end : cell_ends(distance[h], before[h], after[h], s)) chord(mid[h], end, s, false);
   }
 }
 
@@ -338,8 +347,9 @@ std::optional<StripCell> strip_cell(const Region& part, size_t h, Point2 c, Poin
 // divide_holes's lines): along each axis of the part's minimum-area rectangle, where the part is
 // longer through a hole than the hole's square cell and a quarter cell's leftover, the lines square
 // to the axis at the ends of that cell, as for a narrow sector's rays (the larger leftover first; a
-// plate 10 by 6 with a central hole: both ends, not only the first as kCellLong would leave it). Each is taken where the hole's piece then takes an O-grid or is still that long (Line::ogrid):
-// a hole too near the strip's sides is left to the search (plate-three-holes.brep's largest hole,
+// plate 10 by 6 with a central hole: both ends, not only the first as kCellLong would leave it).
+// Each is taken where the hole's piece then takes an O-grid or is still that long (Line::ogrid): a
+// hole too near the strip's sides is left to the search (plate-three-holes.brep's largest hole,
 // 0.950 -> 0.866 when cut at its cell's end).
 void strip_lines(const Region& part, const std::vector<Point2>& centre, std::vector<Line>& lines) {
   const OrientedRectangle frame = min_area_rectangle(part);
@@ -348,14 +358,9 @@ void strip_lines(const Region& part, const std::vector<Point2>& centre, std::vec
     for (size_t h = 0; h < centre.size(); ++h) {
       const std::optional<StripCell> cell = strip_cell(part, h, centre[h], u);
       if (!cell || !cell->long_enough()) continue;
-      const double before = cell->before, after = cell->after, s = cell->width;
-      double lo = -0.5 * s, hi = 0.5 * s;
-      if (lo < before) hi += before - lo, lo = before;
-      if (hi > after) lo -= hi - after, hi = after;
-      const bool ahead_first = after - hi >= lo - before;
-      for (const bool ahead_end : {ahead_first, !ahead_first}) {
-        const double at = ahead_end ? hi : lo, leftover = ahead_end ? after - hi : lo - before;
-        if (leftover >= kSectorLeast * s) lines.push_back({{centre[h].x + at * u.x, centre[h].y + at * u.y}, n, s, false, false, true});
+      const double s = cell->width;
+      for (const double end : cell_ends(0.0, cell->before, cell->after, s)) {
+        lines.push_back({{centre[h].x + end * u.x, centre[h].y + end * u.y}, n, s, false, false, true});
       }
     }
   }
