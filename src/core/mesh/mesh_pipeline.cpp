@@ -152,6 +152,9 @@ void mesh_blocks(MeshResult& r, const BlockModel& model, const InputFace& face, 
       r.smoothing = smoothing;
     }
   }
+  // Inverted quads left (a sliver's template, a time-capped search's late cuts): the smoothing goes on
+  // about them alone (the first had stopped at its limit, each sweep lifting the worst a little).
+  if (options.smoothing_sweeps > 0) untangle_quad_mesh(r.mesh, kUntangleRings, kUntangleSweeps);
 }
 
 }  // namespace

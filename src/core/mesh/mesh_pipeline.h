@@ -35,6 +35,11 @@ constexpr int kDefaultSmoothingSweeps = 30;
 constexpr double kArcTargetsBelow = 0.85;
 
 constexpr int kTwistedRounds = 3;
+// A general face's mesh with inverted quads after the twisted rounds and the fill by length: the quads
+// within this many rings of them get up to this many more sweeps of smoothing on their own
+// (untangle_quad_mesh, mesh_smoothing.h).
+constexpr int kUntangleRings = 10;
+constexpr int kUntangleSweeps = 300;
 
 struct MeshOptions {
   double size = 0.0;                 // target element size h; 0: the face's size / kDefaultSizeDivisions

@@ -255,4 +255,57 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
   return report;
 }
 
+int untangle_quad_mesh(QuadMesh& mesh, int rings, int max_sweeps) {
+  auto inverted = [&] {
+    std::vector<char> at(mesh.nodes.size(), 0);
+    int count = 0;
+    for (size_t q = 0; q < mesh.quads.size(); ++q) {
+      if (quad_scaled_jacobian(mesh.corners(q)) > 0.0) continue;
+      ++count;
+      for (const int v : mesh.quads[q]) at[static_cast<size_t>(v)] = 1;
+    }
+    return std::pair{count, at};
+  };
+  auto [count, near] = inverted();
+  if (count == 0 || max_sweeps <= 0) return count;
+  for (int ring = 0; ring < rings; ++ring) {
+    std::vector<char> grown = near;
+    for (const auto& quad : mesh.quads) {
+      bool touches = false;
+      for (const int v : quad) touches = touches || near[static_cast<size_t>(v)];
+      if (!touches) continue;
+      for (const int v : quad) grown[static_cast<size_t>(v)] = 1;
+    }
+    near = std::move(grown);
+  }
+  // The patch: the quads whose nodes are all near, as a mesh of its own.
+  QuadMesh patch;
+  patch.z = mesh.z;
+  patch.blocks = mesh.blocks;
+  std::vector<int> index(mesh.nodes.size(), -1);
+  std::vector<size_t> node_of;
+  for (size_t q = 0; q < mesh.quads.size(); ++q) {
+    bool inside = true;
+    for (const int v : mesh.quads[q]) inside = inside && near[static_cast<size_t>(v)];
+    if (!inside) continue;
+    std::array<int, 4> quad{};
+    for (size_t k = 0; k < 4; ++k) {
+      const size_t v = static_cast<size_t>(mesh.quads[q][k]);
+      if (index[v] < 0) {
+        index[v] = static_cast<int>(patch.nodes.size());
+        patch.nodes.push_back(mesh.nodes[v]);
+        node_of.push_back(v);
+      }
+      quad[k] = index[v];
+    }
+    patch.quads.push_back(quad);
+    if (!mesh.quad_block.empty()) patch.quad_block.push_back(mesh.quad_block[q]);
+  }
+  // A node inside the patch has all its quads there (else an edge of it would be used once: the
+  // patch's boundary, which stays).
+  smooth_quad_mesh(patch, max_sweeps, 0, nullptr);
+  for (size_t i = 0; i < node_of.size(); ++i) mesh.nodes[node_of[i]] = patch.nodes[i];
+  return inverted().first;
+}
+
 }  // namespace autoblock

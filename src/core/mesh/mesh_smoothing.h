@@ -40,4 +40,14 @@ constexpr int kWorstRounds = 40;
 SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_rounds = kWorstRounds,
                                  const FaceArcs* arcs = nullptr);
 
+// A smoothed mesh may keep an inverted quad where its sweeps stopped at their limit (a sliver between
+// a cut and a hole's arc, one element across): each sweep lifts the worst quads a little. The quads
+// within `rings` rings of the inverted ones (quads sharing a node, ring by ring) are smoothed on their
+// own, up to max_sweeps sweeps and no worst-first rounds (they slide boundary nodes, and this patch's
+// boundary is not the face's). Only nodes whose quads all lie in the patch move, under the smoothing's
+// rule: no other quad changes, the face's boundary nodes stay, and no quad's worst gets worse.
+// Inputs:  mesh, counter-clockwise quads; rings >= 0; max_sweeps >= 0.
+// Outputs: mesh with those nodes moved (unchanged without inverted quads); the inverted quads left.
+int untangle_quad_mesh(QuadMesh& mesh, int rings, int max_sweeps);
+
 }  // namespace autoblock

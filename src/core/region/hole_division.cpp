@@ -428,7 +428,7 @@ std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Poin
   return std::nullopt;
 }
 
-std::optional<HoleDivision> divide_holes(const Region& part, std::optional<Point2> hint) {
+std::optional<HoleDivision> divide_holes(const Region& part, std::optional<Point2> hint, bool roomy) {
   const std::vector<Ring>& holes = part.holes();
   const size_t k = holes.size();
   if (k < 2) return std::nullopt;
@@ -607,6 +607,7 @@ std::optional<HoleDivision> divide_holes(const Region& part, std::optional<Point
   size_t tried = 0;
   for (const Gap& gap : gaps) {
     if (tried == kMaxCuts) break;
+    if (roomy && !gap.roomy) continue;
     const Point2 u = gap.direction, n{-u.y, u.x};
     const std::optional<Point2> origin = line_meets_outer(part, {gap.offset * n.x, gap.offset * n.y}, u);
     if (!origin) continue;

@@ -50,8 +50,11 @@
 
 namespace autoblock {
 
-// The search divides a part with at least this many holes (region_search.h); it searches a part with
-// fewer itself, whose candidates hold the cuts between two holes (region_candidates.h).
+// The search divides a part with at least this many holes (region_search.h); a part with fewer goes
+// to divide_sector (below), and one with two holes that a division left, where that finds no line, to
+// divide_holes too, taking only a line with room for both holes' O-grids (two holes close together, a
+// line threaded between them leaves slivers); only then does the search cut it, its candidates
+// holding the cuts between two holes (region_candidates.h).
 constexpr int kDivideHoles = 3;
 
 struct HoleDivision {
@@ -63,12 +66,13 @@ struct HoleDivision {
 
 // Inputs:  part; hint, the centre its parent's division found (HoleDivision::centre), the radial
 //          lines' centre where the part's own arcs give none (a part of a flange cut off by chords,
-//          whose arcs are too short to show it).
+//          whose arcs are too short to show it); roomy, only lines that leave the holes beside them
+//          room for their O-grids (a clearance of half the larger radius).
 // Outputs: the division cut above, its outcome and the centre, or nothing when the part has fewer than two holes
 //          or no line in the directions above separates them (holes that overlap across every
 //          direction, a bore in the middle of a bolt circle, lines that cut_region refuses or that
 //          meet the boundary too obliquely).
-std::optional<HoleDivision> divide_holes(const Region& part, std::optional<Point2> hint = std::nullopt);
+std::optional<HoleDivision> divide_holes(const Region& part, std::optional<Point2> hint = std::nullopt, bool roomy = false);
 
 // A flange's sector with a bolt hole or two (fewer than kDivideHoles: divide_holes leaves it to the
 // search) is wider than the hole's cell: divide_holes's radial lines run through the middles of the

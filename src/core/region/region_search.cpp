@@ -35,10 +35,13 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
     const bool many = static_cast<int>(part.holes().size()) >= kDivideHoles;
     const auto inherited = centres_.find(part);
     const std::optional<Point2> hint = inherited != centres_.end() ? std::optional<Point2>(inherited->second) : std::nullopt;
-    if (const std::optional<HoleDivision> division = many ? divide_holes(part, hint) : divide_sector(part, hint)) {
+    std::optional<HoleDivision> division = many ? divide_holes(part, hint) : divide_sector(part, hint);
+    if (!division && part.holes().size() == 2 && divided_.count(part) > 0) division = divide_holes(part, hint, true);
+    if (division) {
       if (const std::optional<Point2> centre = division->centre ? division->centre : hint) {
         for (const Region& piece : division->outcome.pieces) centres_.emplace(piece, *centre);
       }
+      for (const Region& piece : division->outcome.pieces) divided_.insert(piece);
       Entry entry;
       entry.action = {RegionAction::Kind::Cut, division->cut};
       entry.value = region_cut_reward(options.reward, division->outcome, face_size, options.rules);
@@ -127,6 +130,7 @@ RegionAction RegionSearchPolicy::choose(const RegionEpisode& episode) {
   if (!started_ || episode.face().hash() != face_hash_ || episode.steps() == 0) {
     memo_.clear();
     centres_.clear();
+    divided_.clear();
     face_hash_ = episode.face().hash();
     started_ = true;
     capped_ = false;

@@ -22,12 +22,17 @@
 // decisions, fewer parts solved and cut.
 // A part with kDivideHoles holes or more (a perforated plate) is not searched: it is divided along the
 // ligaments between its holes (divide_holes, hole_division.h), by geometry alone, and its pieces are
-// solved as parts; only where no line divides it is it searched like any other.
+// solved as parts; only where no line divides it is it searched like any other. A part with one or two
+// holes is divided so too where divide_sector finds a line; one with two that a division left (a
+// plate's strip whose two holes share a cell's width: searched, such strips ran the plates of scores
+// of holes out of time) where divide_holes then finds one with room for both holes' O-grids. A face
+// or a search's part with two holes is searched.
 #pragma once
 
 #include <chrono>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "core/region/hole_division.h"
 #include "core/region/region_policy.h"
@@ -74,6 +79,9 @@ class RegionSearchPolicy : public RegionPolicy {
   // The centre of a divided part's arcs, for its pieces (hole_division.h: a piece's own arcs may be
   // too short to find it).
   std::unordered_map<Region, Point2, RegionHash> centres_;
+  // The pieces a hole division left (a plate's strips): those with two holes that divide_sector does
+  // not divide go to divide_holes too.
+  std::unordered_set<Region, RegionHash> divided_;
   size_t face_hash_ = 0;
   bool started_ = false;
   bool capped_ = false;

@@ -208,3 +208,35 @@ TEST_CASE("boundary nodes on an arc slide along its circle, each edge within a c
   CHECK(mesh.nodes[static_cast<size_t>(n * (n + 1) + n)] == before.nodes[static_cast<size_t>(n * (n + 1) + n)]);
   CHECK(slid);
 }
+
+TEST_CASE("untangling smooths the quads about inverted ones alone and leaves the rest", "[mesh][smoothing]") {
+  const int n = 16;
+  QuadMesh mesh = sheared_grid(n, 0.0);
+  // Nothing inverted: nothing moves.
+  QuadMesh straight = mesh;
+  CHECK(untangle_quad_mesh(straight, 3, 100) == 0);
+  for (size_t v = 0; v < mesh.nodes.size(); ++v) CHECK(straight.nodes[v] == mesh.nodes[v]);
+  // Two nodes pushed across their neighbours (a fold of several quads) near one corner.
+  auto at = [&](int i, int j) -> Point2& { return mesh.nodes[static_cast<size_t>(j * (n + 1) + i)]; };
+  at(4, 4) = {5.7, 4.4};
+  at(5, 5) = {3.6, 5.8};
+  int inverted = 0;
+  for (size_t q = 0; q < mesh.quads.size(); ++q) inverted += quad_scaled_jacobian(mesh.corners(q)) <= 0.0;
+  REQUIRE(inverted >= 2);
+  const QuadMesh before = mesh;
+  CHECK(untangle_quad_mesh(mesh, 3, 100) == 0);
+  for (size_t q = 0; q < mesh.quads.size(); ++q) CHECK(quad_scaled_jacobian(mesh.corners(q)) > 0.0);
+  // Nodes more than the rings (and the inverted quads' own) from the fold stay, and so does the
+  // boundary; the fold's nodes moved.
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      const bool far = i > 10 || j > 10;
+      const bool boundary = i == 0 || j == 0 || i == n || j == n;
+      if (far || boundary) {
+        INFO("node " << i << ", " << j);
+        CHECK(mesh.nodes[static_cast<size_t>(j * (n + 1) + i)] == before.nodes[static_cast<size_t>(j * (n + 1) + i)]);
+      }
+    }
+  }
+  CHECK_FALSE(at(4, 4) == before.nodes[static_cast<size_t>(4 * (n + 1) + 4)]);
+}

@@ -71,6 +71,26 @@ std::vector<Region> divide_all(const Region& face, std::vector<Chord>* chords = 
   return cells;
 }
 
+// The search's first action on part and its whole decomposition, under the mesh preset and with no
+// clock (the same every run).
+struct Searched {
+  RegionAction first;
+  RegionDecomposition decomposition;
+};
+Searched search_without_clock(const Region& part) {
+  RegionEpisodeOptions mesh;
+  mesh.reward = RewardPreset::Mesh;
+  RegionSearchOptions options;
+  options.time_limit = 0.0;
+  RegionSearchPolicy search(options);
+  RegionEpisode episode(part, mesh);
+  Searched out;
+  out.first = search.choose(episode);
+  RegionSearchPolicy again(options);
+  out.decomposition = decompose_region(part, again, mesh);
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("divide_holes cuts a plate with a grid of round holes into one O-grid cell per hole", "[region][division]") {
@@ -159,21 +179,13 @@ TEST_CASE("divide_holes cuts a flange into sectors along radial lines through it
 
 TEST_CASE("the search divides a perforated plate along its ligaments and finishes every cell", "[region][division][search]") {
   const Region plate = perforated_plate(5, 4, 10.0, 2.5, 0.3);
-  RegionEpisodeOptions mesh;
-  mesh.reward = RewardPreset::Mesh;
-  RegionSearchOptions options;
-  options.time_limit = 0.0;  // no clock: the same decomposition every run
-  RegionSearchPolicy search(options);
-  RegionEpisode episode(plate, mesh);
-  const RegionAction first = search.choose(episode);
+  const Searched searched = search_without_clock(plate);
   const std::optional<HoleDivision> division = divide_holes(plate);
   REQUIRE(division.has_value());
-  CHECK(first.kind == RegionAction::Kind::Cut);
-  CHECK(first.cut.origin == division->cut.origin);
-  CHECK(first.cut.direction == division->cut.direction);
-
-  RegionSearchPolicy again(options);
-  const RegionDecomposition d = decompose_region(plate, again, mesh);
+  CHECK(searched.first.kind == RegionAction::Kind::Cut);
+  CHECK(searched.first.cut.origin == division->cut.origin);
+  CHECK(searched.first.cut.direction == division->cut.direction);
+  const RegionDecomposition& d = searched.decomposition;
   REQUIRE(d.complete());
   CHECK_FALSE(d.time_capped);
   // The finished blocks and templates make up the plate.
@@ -181,10 +193,13 @@ TEST_CASE("the search divides a perforated plate along its ligaments and finishe
   for (const FinishedRegion& f : d.finished) area += f.region.area();
   CHECK(area == Approx(plate.area()).epsilon(1e-7));
   // Without the division the search finishes the plate too, by scoring cuts.
+  RegionEpisodeOptions mesh;
+  mesh.reward = RewardPreset::Mesh;
+  RegionSearchOptions options;
   options.divide_holes = false;
   options.time_limit = 2.0;
-  RegionSearchPolicy searched(options);
-  CHECK(decompose_region(plate, searched, mesh).complete());
+  RegionSearchPolicy undivided(options);
+  CHECK(decompose_region(plate, undivided, mesh).complete());
 }
 
 TEST_CASE("divide_sector cuts a square cell about each bolt hole of a wide sector, each an O-grid", "[region][division][arc]") {
@@ -336,4 +351,46 @@ TEST_CASE("divide_sector cuts a plate's long strip at its hole's cell ends where
   const Region tight(outer, {round_hole(turned({10, 14}, angle), 7.0)}, kQ);
   CHECK_FALSE(ogrid_template(tight));
   CHECK_FALSE(divide_sector(tight).has_value());
+}
+
+TEST_CASE("the search divides a division's part of two holes with room between them, not two holes close together",
+          "[region][division][search][arc]") {
+  // A plate 40 by 10 with four holes of radius 2.5 in a row: divide_holes halves it, leaving two
+  // strips 20 by 10 of two holes each (no centre of arcs, each hole's cell as long as the strip is
+  // wide: divide_sector has nothing). divide_holes's line between a strip's holes leaves each a
+  // clearance of a radius: room for both O-grids. The search takes it and finishes four O-grid cells.
+  const Region plate = perforated_plate(4, 1, 10.0, 2.5, 0.3);
+  RegionEpisodeOptions mesh;
+  mesh.reward = RewardPreset::Mesh;
+  RegionSearchOptions options;
+  options.time_limit = 0.0;  // no clock: the same decomposition every run
+  RegionSearchPolicy search(options);
+  RegionEpisode episode(plate, mesh);
+  episode.step(search.choose(episode));
+  const Region strip = episode.current_part();
+  REQUIRE(strip.holes().size() == 2);
+  REQUIRE_FALSE(divide_sector(strip).has_value());
+  const std::optional<HoleDivision> roomy = divide_holes(strip, std::nullopt, true);
+  REQUIRE(roomy.has_value());
+  const RegionAction second = search.choose(episode);
+  CHECK(second.kind == RegionAction::Kind::Cut);
+  CHECK(second.cut.origin == roomy->cut.origin);
+  CHECK(second.cut.direction == roomy->cut.direction);
+  const Searched searched = search_without_clock(plate);
+  const RegionDecomposition& d = searched.decomposition;
+  REQUIRE(d.complete());
+  REQUIRE(d.finished.size() == 4);
+  for (const FinishedRegion& f : d.finished) {
+    CHECK(f.is_template);
+    CHECK(f.region.holes().size() == 1);
+    CHECK(ogrid_template(f.region));
+  }
+  // The same holes 6 apart (a ligament of 1, a fifth of a radius on either side of a line between
+  // them): divide_holes would thread a line there, with no room for an O-grid; the roomy division
+  // refuses, and the search cuts the part itself.
+  const Region close(perforated_plate(2, 1, 10.0, 2.5, 0.3).outer(),
+                     {round_hole(turned({7, 5}, 0.3), 2.5), round_hole(turned({13, 5}, 0.3), 2.5)}, kQ);
+  REQUIRE_FALSE(divide_sector(close).has_value());
+  CHECK(divide_holes(close).has_value());
+  CHECK_FALSE(divide_holes(close, std::nullopt, true).has_value());
 }
