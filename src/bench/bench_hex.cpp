@@ -14,7 +14,9 @@
 // (Verdict's hex scaled Jacobian, irregular edges) and the conformity check (faces shared by two hexahedra, volume and surface area
 // the solid's, no inverted hexahedron) are the same code for both (hex_quality.h, hex_conformity.h);
 // a gmsh mesh with prisms (triangles left in its quad mesh) is not all-hex. Times are whole-process
-// wall times, paired per solid; the last column is the median of the per-solid ratios.
+// wall times, paired per solid; the last column is the median of the per-solid ratios. With --keep DIR
+// the solids (solidK.brep), their caps (capK.brep) and AutoBlock's reports (reportK.json) stay in DIR,
+// K numbering the solids as generated: two runs' reports pair per solid.
 #include <unistd.h>
 
 #include <algorithm>
@@ -275,9 +277,13 @@ int main(int argc, char** argv) {
   app.add_option("--arcs", arcs, "extrusions of faces with circular arcs (`autoblock generate --kind arcs`: fillets, "
                  "round holes, slots; normal sweeps, their sides cylinders)")->capture_default_str();
   app.add_option("--seed", seed, "generator seed")->capture_default_str();
+  std::string keep;
+  app.add_option("--keep", keep, "keep every solid (solidK.brep), its cap (capK.brep) and AutoBlock's report (reportK.json) "
+                 "in this folder (default: a temporary folder)");
   CLI11_PARSE(app, argc, argv);
   const std::string autoblock = (std::filesystem::path(argv[0]).parent_path() / "autoblock").string();
-  const std::string folder = (std::filesystem::temp_directory_path() / ("autoblock-bench-hex-" + std::to_string(::getpid()))).string();
+  const std::string folder =
+      keep.empty() ? (std::filesystem::temp_directory_path() / ("autoblock-bench-hex-" + std::to_string(::getpid()))).string() : keep;
   std::filesystem::create_directories(folder);
   std::mt19937_64 rng(seed);
   std::vector<Solid> rectilinear, polygons;
