@@ -383,12 +383,12 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     merge_arc_chains(m, face.arcs);
     return m;
   };
-  bool snap = model.snapped_feet > 0;  // the model kept has feet made one
+  // (model is result's block model: whether its feet are made one is its snapped_feet, whichever
+  // model is kept below.)
   try {
     assign_arc_intervals(result, model, options, h, tolerance, minima.chord, {});
   } catch (const NoIntervalAssignment&) {
-    if (!snap) throw;
-    snap = false;
+    if (model.snapped_feet == 0) throw;
     result.block_model = unsnapped_model();
     minima = arc_minima(result.block_model, face.arcs, tip_steps);
     assign_arc_intervals(result, model, options, h, tolerance, minima.chord, {});
@@ -443,17 +443,14 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     result.mesh_seconds += since(start);
     return kept;
   };
-  if (snap) {
+  if (model.snapped_feet > 0) {
     // Feet made one move pieces and take edges from the program: the model as the templates place
     // them can mesh better (60 unseen flanges, the feet made one always: 15 rose, and 8 fell by
     // 0.006-0.12).
     MeshResult again;
     again.block_model = unsnapped_model();
     const ArcMinima again_minima = arc_minima(again.block_model, face.arcs, tip_steps);
-    if (remake(again, again.block_model, again_minima.chord, {}, true)) {
-      snap = false;
-      minima = again_minima;
-    }
+    if (remake(again, again.block_model, again_minima.chord, {}, true)) minima = again_minima;
   }
   if (options.arc_targets && minima.relaxable && poor()) {
     MeshResult again;  // its intervals, mesh and smoothing (of result's block model)
@@ -467,7 +464,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
         return f.is_template && two_corner_improves(f.region, d.rules);
       })) {
     MeshResult again;
-    again.block_model = block_model(d, d.rules, q, true, snap);
+    again.block_model = block_model(d, d.rules, q, true, model.snapped_feet > 0);
     merge_arc_chains(again.block_model, face.arcs);
     const ArcMinima again_minima = arc_minima(again.block_model, face.arcs, tip_steps);
     if (remake(again, again.block_model, again_minima.chord, {}, true)) {
