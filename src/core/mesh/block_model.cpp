@@ -72,27 +72,37 @@ struct LoopPiece {
 // as its vertex: a foot, an inner point), nearer another part's vertex than kFootSnap times the
 // shortest piece side at either, each on the line of a piece side at the other, is taken to be
 // that vertex (the nearest such; snapped vertices move on together).
+// With far, a vertex a fair way from the other (within kFarFootSnap of the longest piece side at
+// either) is taken to be it too, where no vertex of its pieces lies between them or within the
+// distance beyond, and every piece with it as a corner keeps its quadrilateral of corners convex,
+// its least sine above sin(20 degrees) and kFarFootShape of what it was.
 // Inputs:  pieces, their loops as ids into vertices; movable, per vertex (a template's own); tolerance,
-//          how far off a side's line a point may lie and be on it.
+//          how far off a side's line a point may lie and be on it; far, as above.
 // Outputs: pieces with the snapped vertices replaced (a loop's repeats dropped, its corners kept);
 //          vertices without those no loop uses any more (ids renumbered); the number snapped.
 int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices, const std::vector<char>& movable,
-                   double tolerance) {
+                   double tolerance, bool far) {
   const size_t n = vertices.size();
-  std::vector<double> shortest(n, std::numeric_limits<double>::infinity());
+  std::vector<double> shortest(n, std::numeric_limits<double>::infinity()), longest(n, 0.0);
   std::vector<std::vector<int>> neighbours(n), parts(n);
-  for (const LoopPiece& piece : pieces) {
+  // The pieces with a vertex as a corner: (piece, corner number).
+  std::vector<std::vector<std::pair<size_t, int>>> cornered(n);
+  for (size_t p = 0; p < pieces.size(); ++p) {
+    const LoopPiece& piece = pieces[p];
     const size_t m = piece.loop.size();
     for (size_t i = 0; i < m; ++i) {
       const int a = piece.loop[i], b = piece.loop[(i + 1) % m];
       const Point2 pa = vertices[static_cast<size_t>(a)], pb = vertices[static_cast<size_t>(b)];
       const double length = std::hypot(pb.x - pa.x, pb.y - pa.y);
-      shortest[static_cast<size_t>(a)] = std::min(shortest[static_cast<size_t>(a)], length);
-      shortest[static_cast<size_t>(b)] = std::min(shortest[static_cast<size_t>(b)], length);
+      for (const int v : {a, b}) {
+        shortest[static_cast<size_t>(v)] = std::min(shortest[static_cast<size_t>(v)], length);
+        longest[static_cast<size_t>(v)] = std::max(longest[static_cast<size_t>(v)], length);
+      }
       neighbours[static_cast<size_t>(a)].push_back(b);
       neighbours[static_cast<size_t>(b)].push_back(a);
       parts[static_cast<size_t>(a)].push_back(piece.part);
     }
+    for (int k = 0; k < 4; ++k) cornered[static_cast<size_t>(piece.loop[static_cast<size_t>(piece.corners[static_cast<size_t>(k)])])].emplace_back(p, k);
   }
   for (auto& p : parts) {
     std::sort(p.begin(), p.end());
@@ -120,13 +130,47 @@ int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices
     while (to[static_cast<size_t>(v)] != v) v = to[static_cast<size_t>(v)];
     return v;
   };
+  auto at = [&](int v) { return vertices[static_cast<size_t>(root(v))]; };
+  // The least sine of the quadrilateral of corners of piece p, its corner k at `moved` (the others
+  // where they are now); negative where it does not turn counter-clockwise at every corner.
+  auto least_sine = [&](size_t p, int k, Point2 moved) {
+    const LoopPiece& piece = pieces[p];
+    std::array<Point2, 4> q;
+    for (int c = 0; c < 4; ++c) q[static_cast<size_t>(c)] = c == k ? moved : at(piece.loop[static_cast<size_t>(piece.corners[static_cast<size_t>(c)])]);
+    double least = 1.0;
+    for (size_t c = 0; c < 4; ++c) {
+      const Point2 o = q[c], a = q[(c + 1) % 4], b = q[(c + 3) % 4];
+      const double ax = a.x - o.x, ay = a.y - o.y, bx = b.x - o.x, by = b.y - o.y;
+      const double length = std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by));
+      least = std::min(least, length > 0.0 ? (ax * by - ay * bx) / length : -1.0);
+    }
+    return least;
+  };
+  // v may move to `to_point` d away: no vertex next to it in a loop lies towards it closer than 2 d,
+  // and its pieces keep their shapes.
+  const double least_shape = std::sin(20.0 * M_PI / 180.0);
+  auto far_move_keeps = [&](int v, Point2 to_point, double d) {
+    const Point2 from = at(v);
+    const double ux = (to_point.x - from.x) / d, uy = (to_point.y - from.y) / d;
+    for (int w : neighbours[static_cast<size_t>(v)]) {
+      const Point2 pw = at(w);
+      const double t = (pw.x - from.x) * ux + (pw.y - from.y) * uy;
+      const double off = std::fabs((pw.x - from.x) * uy - (pw.y - from.y) * ux);
+      if (off <= tolerance && t > 0.0 && t < 2.0 * d) return false;
+    }
+    for (const auto& [p, k] : cornered[static_cast<size_t>(v)]) {
+      const double before = least_sine(p, k, from), after = least_sine(p, k, to_point);
+      if (after < least_shape || after < kFarFootShape * before) return false;
+    }
+    return true;
+  };
   int snapped = 0;
   for (size_t i = 0; i < n; ++i) {
     const int v = order[i];
     const size_t vi = static_cast<size_t>(v);
     if (!movable[vi] || parts[vi].empty()) continue;
     const Point2 pv = vertices[vi];
-    const double reach = kFootSnap * shortest[vi];
+    const double reach = far ? kFarFootSnap * longest[vi] : kFootSnap * shortest[vi];
     int best = -1;
     double best_distance = std::numeric_limits<double>::infinity();
     for (int step : {-1, 1}) {
@@ -135,9 +179,17 @@ int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices
         const Point2 pu = vertices[static_cast<size_t>(u)];
         if (std::fabs(pu.x - pv.x) > reach) break;
         const double d = std::hypot(pu.x - pv.x, pu.y - pv.y);
-        if (d >= best_distance || d > kFootSnap * std::min(shortest[vi], shortest[static_cast<size_t>(u)])) continue;
+        if (d >= best_distance) continue;
+        const size_t ui = static_cast<size_t>(u);
+        const bool near = d <= kFootSnap * std::min(shortest[vi], shortest[ui]);
+        if (!near && !(far && d <= kFarFootSnap * std::min(longest[vi], longest[ui]))) continue;
         const int r = root(u);
         if (r == v || !disjoint(parts[vi], parts[static_cast<size_t>(r)]) || !on_side_line(u, v) || !on_side_line(v, u)) continue;
+        if (!near) {
+          const Point2 pr = vertices[static_cast<size_t>(r)];
+          const double dr = std::hypot(pr.x - pv.x, pr.y - pv.y);
+          if (!(dr > 0.0) || !far_move_keeps(v, pr, dr)) continue;
+        }
         best = r;
         best_distance = d;
       }
@@ -183,7 +235,7 @@ double BlockModel::side_length(const ModelSide& side) const {
 }
 
 BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, double quantum, bool two_corner,
-                       bool snap_feet) {
+                       FeetSnap snap) {
   if (!d.complete()) throw std::logic_error("block_model: the decomposition is incomplete");
   if (!(quantum > 0.0)) throw std::logic_error("block_model: the quantum must be positive");
   BlockModel model;
@@ -237,7 +289,8 @@ BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, do
 
   // A vertex a template makes may move (snap_near_feet); a part's own vertices, and every vertex of a
   // block part, stay.
-  if (snap_feet) {
+  model.feet = snap;
+  if (snap != FeetSnap::placed) {
     std::vector<char> movable(model.vertices.size(), 1);
     for (const LoopPiece& piece : pieces) {
       if (piece.from_template) continue;
@@ -253,7 +306,7 @@ BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, do
       fix(part.region.outer());
       for (const Ring& hole : part.region.holes()) fix(hole);
     }
-    model.snapped_feet = snap_near_feet(pieces, model.vertices, movable, tolerance);
+    model.snapped_feet = snap_near_feet(pieces, model.vertices, movable, tolerance, snap == FeetSnap::far);
   }
 
   // Imprint: every vertex on the inside of a loop's segment goes into the loop, in order along it.

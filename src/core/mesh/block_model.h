@@ -27,9 +27,21 @@ namespace autoblock {
 // 2.2 quanta on a face with a hole). The mesh's conformity is checked to the same tolerance.
 constexpr double kModelToleranceQuanta = 3.0;
 
-// Feet a hair apart (block_model's snap_feet): nearer than this share of the shortest piece side at
-// either.
+// Feet a hair apart (block_model's FeetSnap::near): nearer than this share of the shortest piece side
+// at either.
 constexpr double kFootSnap = 0.05;
+// Feet a fair way apart (FeetSnap::far): nearer than this share of the longest piece side at either,
+// where the move leaves the pieces' shapes (kFarFootShape) and order along the side.
+constexpr double kFarFootSnap = 0.4;
+// A piece whose foot moves keeps the least sine of its quadrilateral of corners above sin(20 degrees)
+// and this share of what it was.
+constexpr double kFarFootShape = 0.7;
+
+// How block_model treats two templates' feet on the side their parts share: as the templates place
+// them (placed); a hair apart made one (near); and, where the pieces keep their shapes, a fair way
+// apart made one too (far: round a ring of templates, feet placed each from its own part admit no
+// interval counts that balance).
+enum class FeetSnap { placed, near, far };
 
 struct ModelEdge {
   int a = 0, b = 0;  // vertex ids; the edge runs from a to b
@@ -58,7 +70,8 @@ struct BlockModel {
   std::vector<ModelEdge> edges;
   std::vector<ModelBlock> blocks;
   int parts = 0;  // finished parts
-  int snapped_feet = 0;  // template vertices made one with a neighbour's (block_model's snap_feet)
+  FeetSnap feet = FeetSnap::placed;  // how it was made (block_model's snap)
+  int snapped_feet = 0;  // template vertices made one with a neighbour's (block_model's snap)
 
   // Inputs: side. Output: its length, the sum of its edges'.
   double side_length(const ModelSide& side) const;
@@ -66,15 +79,17 @@ struct BlockModel {
 
 // Inputs:  decomposition, complete; rules, the block rules it was made with (side vertices);
 //          quantum, the face's lattice spacing (Region::quantum); two_corner, as template_pieces
-//          takes it (block.h); snap_feet: two templates' feet on the side their parts share, a
-//          hair apart (within kFootSnap of the shortest piece side at either), made one (one moves
-//          to the other, along the side; a part's own vertices never move).
+//          takes it (block.h); snap: two templates' feet on the side their parts share, a hair
+//          apart (within kFootSnap of the shortest piece side at either), made one (near), and those
+//          a fair way apart too (far: within kFarFootSnap of the longest piece side at either, the
+//          pieces that move keeping kFarFootShape of their shape and their order along the side);
+//          one moves to the other, along the side; a part's own vertices never move.
 // Outputs: the model above, blocks part by part in the decomposition's order (a template's pieces
 //          in template_pieces's order).
 // Throws std::logic_error when the pieces do not fit together (an edge used by more than two
 // pieces, a corner lost).
 BlockModel block_model(const RegionDecomposition& decomposition, const BlockRules& rules, double quantum,
-                       bool two_corner = false, bool snap_feet = true);
+                       bool two_corner = false, FeetSnap snap = FeetSnap::near);
 
 // Along an arc of the face's boundary every sample of its polygon is a model vertex, so each chord
 // would get its own whole number of intervals and the nodes would bunch where chords round up. This

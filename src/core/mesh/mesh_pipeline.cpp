@@ -360,11 +360,13 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
 
   // Intervals first: an infeasible request fails before the slower CAD work.
   auto start = std::chrono::steady_clock::now();
-  // The block model with templates' feet a hair apart made one (block_model's snap_feet). Where its
-  // blocks admit no counts, the model as the templates place them: round a ring of parts, hair-thin
+  // The block model with templates' feet a hair apart made one (block_model's FeetSnap::near). Where
+  // its blocks admit no counts, the model as the templates place them: round a ring of parts, hair-thin
   // edges between two templates' feet can be what cannot balance (all of them), or what lets the
   // counts balance (those left where others were made one). Where both mesh, the better mesh is kept
-  // (below).
+  // (below). Where neither does, the model with feet a fair way apart made one too (FeetSnap::far): a
+  // hole's cell cut into quarters through the hole, each quarter a template, puts its feet on the
+  // cuts a twentieth of a side apart, and round the hole those edges cannot balance.
   result.block_model = block_model(d, d.rules, q);
   merge_arc_chains(result.block_model, face.arcs);
   // An edge along an arc gets at least one interval per chord step of the arc: a quad's edge along the
@@ -378,20 +380,34 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   const std::vector<std::array<double, 2>> tip_steps = acute_tip_steps(loops, face.arcs, kTipShare);
   ArcMinima minima = arc_minima(result.block_model, face.arcs, tip_steps);
   const BlockModel& model = result.block_model;
-  auto unsnapped_model = [&] {
-    BlockModel m = block_model(d, d.rules, q, false, false);
+  auto snapped_model = [&](FeetSnap snap) {
+    BlockModel m = block_model(d, d.rules, q, false, snap);
     merge_arc_chains(m, face.arcs);
     return m;
   };
-  // (model is result's block model: whether its feet are made one is its snapped_feet, whichever
+  // (model is result's block model: how its feet are made one is its feet and snapped_feet, whichever
   // model is kept below.)
   try {
     assign_arc_intervals(result, model, options, h, tolerance, minima.chord, {});
   } catch (const NoIntervalAssignment&) {
-    if (model.snapped_feet == 0) throw;
-    result.block_model = unsnapped_model();
-    minima = arc_minima(result.block_model, face.arcs, tip_steps);
-    assign_arc_intervals(result, model, options, h, tolerance, minima.chord, {});
+    bool assigned = false;
+    if (model.snapped_feet > 0) {
+      result.block_model = snapped_model(FeetSnap::placed);
+      minima = arc_minima(result.block_model, face.arcs, tip_steps);
+      try {
+        assign_arc_intervals(result, model, options, h, tolerance, minima.chord, {});
+        assigned = true;
+      } catch (const NoIntervalAssignment&) {
+        // the far model below
+      }
+    }
+    if (!assigned) {
+      BlockModel far = snapped_model(FeetSnap::far);
+      if (far.snapped_feet == 0) throw;  // the model as placed, which admits none
+      result.block_model = std::move(far);
+      minima = arc_minima(result.block_model, face.arcs, tip_steps);
+      assign_arc_intervals(result, model, options, h, tolerance, minima.chord, {});
+    }
   }
   result.interval_seconds = since(start);
 
@@ -443,12 +459,12 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
     result.mesh_seconds += since(start);
     return kept;
   };
-  if (model.snapped_feet > 0) {
+  if (model.feet == FeetSnap::near && model.snapped_feet > 0) {
     // Feet made one move pieces and take edges from the program: the model as the templates place
     // them can mesh better (60 unseen flanges, the feet made one always: 15 rose, and 8 fell by
-    // 0.006-0.12).
+    // 0.006-0.12). (The far model is made only where the model as placed admits no counts.)
     MeshResult again;
-    again.block_model = unsnapped_model();
+    again.block_model = snapped_model(FeetSnap::placed);
     const ArcMinima again_minima = arc_minima(again.block_model, face.arcs, tip_steps);
     if (remake(again, again.block_model, again_minima.chord, {}, true)) minima = again_minima;
   }
@@ -464,7 +480,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
         return f.is_template && two_corner_improves(f.region, d.rules);
       })) {
     MeshResult again;
-    again.block_model = block_model(d, d.rules, q, true, model.snapped_feet > 0);
+    again.block_model = block_model(d, d.rules, q, true, model.snapped_feet > 0 ? model.feet : FeetSnap::placed);
     merge_arc_chains(again.block_model, face.arcs);
     const ArcMinima again_minima = arc_minima(again.block_model, face.arcs, tip_steps);
     if (remake(again, again.block_model, again_minima.chord, {}, true)) {

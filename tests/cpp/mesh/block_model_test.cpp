@@ -167,7 +167,7 @@ TEST_CASE("block model: two templates' feet a hair apart on their shared side ar
   };
   SECTION("a hair apart: one foot") {
     const RegionDecomposition d = triangles(5.05);
-    const BlockModel as_placed = block_model(d, BlockRules{}, kQ, false, false);
+    const BlockModel as_placed = block_model(d, BlockRules{}, kQ, false, FeetSnap::placed);
     check_pieces(as_placed);
     CHECK(as_placed.snapped_feet == 0);
     // The two feet and the hair-thin edge between them.
@@ -195,8 +195,61 @@ TEST_CASE("block model: two templates' feet a hair apart on their shared side ar
   SECTION("a fair way apart: both feet") {
     const BlockModel m = block_model(triangles(8.0), BlockRules{}, kQ);
     check_pieces(m);
+    CHECK(m.feet == FeetSnap::near);
     CHECK(m.snapped_feet == 0);
     CHECK(m.vertices.size() == 12);
     CHECK(shortest_edge(m) > 0.05 * 5.0);
+  }
+  SECTION("a fair way apart, made one by the far snap where the pieces keep their shape") {
+    // The upper foot at x = 5, the lower one at 5.32 (the incentre of (10, 0), (0, 0), (5.5, -6)):
+    // beyond the near snap (5 % of the upper spoke, 2.34), within 0.4 of the pieces' sides along the
+    // shared side (5 and 5.32).
+    const RegionDecomposition d = triangles(5.5);
+    CHECK(block_model(d, BlockRules{}, kQ).snapped_feet == 0);
+    const BlockModel far = block_model(d, BlockRules{}, kQ, false, FeetSnap::far);
+    check_pieces(far);
+    CHECK(far.feet == FeetSnap::far);
+    CHECK(far.snapped_feet == 1);
+    CHECK(far.vertices.size() == 11);
+    // The foot that moved (the upper triangle's, first along x) stands on the other.
+    int on_side = 0;
+    for (const Point2& v : far.vertices) {
+      if (std::fabs(v.y) > 1e-9) continue;
+      ++on_side;
+      const double a = std::hypot(5.5, 6.0);  // the lower triangle's side opposite (10, 0)
+      if (v.x > 0.0 && v.x < 10.0) CHECK(v.x == Approx((10.0 * a + 10.0 * 5.5) / (a + 7.5 + 10.0)).margin(1e-3));
+    }
+    CHECK(on_side == 3);
+    // Every piece keeps a convex quadrilateral of corners: the upper piece at (0, 0) opens at its
+    // centre from 130 to 138 degrees (a sine of 0.67, against 0.77).
+    for (const ModelBlock& block : far.blocks) {
+      std::array<Point2, 4> q;
+      for (size_t k = 0; k < 4; ++k) {
+        const ModelSide& side = block.sides[k];
+        const ModelEdge& e = far.edges[static_cast<size_t>(side.edges.front())];
+        q[k] = far.vertices[static_cast<size_t>(side.forward.front() ? e.a : e.b)];
+      }
+      for (size_t k = 0; k < 4; ++k) {
+        const Point2 o = q[k], a = q[(k + 1) % 4], b = q[(k + 3) % 4];
+        const double sine = ((a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x)) /
+                            (std::hypot(a.x - o.x, a.y - o.y) * std::hypot(b.x - o.x, b.y - o.y));
+        CHECK(sine > 0.55);
+      }
+    }
+  }
+  SECTION("the far snap refuses a move that would distort a piece") {
+    // The lower foot at 6.84 (apex (8, -6)): 1.84 apart, within 0.4 of the sides of 5, but the upper
+    // piece at (0, 0) would open at its centre to 168 degrees (a sine of 0.2).
+    const BlockModel far = block_model(triangles(8.0), BlockRules{}, kQ, false, FeetSnap::far);
+    check_pieces(far);
+    CHECK(far.snapped_feet == 0);
+    CHECK(far.vertices.size() == 12);
+  }
+  SECTION("too far apart for the far snap: both feet") {
+    // The lower foot at 7.49: 2.49 apart, beyond 0.4 of the upper pieces' sides of 5.
+    const BlockModel far = block_model(triangles(9.5), BlockRules{}, kQ, false, FeetSnap::far);
+    check_pieces(far);
+    CHECK(far.snapped_feet == 0);
+    CHECK(far.vertices.size() == 12);
   }
 }
