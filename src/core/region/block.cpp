@@ -14,10 +14,9 @@ namespace autoblock {
 namespace {
 
 constexpr double kDegree = M_PI / 180.0;
-// The O-grid template (block.h): the corners' least angle (and 180 less it, the largest), and the
-// room between the hole and every side, in the hole's radii.
+// The O-grid template (block.h): the corners' least angle (and 180 less it, the largest); the room
+// between the hole and every side is kOgridClearance (block.h).
 constexpr double kOgridMinCorner = 60.0;
-constexpr double kOgridClearance = 0.5;
 constexpr double kOgridSideTurn = 60.0;  // the most a side may bend along an arc, degrees in all
 constexpr double kOgridCurvedPatch = 0.45;  // the least Coons patch Jacobian of its pieces with curved sides
 constexpr double kOgridCurvedBeyond = 1.5;  // how far beyond the hole its box may lie with curved sides, in radii

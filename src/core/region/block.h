@@ -177,6 +177,11 @@ bool two_corner_improves(const Region& region, const BlockRules& rules = {});
 // where the box line through the box corner meets the side instead.
 // Inputs: region; rules. Output: true when the O-grid template applies (template_pieces makes it).
 bool ogrid_template(const Region& region, const BlockRules& rules = {});
+// The O-grid's room between the hole and every side of its part, in the hole's radii (divide_holes'
+// roomy lines leave both holes that much, hole_division.h). 0.35 for the O-grid alone was measured and
+// not kept: the 30 flanges fell from 0.8564 to 0.8513, and a perforated plate's every try admitted no
+// interval counts.
+constexpr double kOgridClearance = 0.5;
 
 // Inputs:  region, convex (template_applies); rules (which vertices are side vertices).
 // Outputs: the template's quadrilaterals, one per corner of the region, each counter-clockwise

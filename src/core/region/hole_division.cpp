@@ -26,9 +26,6 @@ constexpr double kConcentricShare = 0.1;  // divide_sector's least share for two
 constexpr double kConcentricApart = 1.2;  // their radii at least this far apart (a ratio)
 constexpr double kArcStep = 0.5;        // the longest segment (times the radius) of a vertex voting for its circle
 constexpr double kRadialClearance = 0.5;  // a radial line keeps this times a hole's radius from it
-// A gap whose clearance is at least this (times the larger radius beside it) leaves both holes room for
-// their O-grids (block.cpp's room on every side); divide_holes with roomy takes no other.
-constexpr double kRoomyClearance = 0.5;
 constexpr double kSectorLeast = 0.25;     // divide_sector's least piece, in the hole's square cells
 constexpr double kCellLong = 1.5;         // divide_sector cuts a cell's ends where the part is this much deeper than wide
 
@@ -533,7 +530,7 @@ std::optional<HoleDivision> divide_holes(const Region& part, std::optional<Point
           Gap gap;
           gap.direction = u;
           gap.offset = 0.5 * (reach + extent[j].lo);
-          gap.roomy = clearance >= kRoomyClearance;
+          gap.roomy = clearance >= kOgridClearance;  // room for both holes' O-grids (block.h)
           gap.aligned = aligned;
           gap.smaller_side = static_cast<int>(std::min(j, k - j));
           gap.clearance = clearance;
@@ -598,7 +595,7 @@ std::optional<HoleDivision> divide_holes(const Region& part, std::optional<Point
       gap.direction = u;
       gap.offset = offset;
       gap.radial = true;
-      gap.roomy = clearance >= kRoomyClearance;
+      gap.roomy = clearance >= kOgridClearance;  // room for both holes' O-grids (block.h)
       gap.smaller_side = std::min(below, above);
       gap.clearance = clearance;
       gaps.push_back(gap);
