@@ -100,7 +100,10 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
       tries.resize(1);
     }
     for (size_t k = 0; k < tries.size(); ++k) {
-      if (have && ratio(out.result) >= kRetryBelow) break;
+      // (A mesh on the far feet's block model, FeetSnap::far, is of a try whose blocks admit no counts
+      // otherwise: it ends no tries. Where it did, a 16-hole flange kept its first try's 0.894 in
+      // 0.22 s, not its third's 0.929 in 1.16 s, and a plate of holes 0.873 against 0.905.)
+      if (have && ratio(out.result) >= kRetryBelow && !out.result.block_model.far_feet()) break;
       // A face whose searches run out of time (hundreds of parts: a plate with scores of holes) has
       // spent what further tries would: the mesh made stands.
       if (have && time_limit > 0.0 &&

@@ -38,7 +38,8 @@ struct FaceMeshing {
 //          reports it: FaceMeshing::result.conformity). A general face searched (auto, search) is
 //          searched by the tries of kSearchTries in order, cheapest first, until one's mesh reaches
 //          kRetryBelow of the face's topology bound (topology_jacobian_bound: what its corners, holes
-//          and arcs allow); a try's mesh below it is meshed again with at least two intervals per
+//          and arcs allow) on a block model other than the far feet's (block_model.h: a try whose
+//          blocks admit no counts otherwise, which a later try may mesh better); a try's mesh below it is meshed again with at least two intervals per
 //          model edge; the conformal mesh with the best minimum scaled Jacobian is kept (attempts,
 //          search_width, corner_fraction, cut_smooth_parts and min_edge_intervals say what was
 //          kept). Each search has the time limit; once a try has meshed and the face has taken

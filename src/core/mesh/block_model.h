@@ -75,6 +75,8 @@ struct BlockModel {
 
   // Inputs: side. Output: its length, the sum of its edges'.
   double side_length(const ModelSide& side) const;
+  // Output: true when feet a fair way apart were made one (FeetSnap::far, a foot moved).
+  bool far_feet() const { return feet == FeetSnap::far && snapped_feet > 0; }
 };
 
 // Inputs:  decomposition, complete; rules, the block rules it was made with (side vertices);

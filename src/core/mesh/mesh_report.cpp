@@ -78,7 +78,7 @@ nlohmann::json mesh_report_json(const std::string& input, const RegionDecomposit
   report["two_corner_templates"] = r.two_corner;
   report["acute_tips"] = r.acute_tips;
   report["feet_snapped"] = r.block_model.snapped_feet > 0;  // the kept model's (block_model's snap)
-  report["far_feet"] = r.block_model.feet == FeetSnap::far && r.block_model.snapped_feet > 0;
+  report["far_feet"] = r.block_model.far_feet();
   report["smoothing"] = {{"sweeps", r.smoothing.sweeps},
                          {"moves", r.smoothing.moves},
                          {"min_scaled_jacobian_before", r.smoothing.min_before}};

@@ -557,11 +557,13 @@ TEST_CASE("where neither the feet made one nor the feet as placed admit counts, 
   // into quarters through the hole, each quarter a template whose feet on the cuts stand 0.02-0.05
   // from its neighbour's (sides of about 0.3). Round the hole those edges admit no counts, nor do
   // they once the feet a hair apart are made one: six of seven tries failed, and the one that meshed
-  // fanned at the plate's rounded top (0.052). Feet a fair way apart made one mesh an early try
-  // (0.816 measured).
+  // fanned at the plate's rounded top (0.052). Feet a fair way apart made one mesh the second try
+  // (0.816 measured), the best of the tries (a mesh on them ends no tries: a later one may mesh
+  // without them).
   const FaceMeshing m = meshed_arc_face("rounded-plate-two-holes");
-  CHECK(m.attempts <= 2);
   CHECK(m.result.block_model.feet == FeetSnap::far);
+  CHECK(m.result.block_model.far_feet());
+  CHECK(m.attempts > 2);  // its 0.86 of the topology bound would have ended the tries at the second
   CHECK(m.result.block_model.snapped_feet > 0);
   CHECK(face_meshing_json("rounded-plate-two-holes", m)["far_feet"] == true);
   CHECK(m.result.quality.min_scaled_jacobian > 0.7);
