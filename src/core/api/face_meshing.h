@@ -34,26 +34,27 @@ struct FaceMeshing {
 // Inputs:  face, a checked face; settings (the policy and its options; occt_blocks is ignored: the
 //          mesh pipeline replays the cuts itself); options (size, fixed intervals, quad limit; the
 //          episode options are set from settings).
-// Outputs: the decomposition and its mesh, returned even when the conformity check fails (the caller
-//          reports it: FaceMeshing::result.conformity). A general face searched (auto, search) is
-//          searched by the tries of kSearchTries in order, cheapest first, until one's mesh reaches
-//          kRetryBelow of the face's topology bound (topology_jacobian_bound: what its corners, holes
-//          and arcs allow) on a block model other than the far feet's (block_model.h: a try whose
-//          blocks admit no counts otherwise, which a later try may mesh better); a try's mesh below it is meshed again with at least two intervals per
-//          model edge; the conformal mesh with the best minimum scaled Jacobian is kept (attempts,
+// Outputs: the decomposition and its mesh, returned even when the conformity check fails (the
+//          caller reports it: FaceMeshing::result.conformity). A general face searched (auto,
+//          search) is searched by the tries of kSearchTries in order, cheapest first, until one's
+//          mesh reaches kRetryBelow of the face's topology bound (topology_jacobian_bound: what its
+//          corners, holes and arcs allow) on a block model other than the far feet's
+//          (block_model.h: a try whose blocks admit no counts otherwise, which a later try may mesh
+//          better); a try's mesh below it is meshed again with at least two intervals per model
+//          edge; the conformal mesh with the best minimum scaled Jacobian is kept (attempts,
 //          search_width, corner_fraction, cut_smooth_parts and min_edge_intervals say what was
 //          kept). Each search has the time limit; once a try has meshed and the face has taken
-//          kTriesTimeLimits times it, no further try is made. A search whose blocks fail to mesh (no interval counts for them, say: a
-//          rare web of templates whose sides' counts contradict), or that leaves a part unfinished,
-//          is skipped. When every try fails, the first try is made once more without dividing the
-//          parts with many holes first (hole_division.h: its cells, each meshable, can join into a
-//          ring of blocks around a hole whose counts contradict); the first failure is thrown when
-//          that fails too. Another policy makes one
-//          decomposition; when its blocks do not mesh, the search's tries are made instead
-//          (RegionDecomposition::fallback_from, fallback_reason; the report's "policy_fallback"). A
-//          width set in settings
-//          makes the first try (the others follow, those of that width and rules left out).
-//          A general face's OpenCASCADE model (options.occt_model) is made of the kept blocks only.
+//          kTriesTimeLimits times it, no further try is made. A search whose blocks fail to mesh
+//          (no interval counts for them, say: a rare web of templates whose sides' counts
+//          contradict), or that leaves a part unfinished, is skipped. When every try fails, the
+//          first try is made once more without dividing the parts with many holes first
+//          (hole_division.h: its cells, each meshable, can join into a ring of blocks around a hole
+//          whose counts contradict); the first failure is thrown when that fails too. Another
+//          policy makes one decomposition; when its blocks do not mesh, the search's tries are made
+//          instead (RegionDecomposition::fallback_from, fallback_reason; the report's
+//          "policy_fallback"). A width set in settings makes the first try (the others follow,
+//          those of that width and rules left out). A general face's OpenCASCADE model
+//          (options.occt_model) is made of the kept blocks only.
 // Throws InputError for a bad policy, reward or request (see decompose_input_face, mesh_decomposition).
 //
 // Why narrow searches first: the search's reward does not see every mesh defect, so searches of other
