@@ -85,8 +85,9 @@ int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices
   const size_t n = vertices.size();
   std::vector<double> shortest(n, std::numeric_limits<double>::infinity()), longest(n, 0.0);
   std::vector<std::vector<int>> neighbours(n), parts(n);
-  // The pieces with a vertex as a corner: (piece, corner number).
-  std::vector<std::vector<std::pair<size_t, int>>> cornered(n);
+  // The pieces with a vertex as a corner: (piece, corner number); the far snap's shape check alone
+  // reads them.
+  std::vector<std::vector<std::pair<size_t, int>>> cornered(far ? n : 0);
   for (size_t p = 0; p < pieces.size(); ++p) {
     const LoopPiece& piece = pieces[p];
     const size_t m = piece.loop.size();
@@ -102,6 +103,7 @@ int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices
       neighbours[static_cast<size_t>(b)].push_back(a);
       parts[static_cast<size_t>(a)].push_back(piece.part);
     }
+    if (!far) continue;
     for (int k = 0; k < 4; ++k) cornered[static_cast<size_t>(piece.loop[static_cast<size_t>(piece.corners[static_cast<size_t>(k)])])].emplace_back(p, k);
   }
   for (auto& p : parts) {
