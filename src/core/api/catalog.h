@@ -54,6 +54,7 @@ struct PolicySettings {
   int general_search_width = 0;     // the general search's candidates expanded per part (0: its default)
   bool general_divide_holes = true;  // the general search divides a part with many holes along its ligaments
                                      // before searching it (hole_division.h)
+  bool general_tight_ogrid = true;   // the general search may finish a tight cell with its O-grid (block.h)
 };
 
 // Inputs:  spec, a name of policy_names() or a policy file's path (empty: the default); settings.

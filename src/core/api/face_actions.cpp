@@ -57,6 +57,7 @@ std::unique_ptr<RegionPolicy> general_policy(const std::string& name, const Poli
     options.time_limit = settings.general_time_limit > 0 ? settings.general_time_limit : 0.0;
     if (settings.general_search_width > 0) options.width = settings.general_search_width;
     options.divide_holes = settings.general_divide_holes;
+    options.tight_ogrid = settings.general_tight_ogrid;
     if (own_reward) *own_reward = RewardPreset::Mesh;
     return std::make_unique<RegionSearchPolicy>(options);
   }

@@ -36,11 +36,11 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
   // The tries: kSearchTries, the first with the settings' block rules and width if set (the others
   // as listed, that one left out). A policy other than the search makes one decomposition, meshed once.
   const int set_width = settings.policy_settings.general_search_width;
-  std::vector<SearchTry> tries{
-      {set_width > 0 ? set_width : kSearchTries[0].width, settings.corner_fraction, settings.cut_smooth_parts}};
+  std::vector<SearchTry> tries{{set_width > 0 ? set_width : kSearchTries[0].width, settings.corner_fraction,
+                                settings.cut_smooth_parts, settings.policy_settings.general_tight_ogrid}};
   for (const SearchTry& t : kSearchTries) {
     if (t.width != tries[0].width || t.corner_fraction != tries[0].corner_fraction ||
-        t.cut_smooth_parts != tries[0].cut_smooth_parts) {
+        t.cut_smooth_parts != tries[0].cut_smooth_parts || t.tight_ogrid != tries[0].tight_ogrid) {
       tries.push_back(t);
     }
   }
@@ -57,6 +57,12 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
   auto ratio = [](const MeshResult& r) {
     return r.conformity.conformal ? r.quality.min_scaled_jacobian / r.topology_bound : -1e300;
   };
+  // A decomposition's O-grids in tight cells (block.h).
+  auto tight_ogrids = [](const RegionDecomposition& d) {
+    int count = 0;
+    for (const FinishedRegion& f : d.finished) count += f.is_template && tight_ogrid_template(f.region, d.rules);
+    return count;
+  };
   bool have = false;  // a try has meshed (out.result is its mesh)
   std::string fallback_from, fallback_reason;  // another policy's blocks that did not mesh
   std::exception_ptr first_error;
@@ -64,6 +70,7 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
   auto decompose_try = [&](size_t k) {
     decompose.corner_fraction = tries[k].corner_fraction;
     decompose.cut_smooth_parts = tries[k].cut_smooth_parts;
+    decompose.policy_settings.general_tight_ogrid = tries[k].tight_ogrid;
     decompose.policy_settings.general_search_width = tries[k].width;
     // (The replay takes its block rules from the decomposition: no options to change for it.)
     ++out.attempts;
@@ -111,6 +118,8 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
               kTriesTimeLimits * time_limit) {
         break;
       }
+      // A try without tight O-grids after one whose kept decomposition has none would repeat it.
+      if (have && !tries[k].tight_ogrid && tries[0].tight_ogrid && out.tight_ogrids == 0) continue;
       FaceDecomposition again = pass == 0 && k == 0 && first ? std::move(*first) : decompose_try(k);
       options.general.reward = again.region.reward;
       if (!again.region.complete() && (have || k + 1 < tries.size() || first_error)) {
@@ -160,6 +169,8 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
         out.cut_smooth_parts = tries[k].cut_smooth_parts;
         out.min_edge_intervals = min_edge_intervals;
         out.divide_holes = decompose.policy_settings.general_divide_holes;
+        out.tight_ogrid = tries[k].tight_ogrid;
+        out.tight_ogrids = tight_ogrids(out.decomposition.region);
         have = true;
       }
     }
@@ -198,6 +209,8 @@ nlohmann::json face_meshing_json(const std::string& input, const FaceMeshing& m)
   report["min_edge_intervals"] = m.min_edge_intervals;
   report["search_width"] = m.search_width;
   report["divide_holes"] = m.divide_holes;
+  report["tight_ogrid"] = m.tight_ogrid;
+  report["tight_ogrids"] = m.tight_ogrids;
   const RegionDecomposition& d = m.decomposition.region;
   if (!d.fallback_from.empty()) report["policy_fallback"] = {{"policy", d.fallback_from}, {"reason", d.fallback_reason}};
   return report;

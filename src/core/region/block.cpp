@@ -20,6 +20,13 @@ constexpr double kOgridMinCorner = 60.0;
 constexpr double kOgridSideTurn = 60.0;  // the most a side may bend along an arc, degrees in all
 constexpr double kOgridCurvedPatch = 0.45;  // the least Coons patch Jacobian of its pieces with curved sides
 constexpr double kOgridCurvedBeyond = 1.5;  // how far beyond the hole its box may lie with curved sides, in radii
+// A tight cell's O-grid (block.h): the least and the most room between the hole and a side, in radii;
+// the least sine of a corner's angles either side of the line to the hole's centre; the least Coons
+// patch Jacobian of its pieces.
+constexpr double kOgridTightClearance = 0.1;
+constexpr double kOgridSnugClearance = 1.0;
+constexpr double kOgridTightSine = 0.62;
+constexpr double kOgridTightPatch = 0.45;
 
 // The centre of the largest circle inside a convex polygon (counter-clockwise): the linear program
 // max r subject to dist_k(p) >= r for every side's line, solved at its vertices (three sides' lines
@@ -576,8 +583,56 @@ std::optional<std::vector<QuadPiece>> applicable_ogrid_template(const Region& re
   // Room on every side: the gap to the side at least half the hole's smallest reach (its radius) and
   // 64 quanta, for a ring and a strip beyond it.
   const double radius = *std::min_element(reach.begin(), reach.end());
+  bool roomy = true, snug = true;
   for (size_t k = 0; k < 4; ++k) {
-    if (!(d[k] - reach[k] >= std::max(kOgridClearance * radius, 64.0 * q))) return std::nullopt;
+    if (!(d[k] - reach[k] >= std::max(kOgridTightClearance * radius, 64.0 * q))) return std::nullopt;
+    roomy = roomy && d[k] - reach[k] >= std::max(kOgridClearance * radius, 64.0 * q);
+    snug = snug && d[k] - reach[k] <= kOgridSnugClearance * radius;
+  }
+  if (!roomy && !snug) return std::nullopt;
+  // The hole's vertex nearest each of the points given (a box corner or a part's corner), where a
+  // spoke from there meets the hole about square.
+  auto nearest_on_hole = [&](const std::array<Point2, 4>& from) {
+    std::array<size_t, 4> h{};
+    for (size_t k = 0; k < 4; ++k) {
+      double best = std::numeric_limits<double>::infinity();
+      for (size_t j = 0; j < m; ++j) {
+        const double dist = std::hypot(hole[j].x - from[k].x, hole[j].y - from[k].y);
+        if (dist < best) best = dist, h[k] = j;
+      }
+    }
+    return h;
+  };
+  if (!roomy) {
+    // A tight cell: the part's sides are the box. Four pieces, each a side of the part, the spokes from
+    // its corners and the hole between them (the hole runs clockwise, the part counter-clockwise).
+    std::array<Point2, 4> corner_at;
+    for (size_t k = 0; k < 4; ++k) corner_at[k] = ring[corner[k]];
+    // Each corner split by the line to the hole's centre (the spoke's direction, whatever the hole's
+    // polygon) into angles whose sines are kOgridTightSine at least.
+    for (size_t k = 0; k < 4; ++k) {
+      const Point2 a = corner_at[k], s{c.x - a.x, c.y - a.y};
+      for (const Point2 b : {corner_at[(k + 1) % 4], corner_at[(k + 3) % 4]}) {
+        const Point2 side{b.x - a.x, b.y - a.y};
+        const double sine = std::fabs(s.x * side.y - s.y * side.x) / (std::hypot(s.x, s.y) * std::hypot(side.x, side.y));
+        if (!(sine >= kOgridTightSine)) return std::nullopt;
+      }
+    }
+    const std::array<size_t, 4> h = nearest_on_hole(corner_at);
+    std::vector<QuadPiece> pieces;
+    for (size_t k = 0; k < 4; ++k) {
+      Ring loop;
+      for (size_t i = corner[k]; i != corner[(k + 1) % 4]; i = (i + 1) % n) loop.push_back(ring[i]);
+      const int at_corner = static_cast<int>(loop.size());
+      loop.push_back(ring[corner[(k + 1) % 4]]);
+      for (size_t j = h[(k + 1) % 4]; j != h[k]; j = (j + 1) % m) loop.push_back(hole[j]);
+      const int at_last = static_cast<int>(loop.size());
+      loop.push_back(hole[h[k]]);
+      if (at_last < at_corner + 2) return std::nullopt;  // two corners aimed at one hole vertex
+      pieces.push_back(QuadPiece{std::move(loop), {0, at_corner, at_corner + 1, at_last}});
+    }
+    if (!pieces_well_shaped(pieces) || pieces_patch_jacobian(pieces) < kOgridTightPatch) return std::nullopt;
+    return pieces;
   }
   // The box: its side k parallel to side k, halfway from the hole to the side (the ring and the strip
   // beyond equally thick) but at most a radius beyond the hole.
@@ -671,16 +726,9 @@ std::optional<std::vector<QuadPiece>> applicable_ogrid_template(const Region& re
       else s.after.push_back(ring[i]);
     }
   }
-  // The hole's vertex nearest each box corner, where the spoke meets the hole about square (the hole
-  // runs clockwise, the box counter-clockwise: h[k + 1] comes before h[k] along the hole).
-  std::array<size_t, 4> h{};
-  for (size_t k = 0; k < 4; ++k) {
-    double best = std::numeric_limits<double>::infinity();
-    for (size_t j = 0; j < m; ++j) {
-      const double dist = std::hypot(hole[j].x - box[k].x, hole[j].y - box[k].y);
-      if (dist < best) best = dist, h[k] = j;
-    }
-  }
+  // The hole's vertex nearest each box corner (the hole runs clockwise, the box counter-clockwise:
+  // h[k + 1] comes before h[k] along the hole).
+  const std::array<size_t, 4> h = nearest_on_hole(box);
   std::vector<QuadPiece> pieces;
   auto add = [&](Ring loop, std::array<int, 4> corners) { pieces.push_back(QuadPiece{std::move(loop), corners}); };
   for (size_t k = 0; k < 4; ++k) {
@@ -906,6 +954,16 @@ bool two_corner_template(const Region& region, const BlockRules& rules) {
 
 bool ogrid_template(const Region& region, const BlockRules& rules) {
   return applicable_ogrid_template(region, rules).has_value();
+}
+
+bool tight_ogrid_template(const Region& region, const BlockRules& rules) {
+  const std::optional<std::vector<QuadPiece>> pieces = applicable_ogrid_template(region, rules);
+  return pieces && pieces->size() == 4;
+}
+
+bool roomy_ogrid_template(const Region& region, const BlockRules& rules) {
+  const std::optional<std::vector<QuadPiece>> pieces = applicable_ogrid_template(region, rules);
+  return pieces && pieces->size() == 12;
 }
 
 namespace {

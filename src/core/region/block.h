@@ -175,8 +175,20 @@ bool two_corner_improves(const Region& region, const BlockRules& rules = {});
 // curved sides the box may lie up to 1.5 radii beyond the hole, and where the feet square to a side
 // fall outside it (a deep, narrow sector, its radial sides converging on the bore) each foot is
 // where the box line through the box corner meets the side instead.
+// A tight cell (a staggered grid's: no side with that room, but every side at least a tenth of a
+// radius and 64 quanta from the hole and at most a radius) gets its own sides as
+// the box: four pieces, each a side of the part, the spokes from its two corners to the hole's
+// vertices nearest them, and the hole between them. Each corner, split by the line to the hole's
+// centre, keeps angles of 38 degrees at least on both sides (sine 0.62: a rhombus's 60- or 70-degree
+// corners are refused; taken at 33 degrees, such cells of a staggered plate meshed at 0.51 where the
+// search's own cuts gave 0.69), every piece's quadrilateral of corners within [20, 160] degrees and
+// its Coons patch 0.45 at least. BENCHMARKS.md, "Tight cells".
 // Inputs: region; rules. Output: true when the O-grid template applies (template_pieces makes it).
 bool ogrid_template(const Region& region, const BlockRules& rules = {});
+// Inputs: region; rules. Output: true when the O-grid that applies is a tight cell's (four pieces).
+bool tight_ogrid_template(const Region& region, const BlockRules& rules = {});
+// Inputs: region; rules. Output: true when the O-grid that applies has its box (twelve pieces).
+bool roomy_ogrid_template(const Region& region, const BlockRules& rules = {});
 // The O-grid's room between the hole and every side of its part, in the hole's radii (divide_holes'
 // roomy lines leave both holes that much, hole_division.h). 0.35 for the O-grid alone was measured and
 // not kept: the 30 flanges fell from 0.8564 to 0.8513, and a perforated plate's every try admitted no

@@ -28,6 +28,7 @@ constexpr double kArcStep = 0.5;        // the longest segment (times the radius
 constexpr double kRadialClearance = 0.5;  // a radial line keeps this times a hole's radius from it
 constexpr double kSectorLeast = 0.25;     // divide_sector's least piece, in the hole's square cells
 constexpr double kCellLong = 1.5;         // divide_sector cuts a cell's ends where the part is this much deeper than wide
+constexpr double kRoundHole = 1.05;       // a hole's reach along a strip and across it within this ratio: round
 
 Point2 unit(Point2 d) {
   const double len = std::hypot(d.x, d.y);
@@ -257,6 +258,7 @@ struct Line {
   bool separates;  // every piece must hold fewer holes than the part
   bool radial;     // through the centre (running across the bore); else a chord: two pieces
   bool ogrid = false;  // the piece that holds a hole must take an O-grid (ogrid_template) or be long still
+  double clearance = kRadialClearance;  // the room it keeps from every hole, in the hole's radii
 };
 
 // divide_sector's lines about a centre c (its Inputs), in order; bore marks the holes holding c.
@@ -351,7 +353,8 @@ std::optional<StripCell> strip_cell(const Region& part, size_t h, Point2 c, Poin
 // Each is taken where the hole's piece then takes an O-grid or is still that long (Line::ogrid): a
 // hole too near the strip's sides is left to the search (plate-three-holes.brep's largest hole,
 // 0.950 -> 0.866 when cut at its cell's end).
-void strip_lines(const Region& part, const std::vector<Point2>& centre, std::vector<Line>& lines) {
+void strip_lines(const Region& part, const std::vector<Point2>& centre, const std::vector<double>& radius,
+                 bool tight_ogrid, std::vector<Line>& lines) {
   const OrientedRectangle frame = min_area_rectangle(part);
   for (const Point2 u : {frame.axis, Point2{-frame.axis.y, frame.axis.x}}) {
     const Point2 n{-u.y, u.x};
@@ -359,8 +362,20 @@ void strip_lines(const Region& part, const std::vector<Point2>& centre, std::vec
       const std::optional<StripCell> cell = strip_cell(part, h, centre[h], u);
       if (!cell || !cell->long_enough()) continue;
       const double s = cell->width;
+      // A strip narrower than a round hole's O-grid room (a staggered grid's row) keeps that much at
+      // the cell's ends too: a tight O-grid's cell (ogrid_template). (Not about a slot, whose ends
+      // reach farther than its sides: a bar's slot cut so near its ends, 0.949 -> 0.899.)
+      double along = 0.0, across = 0.0;
+      for (const Point2& v : part.holes()[h]) {
+        along = std::max(along, std::fabs(dot(u, {v.x - centre[h].x, v.y - centre[h].y})));
+        across = std::max(across, std::fabs(dot(n, {v.x - centre[h].x, v.y - centre[h].y})));
+      }
+      const bool round = std::max(along, across) <= kRoundHole * std::min(along, across);
+      const double room = tight_ogrid && round
+                              ? std::clamp(0.99 * (0.5 * s - radius[h]) / radius[h], kLeastClearance, kRadialClearance)
+                              : kRadialClearance;
       for (const double end : cell_ends(0.0, cell->before, cell->after, s)) {
-        lines.push_back({{centre[h].x + end * u.x, centre[h].y + end * u.y}, n, s, false, false, true});
+        lines.push_back({{centre[h].x + end * u.x, centre[h].y + end * u.y}, n, s, false, false, true, room});
       }
     }
   }
@@ -368,7 +383,7 @@ void strip_lines(const Region& part, const std::vector<Point2>& centre, std::vec
 
 }  // namespace
 
-std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Point2> hint) {
+std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Point2> hint, bool tight_ogrid) {
   const std::vector<Ring>& holes = part.holes();
   const size_t k = holes.size();
   if (k == 0) return std::nullopt;
@@ -386,7 +401,7 @@ std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Poin
   if (c) {
     sector_lines(part, *c, centre, radius, lines, bore);
   } else {
-    strip_lines(part, centre, lines);
+    strip_lines(part, centre, radius, tight_ogrid, lines);
   }
   // The first line that keeps clear of the holes and cuts the part as asked (see above).
   for (const Line& line : lines) {
@@ -394,7 +409,7 @@ std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Poin
     bool clear = true;
     for (size_t g = 0; g < k && clear; ++g) {
       if (bore[g] && line.radial) continue;  // the line runs across it
-      clear = std::fabs(dot(n, {centre[g].x - line.through.x, centre[g].y - line.through.y})) - radius[g] >= kRadialClearance * radius[g];
+      clear = std::fabs(dot(n, {centre[g].x - line.through.x, centre[g].y - line.through.y})) - radius[g] >= line.clearance * radius[g];
     }
     if (!clear) continue;
     const std::optional<Point2> origin = line_meets_outer(part, line.through, u);
@@ -410,7 +425,7 @@ std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Poin
     for (const Region& piece : division.outcome.pieces) {
       take = take && piece.area() >= kSectorLeast * line.cell * line.cell && (!line.separates || piece.holes().size() < k);
       // A strip's cell end: the hole's piece an O-grid, or still long enough for its other end.
-      if (take && line.ogrid && !piece.holes().empty() && !ogrid_template(piece)) {
+      if (take && line.ogrid && !piece.holes().empty() && !(tight_ogrid ? ogrid_template(piece) : roomy_ogrid_template(piece))) {
         const std::vector<Point2> piece_centre = hole_centres(piece.holes());
         bool still_long = false;
         for (size_t h = 0; h < piece_centre.size(); ++h) {

@@ -101,14 +101,19 @@ std::optional<HoleDivision> divide_holes(const Region& part, std::optional<Point
 // only: along each axis of its minimum-area rectangle, where it is longer through a hole than the
 // hole's square cell and a quarter of one, the lines square to the axis at the ends of that cell,
 // taken where the hole's piece then takes an O-grid or is still that long (a hole too
-// near the strip's sides for an O-grid is left to the search).
+// near the strip's sides for an O-grid is left to the search). In a strip narrower than a hole's
+// O-grid room (a staggered grid's row) such a line keeps from the hole what the strip's sides keep
+// (at least a tenth of a radius): the cell is a tight one (ogrid_template), where tight
+// O-grids are allowed.
 // Measured (BENCHMARKS.md, "Flanges: square cells", "Two bolt circles"): a flange of four bolt holes
 // 0.41 -> 0.83, one bolt circle of square sectors 0.81-0.82 -> 0.93-0.95; flanges of two bolt
 // circles 0.49-0.57 -> 0.81-0.87 of the bound.
 // Inputs:  part; hint, the centre its parent's division found (HoleDivision::centre), taken where the
-//          part's own arcs give none (as for divide_holes).
+//          part's own arcs give none (as for divide_holes); tight_ogrid, false: no cell left for a
+//          tight O-grid (ogrid_template), as before they were made (RegionSearchOptions::tight_ogrid).
 // Outputs: the cut, its outcome and the centre (none for a strip), or nothing (no hole, every hole's
 //          cell already as narrow as that, or no line that cut_region makes with those checks).
-std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Point2> hint = std::nullopt);
+std::optional<HoleDivision> divide_sector(const Region& part, std::optional<Point2> hint = std::nullopt,
+                                          bool tight_ogrid = true);
 
 }  // namespace autoblock

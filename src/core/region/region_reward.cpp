@@ -168,7 +168,10 @@ double region_template_reward(RewardPreset preset, const Region& part, double fa
     // five-valent vertices every quad mesh of the part needs, whose best is sin 72 degrees
     // (topology_jacobian_bound), what smoothing works towards.
     const Ring& hole = part.holes()[0];
+    // A tight cell's O-grid (four ring pieces, the part's sides its box) spokes from the part's corners,
+    // whose angles are what they are.
     const std::vector<QuadPiece> pieces = template_pieces(part, rules);
+    const bool tight = pieces.size() == 4;
     double j_new = 1.0;
     for (size_t p = 0; p < pieces.size(); ++p) {
       const QuadPiece& piece = pieces[p];
@@ -176,7 +179,7 @@ double region_template_reward(RewardPreset preset, const Region& part, double fa
       for (int k = 0; k < 4; ++k) {
         const double j = piece_corner_angle(piece, k).sine;
         if (ring_piece && k < 2) {
-          j_new = std::min(j_new, j > 0.0 ? std::sin(0.4 * M_PI) : j);
+          j_new = std::min(j_new, j > 0.0 && !tight ? std::sin(0.4 * M_PI) : j);
         } else if (ring_piece) {
           // The hole's vertex: its spoke runs to the box corner before it (k = 2) or after it (k = 3).
           const Point2 v = piece.ring[static_cast<size_t>(piece.corners[static_cast<size_t>(k)])];

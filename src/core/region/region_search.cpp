@@ -35,7 +35,7 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
     const bool many = static_cast<int>(part.holes().size()) >= kDivideHoles;
     const auto inherited = centres_.find(part);
     const std::optional<Point2> hint = inherited != centres_.end() ? std::optional<Point2>(inherited->second) : std::nullopt;
-    std::optional<HoleDivision> division = many ? divide_holes(part, hint) : divide_sector(part, hint);
+    std::optional<HoleDivision> division = many ? divide_holes(part, hint) : divide_sector(part, hint, options_.tight_ogrid);
     if (!division && part.holes().size() == 2 && divided_.count(part) > 0) division = divide_holes(part, hint, true);
     if (division) {
       if (const std::optional<Point2> centre = division->centre ? division->centre : hint) {
@@ -63,6 +63,11 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
       now + std::chrono::microseconds(static_cast<long long>(1e6 * late_slice(options_.time_limit, now > deadline_ + budget)));
   const std::chrono::steady_clock::time_point* stop = options_.time_limit > 0.0 ? (late ? &slice : &deadline_) : nullptr;
   std::vector<ScoredAction> scored = score_candidates(part, face_size, options, stop, options_.prune ? width : 0, taper);
+  if (!options_.tight_ogrid && part.holes().size() == 1 && tight_ogrid_template(part, options.rules)) {
+    scored.erase(std::remove_if(scored.begin(), scored.end(),
+                                [](const ScoredAction& s) { return s.action.kind == RegionAction::Kind::Template; }),
+                 scored.end());
+  }
   Entry best;
   if (scored.empty()) {
     best.action = progress_action(part, options.rules);

@@ -54,6 +54,10 @@ struct RegionSearchOptions {
   bool prune = true;          // branch and bound and bounded scoring, mesh preset (same decisions; false for tests)
   bool taper = true;          // mesh preset: cuts charged for the taper of the blocks they leave, in ranking and values (false: the reward alone)
   bool divide_holes = true;   // a part with kDivideHoles holes or more is divided along its ligaments (hole_division.h), not searched
+  // false: a tight cell's O-grid (block.h) is no candidate, and divide_sector leaves no cell for one
+  // (one of `autoblock mesh`'s tries, kSearchTries: valuing its few blocks, the search took it where a
+  // hole near the face's edge was better cut to the edge).
+  bool tight_ogrid = true;
 };
 
 class RegionSearchPolicy : public RegionPolicy {

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 #include "core/api/face_actions.h"
@@ -261,13 +262,16 @@ TEST_CASE("a poor searched mesh is searched again (other widths, other block rul
   CHECK(once.search_width == kSearchTries[0].width);
   CHECK(once.corner_fraction == kSearchTries[0].corner_fraction);
   CHECK_FALSE(once.cut_smooth_parts);
-  // Every try after the first is another search (no two alike); the last alone cuts smooth parts.
+  // Every try after the first is another search (no two alike); the last but one alone cuts smooth
+  // parts, the last alone leaves tight cells' O-grids out.
   for (size_t i = 0; i < std::size(kSearchTries); ++i) {
     for (size_t j = i + 1; j < std::size(kSearchTries); ++j) {
       CHECK((kSearchTries[i].width != kSearchTries[j].width || kSearchTries[i].corner_fraction != kSearchTries[j].corner_fraction ||
-             kSearchTries[i].cut_smooth_parts != kSearchTries[j].cut_smooth_parts));
+             kSearchTries[i].cut_smooth_parts != kSearchTries[j].cut_smooth_parts ||
+             kSearchTries[i].tight_ogrid != kSearchTries[j].tight_ogrid));
     }
-    CHECK(kSearchTries[i].cut_smooth_parts == (i + 1 == std::size(kSearchTries)));
+    CHECK(kSearchTries[i].cut_smooth_parts == (i + 2 == std::size(kSearchTries)));
+    CHECK(kSearchTries[i].tight_ogrid == (i + 1 != std::size(kSearchTries)));
   }
 }
 
@@ -321,16 +325,18 @@ TEST_CASE("no try is started once a face has taken three times the search's time
   CHECK(m.result.conformity.conformal);
 }
 
-TEST_CASE("a wedge rounded at both ends: the last try cuts it, and its mesh is kept", "[api][general][mesh][arc]") {
+TEST_CASE("a wedge rounded at both ends: the try that cuts smooth parts cuts it, and its mesh is kept",
+          "[api][general][mesh][arc]") {
   // Face 150 of the arc benchmark (`autoblock generate --kind arcs --seed 20261202`): two corners (its
-  // rounded tip's), which no cut reduces, so every try but the last finishes the whole face with the
-  // usual template's fallback, whose mesh fans into the tip (min scaled Jacobian 0.067). The last try
-  // counts such a part as complex (BlockRules::cut_smooth_parts) and cuts it into blocks.
+  // rounded tip's), which no cut reduces, so every try before the last but one finishes the whole face
+  // with the usual template's fallback, whose mesh fans into the tip (min scaled Jacobian 0.067). That
+  // try counts such a part as complex (BlockRules::cut_smooth_parts) and cuts it into blocks. (The last,
+  // without tight O-grids, is not made: no decomposition has one.)
   const InputFace face = arc_test_face("rounded-wedge");
   DecomposeSettings settings = untimed_settings();
   const FaceMeshing m = mesh_input_face(face, settings, MeshOptions{});
   REQUIRE(m.result.conformity.conformal);
-  CHECK(m.attempts == static_cast<int>(std::size(kSearchTries)));
+  CHECK(m.attempts == static_cast<int>(std::size(kSearchTries)) - 1);
   CHECK(m.cut_smooth_parts);
   CHECK(m.blocks() >= 2);
   CHECK(m.result.quality.min_scaled_jacobian > 0.1);
@@ -567,6 +573,35 @@ TEST_CASE("where neither the feet made one nor the feet as placed admit counts, 
   CHECK(m.result.block_model.snapped_feet > 0);
   CHECK(face_meshing_json("rounded-plate-two-holes", m)["far_feet"] == true);
   CHECK(m.result.quality.min_scaled_jacobian > 0.7);
+}
+
+TEST_CASE("a bar with a row of holes close to its edges: a tight O-grid in each hole's cell, and a try without them",
+          "[api][general][mesh][arc]") {
+  // A bar 12.28 by 2.654 with four holes of radius 1.137 at a pitch of 3.07 (a staggered plate's
+  // row): 0.19 between each hole and the bar's long edges, a sixth of a radius, no room for an O-grid's
+  // box. divide_holes cuts the ligaments between the holes; each square cell takes the tight O-grid,
+  // its corners spoked to the hole: four blocks, every interior node regular.
+  const FaceMeshing m = meshed_arc_face("holed-bar");
+  const RegionDecomposition& d = m.decomposition.region;
+  REQUIRE(d.finished.size() == 4);
+  for (const FinishedRegion& f : d.finished) CHECK((f.is_template && tight_ogrid_template(f.region, d.rules)));
+  CHECK(m.tight_ogrids == 4);
+  CHECK(m.result.quality.irregular_interior_nodes == 0);
+  // The spokes split the cells' right-angled corners 41 / 49 degrees (0.707 measured).
+  CHECK(m.result.quality.min_scaled_jacobian > 0.65);
+  const nlohmann::json report = face_meshing_json("holed-bar", m);
+  CHECK(report["tight_ogrids"] == 4);
+  CHECK(report["tight_ogrid"] == true);
+  // Below kRetryBelow of the bound (0.74), so every try is made, the one without tight O-grids too.
+  CHECK(m.attempts == static_cast<int>(std::size(kSearchTries)));
+  // That try's search finishes no cell with a tight O-grid: it cuts the cells.
+  DecomposeSettings without = untimed_settings();
+  without.policy_settings.general_tight_ogrid = false;
+  without.mesh_tries = false;
+  const FaceDecomposition cut = decompose_input_face(arc_test_face("holed-bar"), without);
+  REQUIRE(cut.region.complete());
+  for (const FinishedRegion& f : cut.region.finished) CHECK_FALSE((f.is_template && tight_ogrid_template(f.region, cut.region.rules)));
+  CHECK(cut.region.finished.size() > 4);
 }
 
 TEST_CASE("decompose keeps the decomposition mesh keeps, its cuts, replayed under its rules, mesh the same",

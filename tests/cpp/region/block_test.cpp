@@ -216,6 +216,47 @@ TEST_CASE("the O-grid template: a box around a round hole, twelve pieces", "[reg
   CHECK_FALSE(ogrid_template(Region(l_shape, {round_hole(3, 3, 1)}, kQ)));
 }
 
+TEST_CASE("the O-grid template in a tight cell: the part's sides are the box, four pieces", "[region][block][arc]") {
+  // A staggered grid's cell: 4 x 3.6 about a hole of radius 1.5, a fifth of a radius from the long
+  // sides and a third from the short ones: no room for a box (kOgridClearance), each corner spoked to
+  // the hole instead.
+  const Region cell(Ring{{0, 0}, {4, 0}, {4, 3.6}, {0, 3.6}}, {test::round_hole({2, 1.8}, 1.5)}, kQ);
+  REQUIRE(ogrid_template(cell));
+  const std::vector<QuadPiece> pieces = template_pieces(cell);
+  REQUIRE(pieces.size() == 4);
+  double area = 0.0;
+  size_t on_hole = 0;
+  const Ring& hole = cell.holes()[0];
+  for (size_t p = 0; p < 4; ++p) {
+    const QuadPiece& piece = pieces[p];
+    CHECK(signed_area(piece.ring) > 0.0);
+    area += signed_area(piece.ring);
+    // Its first two corners are the cell's corners p and p + 1, the other two on the hole, each about
+    // in the direction of its cell corner from the centre; no corner sharper than 40 degrees.
+    CHECK(piece.ring[static_cast<size_t>(piece.corners[0])] == cell.outer()[p]);
+    CHECK(piece.ring[static_cast<size_t>(piece.corners[1])] == cell.outer()[(p + 1) % 4]);
+    for (const int k : {2, 3}) {
+      const Point2 v = piece.ring[static_cast<size_t>(piece.corners[static_cast<size_t>(k)])];
+      CHECK(std::find(hole.begin(), hole.end(), v) != hole.end());
+      const Point2 corner = cell.outer()[(p + (k == 2 ? 1 : 0)) % 4];
+      const double off = std::remainder(std::atan2(v.y - 1.8, v.x - 2) - std::atan2(corner.y - 1.8, corner.x - 2), 2 * M_PI);
+      CHECK(std::fabs(off) < 8 * M_PI / 180);
+    }
+    for (int k = 0; k < 4; ++k) CHECK(piece_corner_angle(piece, k).sine > std::sin(40 * M_PI / 180));
+    on_hole += piece.ring.size() - 3;
+  }
+  CHECK(area == Approx(cell.area()).epsilon(1e-9));
+  CHECK(on_hole == hole.size());  // the four pieces go round the hole once
+  // Not a tight O-grid: a hole a twentieth of a radius from a side; a hole tight on one side and far
+  // from another (that part wants a cut, not spokes); a rhombus's 60-degree corners, which spokes
+  // would halve.
+  CHECK_FALSE(ogrid_template(Region(Ring{{0, 0}, {4, 0}, {4, 3.15}, {0, 3.15}}, {test::round_hole({2, 1.575}, 1.5)}, kQ)));
+  CHECK_FALSE(ogrid_template(Region(Ring{{0, 0}, {8, 0}, {8, 3.6}, {0, 3.6}}, {test::round_hole({2, 1.8}, 1.5)}, kQ)));
+  const double h = 3.6 / std::sin(M_PI / 3);
+  const Ring rhombus{{0, 0}, {h, 0}, {h + 0.5 * h, 3.6}, {0.5 * h, 3.6}};
+  CHECK_FALSE(ogrid_template(Region(rhombus, {test::round_hole({0.75 * h, 1.8}, 1.5)}, kQ)));
+}
+
 namespace {
 // An annular sector about the origin (a flange's cell): radii r1 < r2, from angle -half to half
 // (degrees), its arcs sampled every step degrees, counter-clockwise.

@@ -346,11 +346,23 @@ TEST_CASE("divide_sector cuts a plate's long strip at its hole's cell ends where
     CHECK(part.area() + M_PI * 9.0 == Approx(400.0).epsilon(0.01));  // the 20 by 20 cell, less the hole
   }
   CHECK(area == Approx(strip.area()).epsilon(1e-7));
-  // A hole too near the strip's sides for an O-grid (radius 7, 3 from each side) is left whole: its
-  // cell's end would leave a short piece no O-grid takes.
-  const Region tight(outer, {round_hole(turned({10, 14}, angle), 7.0)}, kQ);
+  // A hole too near the strip's sides for an O-grid's box (radius 7, 3 from each side, 12 from its
+  // end): the line at its cell's far end keeps 3 from it too, and leaves a tight cell (block.h), which
+  // a tight O-grid takes. Without tight O-grids (BlockRules::tight_ogrid) the strip is left whole: a
+  // line keeping half a radius would leave a short piece no O-grid takes.
+  const Region tight(outer, {round_hole(turned({10, 12}, angle), 7.0)}, kQ);
   CHECK_FALSE(ogrid_template(tight));
-  CHECK_FALSE(divide_sector(tight).has_value());
+  const std::optional<HoleDivision> end = divide_sector(tight);
+  REQUIRE(end.has_value());
+  REQUIRE(end->outcome.pieces.size() == 2);
+  for (const Region& piece : end->outcome.pieces) {
+    if (piece.holes().empty()) {
+      CHECK(piece.area() == Approx(20.0 * 38.0).epsilon(1e-6));  // beyond the cell's end at 22
+    } else {
+      CHECK(tight_ogrid_template(piece));
+    }
+  }
+  CHECK_FALSE(divide_sector(tight, std::nullopt, false).has_value());
 }
 
 TEST_CASE("the search divides a division's part of two holes with room between them, not two holes close together",
