@@ -22,7 +22,7 @@ struct FaceMeshing {
   int search_width = 4;             // the kept search's width (candidates expanded per part)
   bool cut_smooth_parts = false;    // the kept search's progress rule (SearchTry)
   bool divide_holes = true;         // the kept search divided parts with many holes first (hole_division.h)
-  bool tight_ogrid = true;          // the kept search's rules allowed tight O-grids (SearchTry)
+  bool tight_ogrid = true;          // the kept search allowed tight O-grids (SearchTry)
   int tight_ogrids = 0;             // the kept decomposition's O-grids in tight cells (ogrid_template)
   bool general() const { return decomposition.general(); }
   const std::string& policy() const {
@@ -77,7 +77,7 @@ struct SearchTry {
   int width;                      // candidates expanded per part (region_search.h; its default: 4)
   double corner_fraction;         // the block rules (face_actions.h)
   bool cut_smooth_parts = false;  // the progress rule (block.h, BlockRules::cut_smooth_parts)
-  bool tight_ogrid = true;        // the O-grid in tight cells (block.h, BlockRules::tight_ogrid)
+  bool tight_ogrid = true;        // the O-grid in tight cells (block.h; RegionSearchOptions::tight_ogrid)
 };
 // The last try leaves tight O-grids out, and is made only when the best decomposition so far has one
 // (else it would repeat the first): the search, valuing their few blocks, takes them where a hole near

@@ -364,7 +364,9 @@ void strip_lines(const Region& part, const std::vector<Point2>& centre, const st
       const double s = cell->width;
       // A strip narrower than a round hole's O-grid room (a staggered grid's row) keeps that much at
       // the cell's ends too: a tight O-grid's cell (ogrid_template). (Not about a slot, whose ends
-      // reach farther than its sides: a bar's slot cut so near its ends, 0.949 -> 0.899.)
+      // reach farther than its sides: a bar's slot cut so near its ends, 0.949 -> 0.899.) The room is
+      // taken a hair below the sides' so that the clearance check below, against the same radius,
+      // passes the line at the cell's end.
       double along = 0.0, across = 0.0;
       for (const Point2& v : part.holes()[h]) {
         along = std::max(along, std::fabs(dot(u, {v.x - centre[h].x, v.y - centre[h].y})));

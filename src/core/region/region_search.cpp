@@ -63,10 +63,12 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
       now + std::chrono::microseconds(static_cast<long long>(1e6 * late_slice(options_.time_limit, now > deadline_ + budget)));
   const std::chrono::steady_clock::time_point* stop = options_.time_limit > 0.0 ? (late ? &slice : &deadline_) : nullptr;
   std::vector<ScoredAction> scored = score_candidates(part, face_size, options, stop, options_.prune ? width : 0, taper);
-  if (!options_.tight_ogrid && part.holes().size() == 1 && tight_ogrid_template(part, options.rules)) {
-    scored.erase(std::remove_if(scored.begin(), scored.end(),
-                                [](const ScoredAction& s) { return s.action.kind == RegionAction::Kind::Template; }),
-                 scored.end());
+  // Without tight O-grids: a tight cell's template is dropped (the O-grid only measured where the
+  // template is among the candidates).
+  auto is_template = [](const ScoredAction& s) { return s.action.kind == RegionAction::Kind::Template; };
+  if (!options_.tight_ogrid && part.holes().size() == 1 && std::any_of(scored.begin(), scored.end(), is_template) &&
+      tight_ogrid_template(part, options.rules)) {
+    scored.erase(std::remove_if(scored.begin(), scored.end(), is_template), scored.end());
   }
   Entry best;
   if (scored.empty()) {
