@@ -99,6 +99,14 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
     }
   }
   const double time_limit = settings.policy_settings.general_time_limit;
+  // The tries' cost, counted (kTriesTimeLimits): their searches' work, their meshes' quads and their
+  // interval programs' simplex work.
+  long long search_work = 0, quads = 0, simplex_work = 0;
+  options.simplex_work = &simplex_work;
+  auto spent = [&] {
+    return static_cast<double>(search_work) / kSearchWorkPerSecond + kMeshSecondsPerQuad * static_cast<double>(quads) +
+           kSimplexSecondsPerRowIteration * static_cast<double>(simplex_work);
+  };
   // When no try meshed, a second pass: the first try once more, without the hole division.
   for (int pass = 0; pass < 2 && !have; ++pass) {
     if (pass == 1) {
@@ -112,15 +120,18 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
       // 0.22 s, not its third's 0.929 in 1.16 s, and a plate of holes 0.873 against 0.905.)
       if (have && ratio(out.result) >= kRetryBelow && !out.result.block_model.far_feet()) break;
       // A face whose searches run out of time (hundreds of parts: a plate with scores of holes) has
-      // spent what further tries would: the mesh made stands.
+      // spent what further tries would: the mesh made stands. What the tries cost is counted, not
+      // timed (so that a face meshes the same on every machine); the wall clock only backs it.
       if (have && time_limit > 0.0 &&
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >
-              kTriesTimeLimits * time_limit) {
+          (spent() > kTriesTimeLimits * time_limit ||
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >
+               search_wall_backstop(kTriesTimeLimits * time_limit))) {
         break;
       }
       // A try without tight O-grids after one whose kept decomposition has none would repeat it.
       if (have && !tries[k].tight_ogrid && tries[0].tight_ogrid && out.tight_ogrids == 0) continue;
       FaceDecomposition again = pass == 0 && k == 0 && first ? std::move(*first) : decompose_try(k);
+      search_work += again.region.work;
       options.general.reward = again.region.reward;
       if (!again.region.complete() && (have || k + 1 < tries.size() || first_error)) {
         // A try that leaves a part unfinished (under other block rules the fallback may find no cut
@@ -131,6 +142,7 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
       MeshResult meshed;
       try {
         meshed = mesh_region_decomposition(face, again.region, options);
+        quads += static_cast<long long>(meshed.mesh.quads.size());
       } catch (const InputError&) {
         throw;
       } catch (const std::exception&) {
@@ -153,6 +165,7 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
         finer.twisted_rounds = 0;
         try {
           MeshResult fine = mesh_region_decomposition(face, again.region, finer);
+          quads += static_cast<long long>(fine.mesh.quads.size());
           if (ratio(fine) > ratio(meshed)) {
             meshed = std::move(fine);
             min_edge_intervals = 2;
@@ -179,6 +192,7 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
     if (first_error) std::rethrow_exception(first_error);
     throw std::logic_error("mesh_input_face: no try meshed and none failed");
   }
+  out.counted_seconds = spent();
   out.decomposition.region.min_edge_intervals = out.min_edge_intervals;
   out.decomposition.region.fallback_from = fallback_from;
   out.decomposition.region.fallback_reason = fallback_reason;
@@ -211,6 +225,7 @@ nlohmann::json face_meshing_json(const std::string& input, const FaceMeshing& m)
   report["divide_holes"] = m.divide_holes;
   report["tight_ogrid"] = m.tight_ogrid;
   report["tight_ogrids"] = m.tight_ogrids;
+  if (m.counted_seconds > 0.0) report["counted_seconds"] = m.counted_seconds;
   const RegionDecomposition& d = m.decomposition.region;
   if (!d.fallback_from.empty()) report["policy_fallback"] = {{"policy", d.fallback_from}, {"reason", d.fallback_reason}};
   return report;

@@ -24,6 +24,7 @@ struct FaceMeshing {
   bool divide_holes = true;         // the kept search divided parts with many holes first (hole_division.h)
   bool tight_ogrid = true;          // the kept search allowed tight O-grids (SearchTry)
   int tight_ogrids = 0;             // the kept decomposition's O-grids in tight cells (ogrid_template)
+  double counted_seconds = 0.0;     // a general face's tries: their cost as counted (kTriesTimeLimits)
   bool general() const { return decomposition.general(); }
   const std::string& policy() const {
     return general() ? decomposition.region.policy : decomposition.decomposition.policy;
@@ -47,8 +48,8 @@ struct FaceMeshing {
 //          edge; the conformal mesh with the best minimum scaled Jacobian is kept (attempts,
 //          search_width, corner_fraction, cut_smooth_parts, tight_ogrid and min_edge_intervals say
 //          what was kept; tight_ogrids counts its tight cells' O-grids). Each search has the time
-//          limit; once a try has meshed and the face has taken kTriesTimeLimits times it, no further
-//          try is made. A search whose blocks fail to mesh
+//          limit (counted in work); once a try has meshed and the tries have cost kTriesTimeLimits
+//          times it, no further try is made. A search whose blocks fail to mesh
 //          (no interval counts for them, say: a rare web of templates whose sides' counts
 //          contradict), or that leaves a part unfinished, is skipped. When every try fails, the
 //          first try is made once more without dividing the parts with many holes first
@@ -70,9 +71,16 @@ struct FaceMeshing {
 // rounded); as every try's rule it lost on more faces than it won (BENCHMARKS.md, "Parts with fewer
 // than three corners").
 constexpr double kRetryBelow = 0.85;
-// No further try once a mesh is made and the face has taken this many times the search's time limit
+// No further try once a mesh is made and the tries have cost this many times the search's time limit
 // (a face of hundreds of parts, each try's search capped and its blocks' intervals and replay slow).
+// The cost is counted, not timed, so that a face meshes the same on every machine: each search's work
+// at kSearchWorkPerSecond (region_search.h), each mesh made at kMeshSecondsPerQuad and its interval
+// programs' simplex iterations at kSimplexSecondsPerRowIteration a row, what they took on the machine
+// the figures were measured on (BENCHMARKS.md, "A budget in work"). The wall clock backs it
+// (search_wall_backstop of that, region_search.h).
 constexpr double kTriesTimeLimits = 3.0;
+constexpr double kMeshSecondsPerQuad = 50e-6;
+constexpr double kSimplexSecondsPerRowIteration = 20e-9;
 struct SearchTry {
   int width;                      // candidates expanded per part (region_search.h; its default: 4)
   double corner_fraction;         // the block rules (face_actions.h)

@@ -121,6 +121,7 @@ nlohmann::json region_decomposition_json(const std::string& input, const InputFa
   report["time_capped"] = d.time_capped;
   report["steps"] = d.cuts.size();
   report["policy_steps"] = d.policy_steps;
+  report["work"] = d.work;
   report["seconds"] = d.seconds;
   if (!d.fallback_from.empty()) report["policy_fallback"] = {{"policy", d.fallback_from}, {"reason", d.fallback_reason}};
   // What a replay needs besides the cuts: the block rules they were made under, and the mesh's edges.

@@ -26,7 +26,7 @@ nlohmann::json decomposition_json(const std::string& input, const PlanarFace& fa
 //          "template": bool}, ...], "cuts": [{"part", "kind" (full, partial, template), "n_parts",
 //          "reward", "children" (the pieces' ids), and for a cut "origin": [x,y], "direction": [dx,dy],
 //          "angle_degrees", "forced", "chords": [[[x,y],[x,y]], ...]}], "return", "n_blocks",
-//          "n_templates", "complete", "truncated", "status", "time_capped", "steps", "policy_steps",
+//          "n_templates", "complete", "truncated", "status", "time_capped", "steps", "policy_steps", "work",
 //          "seconds", "rules" ({"min_corner_degrees", "max_corner_degrees", "flat_tolerance_degrees"}: the
 //          block rules the cuts were made under, which a replay needs), "min_edge_intervals" (what its
 //          mesh was judged with, RegionDecomposition), "unfinished" (loops of parts left), "face",

@@ -200,20 +200,28 @@ IntervalAssignment assign_edge_intervals(const BlockModel& model, const Interval
   parameters.presolve = GLP_ON;
   parameters.msg_lev = GLP_MSG_OFF;
   parameters.mip_gap = 1e-6;
-  // GLPK's branch and bound finds a good assignment at once and can then spend the whole time limit
-  // proving it best (a perforated disk's 300 blocks: 30 s twice, for the counts it had after 0.02 s):
-  // its best after kIntervalQuickLimit stands; only a program with no assignment by then gets the
-  // rest of the limit.
-  const double limit = std::max(1e-3, options.time_limit);
-  auto intopt = [&] {
-    parameters.tm_lim = static_cast<int>(1000.0 * std::min(limit, kIntervalQuickLimit));
-    int result = glp_intopt(lp, &parameters);
-    const int got = glp_mip_status(lp);
-    if (result == GLP_ETMLIM && got != GLP_OPT && got != GLP_FEAS && limit > kIntervalQuickLimit) {
-      parameters.tm_lim = static_cast<int>(std::min(1e9, 1000.0 * (limit - kIntervalQuickLimit)));
-      result = glp_intopt(lp, &parameters);
+  // GLPK's best kIntervalQuickIterations simplex iterations after its first assignment stands (a
+  // perforated disk's 300 blocks: 30 s twice, for the counts it had after 0.02 s), and a program with
+  // none after options.first_iterations is given up (edge_intervals.h).
+  struct Budget {
+    long first_iterations;
+    long found_at = -1;  // iterations when the first assignment was found
+  } budget{options.first_iterations};
+  parameters.cb_info = &budget;
+  parameters.cb_func = [](glp_tree* tree, void* info) {
+    Budget& b = *static_cast<Budget*>(info);
+    glp_prob* problem = glp_ios_get_prob(tree);
+    const long iterations = glp_get_it_cnt(problem);
+    if (b.found_at < 0 && glp_mip_status(problem) == GLP_FEAS) b.found_at = iterations;
+    if (b.found_at >= 0 ? iterations - b.found_at > kIntervalQuickIterations
+                        : b.first_iterations > 0 && iterations > b.first_iterations) {
+      glp_ios_terminate(tree);
     }
-    return result;
+  };
+  parameters.tm_lim = static_cast<int>(std::min(1e9, 1000.0 * std::max(1e-3, options.time_limit)));
+  auto intopt = [&] {
+    budget.found_at = -1;
+    return glp_intopt(lp, &parameters);
   };
   int code = feasible ? intopt() : GLP_ENOPFS;
   int status = feasible ? glp_mip_status(lp) : GLP_NOFEAS;
@@ -231,6 +239,7 @@ IntervalAssignment assign_edge_intervals(const BlockModel& model, const Interval
       status = glp_mip_status(lp);
     }
   }
+  if (options.simplex_work) *options.simplex_work += static_cast<long long>(glp_get_it_cnt(lp)) * glp_get_num_rows(lp);
   if ((code == GLP_ENOPFS || status == GLP_NOFEAS) && options.fixed.empty()) {
     // Not the user's doing: the blocks themselves admit no counts (a block whose opposite sides
     // share edges so that they cannot be equal).

@@ -26,10 +26,14 @@
 
 namespace autoblock {
 
-// Seconds GLPK's branch and bound has before its best assignment so far stands (it finds a good one
-// at once on every model measured, then may spend its whole limit proving it best); a program with
-// none by then gets the rest of IntervalOptions::time_limit.
-constexpr double kIntervalQuickLimit = 1.0;
+// GLPK's branch and bound finds a good assignment at once on every model measured, then may spend
+// long proving it best: its best once kIntervalQuickIterations simplex iterations have passed since its
+// first assignment stands. Counted in iterations, not seconds, so that a face gets the same counts on
+// every machine and under any load (a plate's program of 7 000 rows found a second, better
+// assignment 0.73 s in: a one-second limit kept it or not as the machine was busy). A second pass
+// (mesh_pipeline.cpp) gives up a program with no assignment after as many iterations.
+// IntervalOptions::time_limit bounds the whole as a backstop.
+constexpr long kIntervalQuickIterations = 4000;
 
 // Inputs:  model; a, b, the ends of a stretch along model edges (straight, within tolerance);
 //          intervals, its count; tolerance.
@@ -47,8 +51,9 @@ class NoIntervalAssignment : public std::runtime_error {
       : std::runtime_error("the blocks admit no interval assignment (opposite sides of some block cannot get equal counts)") {}
 };
 
-// Inputs:  model; options (target size h, fixed counts over edges, the quad limit, GLPK's time:
-//          kIntervalQuickLimit, then the rest of options.time_limit only when nothing was found).
+// Inputs:  model; options (target size h, fixed counts over edges, the quad limit, GLPK's iterations:
+//          kIntervalQuickIterations past its first assignment, options.first_iterations before it,
+//          options.time_limit in all).
 // Outputs: the counts per model edge (IntervalAssignment::intervals indexed by edge, worst_strip an
 //          edge) and the deviation figures.
 // Throws InputError when h is not a positive finite number, the mesh would exceed max_quads or the

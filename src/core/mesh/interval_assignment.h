@@ -50,7 +50,13 @@ struct IntervalOptions {
   double target_size = 0.0;  // h > 0, model units
   std::vector<FixedIntervals> fixed;
   long max_quads = kMaxMeshQuads;
-  double time_limit = 30.0;  // seconds for GLPK
+  double time_limit = 30.0;  // seconds for GLPK (a general face's: a backstop, see edge_intervals.h)
+  // A general face's (edge_intervals.h): simplex iterations GLPK may spend before it has an
+  // assignment, past which it gives up (0: no such limit; the time limit alone).
+  long first_iterations = 0;
+  // A general face's: if set, GLPK's simplex iterations times the program's rows are added to it (what
+  // its solves cost, counted rather than timed: mesh_input_face's tries).
+  long long* simplex_work = nullptr;
   int min_intervals = 1;     // a general face's model edges (edge_intervals.h): at least this many each
   std::vector<int> edge_minimum;  // a general face's: per model edge, at least this many (empty: none)
   // A general face's: per model edge, a count the program aims at when it is above the edge's length
@@ -70,7 +76,7 @@ struct IntervalAssignment {
   double mean_relative_deviation = 0.0;  // mean over strips of |L_s / n_s - h| / h
   int worst_strip = -1;                  // a strip with the largest deviation
   long quads = 0;                        // sum over cells of n_column * n_row
-  bool optimal = true;                   // false when GLPK stopped at its time limit
+  bool optimal = true;                   // false when GLPK stopped at its time or iteration limit
 };
 
 // Inputs:  layout; options.

@@ -65,16 +65,18 @@ double checked_target_size(const InputFace& face, const MeshOptions& options, Me
 }
 
 // The user's fixed counts made by fix (per stretch), then the assignment by assign, into result. A
-// second pass (a better mesh tried where a first one stands) gives GLPK kIntervalQuickLimit only: a
-// program with no counts by then is given up (std::runtime_error), not given 30 s more (a 1 000-edge
-// disk's arc targets: 30 s for nothing, and the face's first mesh lost with them).
+// second pass (a better mesh tried where a first one stands) gives GLPK kIntervalQuickIterations
+// simplex iterations to find counts: a program with none by then is given up (std::runtime_error),
+// not given 30 s more (a 1 000-edge disk's arc targets: 30 s for nothing, and the face's first mesh
+// lost with them).
 template <class Fix, class Assign>
 void assign_with_fixed(MeshResult& result, const MeshOptions& options, double h, Fix fix, Assign assign,
                        const std::vector<int>& edge_minimum = {}, const std::vector<double>& edge_target = {},
                        bool second_pass = false) {
   IntervalOptions interval_options;
-  if (second_pass) interval_options.time_limit = kIntervalQuickLimit;
+  if (second_pass) interval_options.first_iterations = kIntervalQuickIterations;
   interval_options.target_size = h;
+  interval_options.simplex_work = options.simplex_work;
   interval_options.max_quads = options.max_quads;
   interval_options.min_intervals = options.min_edge_intervals;
   interval_options.edge_minimum = edge_minimum;

@@ -62,6 +62,9 @@ struct MeshOptions {
   // A general face's parts with a twisted (inverted) quad: how many times their edges' counts are
   // doubled and the mesh made again (mesh_pipeline.cpp); 0: the mesh stands as first made.
   int twisted_rounds = kTwistedRounds;
+  // A general face's: if set, every interval program's simplex work is added to it
+  // (IntervalOptions::simplex_work).
+  long long* simplex_work = nullptr;
 };
 
 struct MeshResult {

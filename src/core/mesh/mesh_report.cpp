@@ -84,7 +84,7 @@ nlohmann::json mesh_report_json(const std::string& input, const RegionDecomposit
                          {"min_scaled_jacobian_before", r.smoothing.min_before}};
   report["decomposition"] = {{"complete", d.complete()},     {"cuts", d.cuts.size()},
                              {"return", d.total_return},     {"time_capped", d.time_capped},
-                             {"policy_steps", d.policy_steps}};
+                             {"policy_steps", d.policy_steps}, {"work", d.work}};
   return report;
 }
 

@@ -36,7 +36,7 @@ nlohmann::json mesh_report_json(const std::string& input, const Decomposition& d
 //          "two_corner_templates" (true when the mesh kept was made with the two-corner template
 //          where it beats the smooth one: MeshResult::two_corner), "intervals" adding "arc_targets",
 //          "smoothing": {"sweeps", "moves", "min_scaled_jacobian_before"} (mesh_smoothing.h), and
-//          "decomposition": {"complete", "cuts", "return", "time_capped", "policy_steps"}.
+//          "decomposition": {"complete", "cuts", "return", "time_capped", "policy_steps", "work"}.
 nlohmann::json mesh_report_json(const std::string& input, const RegionDecomposition& decomposition,
                                 const MeshResult& result, double seconds);
 

@@ -12,6 +12,63 @@
 #include <CGAL/Polygon_2_algorithms.h>
 
 namespace autoblock {
+
+// Every vertex against every other loop's edges would be quadratic in the part's size (a plate's part
+// of 60 holes: millions of distances for each cut measured, a quarter of its search's time): on a
+// part of more than kTouchBrute vertices, an edge is measured only against the vertices in the grid
+// cells that its box, grown by a quantum, covers (any vertex within a quantum of it is among them).
+constexpr int kTouchBrute = 64;
+bool loops_touch(const Region& region) {
+  const double q = region.quantum();
+  auto near = [&](Point2 v, const Ring& ring, size_t i) {
+    return segment_distance_squared(v, ring[i], ring[(i + 1) % ring.size()]) <= q * q;
+  };
+  const int total = region.vertex_count();
+  if (total <= kTouchBrute) {
+    for (int a = 0; a < region.loop_count(); ++a) {
+      for (int b = 0; b < region.loop_count(); ++b) {
+        if (a == b) continue;
+        const Ring& rb = region.loop(b);
+        for (const Point2& v : region.loop(a)) {
+          for (size_t i = 0; i < rb.size(); ++i) {
+            if (near(v, rb, i)) return true;
+          }
+        }
+      }
+    }
+    return false;
+  }
+  const Box box = region.bbox();
+  const int side = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(total))));
+  const double cell = std::max({box.width(), box.height(), q}) / side + q;
+  auto column = [&](double x) { return std::clamp(static_cast<long>(std::floor((x - box.xmin) / cell)), 0L, long{side}); };
+  auto row = [&](double y) { return std::clamp(static_cast<long>(std::floor((y - box.ymin) / cell)), 0L, long{side}); };
+  // The vertices by cell, with their loops, in cells of (side + 1) squared.
+  const size_t width = static_cast<size_t>(side) + 1;
+  std::vector<std::vector<std::pair<int, const Point2*>>> cells(width * width);
+  for (int a = 0; a < region.loop_count(); ++a) {
+    for (const Point2& v : region.loop(a)) {
+      cells[static_cast<size_t>(row(v.y)) * width + static_cast<size_t>(column(v.x))].push_back({a, &v});
+    }
+  }
+  for (int b = 0; b < region.loop_count(); ++b) {
+    const Ring& rb = region.loop(b);
+    for (size_t i = 0; i < rb.size(); ++i) {
+      const Point2 p = rb[i], r = rb[(i + 1) % rb.size()];
+      const long c0 = column(std::min(p.x, r.x) - q), c1 = column(std::max(p.x, r.x) + q);
+      const long r0 = row(std::min(p.y, r.y) - q), r1 = row(std::max(p.y, r.y) + q);
+      for (long y = r0; y <= r1; ++y) {
+        for (long x = c0; x <= c1; ++x) {
+          for (const auto& [a, v] : cells[static_cast<size_t>(y) * width + static_cast<size_t>(x)]) {
+            if (a != b && near(*v, rb, i)) return true;
+          }
+        }
+      }
+    }
+  }
+  return false;
+}
+
 namespace {
 
 using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
@@ -68,25 +125,6 @@ Ring ccb_ring(Arrangement::Ccb_halfedge_const_circulator first, double quantum) 
     ring.push_back(rounded(h->source()->point(), quantum));
   } while (++h != first);
   return ring;
-}
-
-// True when a vertex of one loop lies within one quantum of another loop: the loops touch (a cut
-// nearly along a hole's edge leaves a gap thinner than the lattice, which rounding closes).
-bool loops_touch(const Region& region) {
-  const double q = region.quantum();
-  for (int a = 0; a < region.loop_count(); ++a) {
-    for (int b = 0; b < region.loop_count(); ++b) {
-      if (a == b) continue;
-      const Ring& ra = region.loop(a);
-      const Ring& rb = region.loop(b);
-      for (const Point2& v : ra) {
-        for (size_t i = 0; i < rb.size(); ++i) {
-          if (segment_distance_squared(v, rb[i], rb[(i + 1) % rb.size()]) <= q * q) return true;
-        }
-      }
-    }
-  }
-  return false;
 }
 
 // Pieces in order of their outer loops' vertices, lowest then leftmost first (pieces that share

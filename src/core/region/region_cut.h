@@ -81,6 +81,11 @@ std::optional<CutOutcome> cut_region_if(const Region& region, const RegionCut& c
 // The same by the arrangement for every cut (the general path; tests compare the two).
 CutOutcome cut_region_by_arrangement(const Region& region, const RegionCut& cut);
 
+// Inputs: region. Output: true when a vertex of one of its loops lies within one quantum of another
+//         loop: the loops touch (a cut nearly along a hole's edge leaves a gap thinner than the
+//         lattice, which rounding closes; such a cut's pieces are refused).
+bool loops_touch(const Region& region);
+
 // Inputs:  region; origin on its boundary; direction.
 // Outputs: true with *hit set when the ray from origin along direction first runs into the
 //          interior and then meets the boundary at *hit (the partial cut's end point, rounded to

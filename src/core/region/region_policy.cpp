@@ -35,9 +35,13 @@ struct ChordsHash {
 }  // namespace
 
 std::vector<ScoredAction> score_candidates(const Region& part, double face_size, const RegionEpisodeOptions& options,
-                                          const std::chrono::steady_clock::time_point* deadline, size_t keep, bool taper) {
+                                          SearchWork* work, size_t keep, bool taper) {
   const Complexity complexity = part_complexity(part, options.rules);
-  auto past_deadline = [&] { return deadline && std::chrono::steady_clock::now() > *deadline; };
+  const long long cost = part.vertex_count();
+  auto charge = [&] {
+    if (work) work->spent += cost;
+  };
+  auto past_stop = [&] { return work && work->past(); };
   // Candidates with the same outcome form a group, scored once. A full cut is a line: the
   // candidates list an edge's line from both its ends, an axis through aligned vertices from each of
   // them; lines are keyed by their direction (to 1e-9) and their offset from the origin (to the
@@ -57,7 +61,10 @@ std::vector<ScoredAction> score_candidates(const Region& part, double face_size,
   std::map<std::array<long long, 3>, long> lines;
   std::unordered_map<std::vector<double>, long, ChordsHash> chord_sets;
   auto score = [&](Group& g, std::optional<CutOutcome> outcome) {
-    if (!outcome) outcome = cut_region(part, g.cut);
+    if (!outcome) {
+      charge();
+      outcome = cut_region(part, g.cut);
+    }
     g.scored = true;
     if (!makes_progress(complexity, outcome->pieces, options.rules)) return;
     g.reward = region_cut_reward(options.reward, *outcome, face_size, options.rules);
@@ -66,8 +73,9 @@ std::vector<ScoredAction> score_candidates(const Region& part, double face_size,
   };
   size_t scored_count = 0;  // scored candidates that make progress (with their groups' members)
   for (const RegionAction& action : region_candidates(part)) {
-    if (scored_count > 0 && past_deadline()) break;
+    if (scored_count > 0 && past_stop()) break;
     if (action.kind == RegionAction::Kind::Template) {
+      charge();
       Group g;
       g.scored = true;
       g.outcome = std::make_shared<const CutOutcome>(CutOutcome{{part}, {}});
@@ -102,6 +110,7 @@ std::vector<ScoredAction> score_candidates(const Region& part, double face_size,
     long group = -1;
     bool told = false;
     std::vector<Chord> told_chords;
+    charge();
     std::optional<CutOutcome> outcome = cut_region_if(part, action.cut, [&](const std::vector<Chord>& chords) {
       told = true;
       if (chords.empty()) return false;  // separates nothing: no progress
@@ -159,7 +168,7 @@ std::vector<ScoredAction> score_candidates(const Region& part, double face_size,
   for (const size_t k : waiting) {
     Group& g = groups[k];
     if (g.bound < threshold - 1e-9) break;
-    if (scored_count > 0 && past_deadline()) break;
+    if (scored_count > 0 && past_stop()) break;
     score(g, std::nullopt);
     if (g.outcome) {
       scored_count += g.members;
@@ -250,6 +259,7 @@ RegionDecomposition decompose_region(const Region& face, RegionPolicy& policy, R
   RegionDecomposition result = episode_decomposition(episode, policy.name());
   result.policy_steps = policy_steps;
   result.time_capped = policy.time_capped();
+  result.work = policy.work();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

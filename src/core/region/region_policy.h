@@ -29,6 +29,8 @@ class RegionPolicy {
   virtual RegionAction choose(const RegionEpisode& episode) = 0;
   // True when the policy ran out of its time budget and finished with a fallback.
   virtual bool time_capped() const { return false; }
+  // The work its scoring did on the face so far (SearchWork units; 0 for a policy that counts none).
+  virtual long long work() const { return 0; }
 };
 
 class RegionGreedyPolicy : public RegionPolicy {
@@ -58,6 +60,7 @@ class TimedRegionPolicy : public RegionPolicy {
   std::string name() const override { return policy_->name(); }
   RegionAction choose(const RegionEpisode& episode) override;
   bool time_capped() const override { return capped_ || policy_->time_capped(); }
+  long long work() const override { return policy_->work(); }
   RegionPolicy& inner() { return *policy_; }
 
  private:
@@ -77,17 +80,27 @@ struct ScoredAction {
   double reward = 0.0;
 };
 
-// Inputs:  part; face_size; reward preset and rules (as the episode's); deadline (optional); keep,
+// The work of scoring candidates, counted so that a budget of it decides the same on every machine
+// and under any load (a wall clock does not: a plate of scores of holes, whose searches run out of
+// budget, meshed up to 0.15 apart between two runs): each candidate measured on a part charges the
+// part's vertex count, what cutting it costs.
+struct SearchWork {
+  long long spent = 0;
+  long long stop = 0;  // scoring stops once spent passes it (at least one candidate scored); 0: never
+  bool past() const { return stop > 0 && spent > stop; }
+};
+
+// Inputs:  part; face_size; reward preset and rules (as the episode's); work (optional: charged, and
+//          its stop obeyed); keep,
 //          how many of the best candidates the caller needs (0: all).
 // Outputs: the candidates of region_candidates(part) that make progress, with their outcomes and
 //          rewards, in order: every one when keep is 0; else at least every one that could be among
 //          the keep best by reward (the first of equals first), the others left out when a bound of
-//          their reward (region_cut_reward_bound) shows they cannot be. Past the deadline, only those
+//          their reward (region_cut_reward_bound) shows they cannot be. Past work's stop, only those
 //          scored so far (at least one, if any). taper: each cut's reward less the taper charge of
 //          the blocks it leaves (pieces_taper_cost, region_reward.h; the search's ranking).
 std::vector<ScoredAction> score_candidates(const Region& part, double face_size, const RegionEpisodeOptions& options,
-                                          const std::chrono::steady_clock::time_point* deadline = nullptr, size_t keep = 0,
-                                          bool taper = false);
+                                          SearchWork* work = nullptr, size_t keep = 0, bool taper = false);
 
 struct RegionDecomposition {
   std::string policy;
@@ -102,6 +115,7 @@ struct RegionDecomposition {
   int blocks = 0, templates = 0;
   double seconds = 0.0;
   bool time_capped = false;
+  long long work = 0;           // the policy's scoring work (RegionPolicy::work)
   // Kept by mesh_input_face's tries (api/face_meshing.h) for its mesh: at least this many intervals per
   // model edge (MeshOptions::min_edge_intervals) meshes it as well as it was judged. 1 otherwise.
   int min_edge_intervals = 1;

@@ -24,13 +24,16 @@ double value_upper_bound(const Region& part, const RegionEpisodeOptions& options
 
 }  // namespace
 
+bool RegionSearchPolicy::late() const {
+  return limited_ && (work_.spent >= budget_ || std::chrono::steady_clock::now() > backstop_);
+}
+
 double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions& options, double face_size) {
   if (is_block(part, options.rules)) return 0.0;
   const auto found = memo_.find(part);
   if (found != memo_.end()) return found->second.value;
-  const auto now = std::chrono::steady_clock::now();
-  const bool late = options_.time_limit > 0.0 && now > deadline_;
-  if (late) capped_ = true;
+  const bool late_now = late();
+  if (late_now) capped_ = true;
   if (options_.divide_holes && !part.holes().empty()) {
     const bool many = static_cast<int>(part.holes().size()) >= kDivideHoles;
     const auto inherited = centres_.find(part);
@@ -56,13 +59,13 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
   // thousands of candidates, each cut costing as much again: scoring them all took minutes; a usual
   // part's all fit in the slice, and the search finishes as greedy would).
   // Only candidates that can be among the `width` best are scored (with pruning on: the same ones).
-  const size_t width = late ? 1 : static_cast<size_t>(std::max(1, options_.width));
-  const bool taper = options_.taper && !late && options.reward == RewardPreset::Mesh;
-  const auto budget = std::chrono::microseconds(static_cast<long long>(options_.time_limit * 1e6));
-  const std::chrono::steady_clock::time_point slice =
-      now + std::chrono::microseconds(static_cast<long long>(1e6 * late_slice(options_.time_limit, now > deadline_ + budget)));
-  const std::chrono::steady_clock::time_point* stop = options_.time_limit > 0.0 ? (late ? &slice : &deadline_) : nullptr;
-  std::vector<ScoredAction> scored = score_candidates(part, face_size, options, stop, options_.prune ? width : 0, taper);
+  const size_t width = late_now ? 1 : static_cast<size_t>(std::max(1, options_.width));
+  const bool taper = options_.taper && !late_now && options.reward == RewardPreset::Mesh;
+  work_.stop = !limited_ ? 0
+               : late_now ? work_.spent + std::llround(kSearchWorkPerSecond *
+                                                       late_slice(options_.time_limit, work_.spent > 2 * budget_))
+                          : budget_;
+  std::vector<ScoredAction> scored = score_candidates(part, face_size, options, &work_, options_.prune ? width : 0, taper);
   // Without tight O-grids: a tight cell's template is dropped (the O-grid only measured where the
   // template is among the candidates).
   auto is_template = [](const ScoredAction& s) { return s.action.kind == RegionAction::Kind::Template; };
@@ -101,7 +104,7 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
     }
     // Out of time: the candidates expanded so far decide (one greedy finish per part, not one per
     // candidate left).
-    if (have && options_.time_limit > 0.0 && std::chrono::steady_clock::now() > deadline_) {
+    if (have && late()) {
       capped_ = true;
       break;
     }
@@ -142,8 +145,11 @@ RegionAction RegionSearchPolicy::choose(const RegionEpisode& episode) {
     started_ = true;
     capped_ = false;
     pruned_ = 0;
-    deadline_ = std::chrono::steady_clock::now() +
-                std::chrono::microseconds(static_cast<long long>(options_.time_limit * 1e6));
+    work_ = SearchWork{};
+    limited_ = options_.time_limit > 0.0;
+    budget_ = limited_ ? std::llround(kSearchWorkPerSecond * options_.time_limit) : 0;
+    backstop_ = std::chrono::steady_clock::now() +
+                std::chrono::microseconds(std::llround(search_wall_backstop(options_.time_limit) * 1e6));
   }
   solve(episode.current_part(), episode.options(), episode.face_size());
   return memo_.at(episode.current_part()).action;

@@ -11,7 +11,7 @@
 // reward does not hold the charge (a policy without lookahead, charged for the blocks it finishes but
 // not for the parts it leaves, shies away from finishing them).
 // Progress makes the recursion finite; parts are canonical values (region.h), so a part reached by
-// two orders of cuts is solved once. When the time budget runs out, parts not yet solved are finished
+// two orders of cuts is solved once. When the budget (counted in work) runs out, parts not yet solved are finished
 // greedily (every candidate scored, the best immediate reward taken, no lookahead and no taper
 // charge: the budget bounds the lookahead, and the greedy finish costs about what the greedy policy
 // does on the parts left), and the policy reports time_capped(). Branch and bound: a candidate whose value cannot beat the best
@@ -39,9 +39,23 @@
 
 namespace autoblock {
 
-// Past the search's budget, the seconds each part's greedy scoring may take (see solve): 2 % of the
-// budget, a tenth of that once twice the budget has passed (a face of a thousand parts), and never
-// less than kLateSliceFloor.
+// The search's budget is counted in work (SearchWork, region_policy.h), not wall time, so that a face
+// decomposes the same on every machine and under any load: time_limit seconds are
+// time_limit * kSearchWorkPerSecond units, what the search's scoring got through in a second on the
+// machine its figures were measured on (BENCHMARKS.md, "A budget in work"). The wall clock only backs it:
+// past search_wall_backstop(time_limit) seconds (kSearchWallBackstop times it, a machine that much
+// slower, and at least kSearchWallFloor more than it), parts are finished as past the budget.
+constexpr double kSearchWorkPerSecond = 7.0e6;
+constexpr double kSearchWallBackstop = 4.0;
+constexpr double kSearchWallFloor = 1.0;
+inline double search_wall_backstop(double time_limit) {
+  const double times = kSearchWallBackstop * time_limit, floor = time_limit + kSearchWallFloor;
+  return times > floor ? times : floor;
+}
+
+// Past the search's budget, the work each part's greedy scoring may take (see solve), in seconds of
+// it: 2 % of the budget, a tenth of that once twice the budget has passed (a face of a thousand
+// parts), and never less than kLateSliceFloor.
 constexpr double kLateSliceFloor = 0.005;
 inline double late_slice(double time_limit, bool past_twice) {
   const double slice = (past_twice ? 0.002 : 0.02) * time_limit;
@@ -50,7 +64,7 @@ inline double late_slice(double time_limit, bool past_twice) {
 
 struct RegionSearchOptions {
   int width = 4;              // candidates expanded per part (by immediate reward)
-  double time_limit = 2.0;    // seconds per face; 0: no limit
+  double time_limit = 2.0;    // seconds per face, as work (kSearchWorkPerSecond); 0: no limit
   bool prune = true;          // branch and bound and bounded scoring, mesh preset (same decisions; false for tests)
   bool taper = true;          // mesh preset: cuts charged for the taper of the blocks they leave, in ranking and values (false: the reward alone)
   bool divide_holes = true;   // a part with kDivideHoles holes or more is divided along its ligaments (hole_division.h), not searched
@@ -66,6 +80,7 @@ class RegionSearchPolicy : public RegionPolicy {
   std::string name() const override { return "search"; }
   RegionAction choose(const RegionEpisode& episode) override;
   bool time_capped() const override { return capped_; }
+  long long work() const override { return work_.spent; }
   // Parts solved so far (for reports and tests).
   size_t solved_parts() const { return memo_.size(); }
   // Candidates not expanded because their value's upper bound could not beat the best (mesh preset).
@@ -90,7 +105,12 @@ class RegionSearchPolicy : public RegionPolicy {
   bool started_ = false;
   bool capped_ = false;
   size_t pruned_ = 0;
-  std::chrono::steady_clock::time_point deadline_;
+  SearchWork work_;
+  bool limited_ = false;  // a time limit was set
+  long long budget_ = 0;  // work units (kSearchWorkPerSecond times the limit)
+  std::chrono::steady_clock::time_point backstop_;
+  // Past the budget, or past the wall clock's backstop.
+  bool late() const;
 };
 
 }  // namespace autoblock

@@ -112,3 +112,29 @@ TEST_CASE("edge intervals: fixed counts hold or are refused with a reason", "[me
   options.target_size = 1e-6;
   CHECK_THROWS_WITH(assign_edge_intervals(m, options), Contains("quadrilaterals (limit"));
 }
+
+TEST_CASE("edge intervals: GLPK's work is counted, the same for the same program", "[mesh][intervals][general]") {
+  // The counts are decided by simplex iterations, not seconds (kIntervalQuickIterations): the same
+  // program gets the same counts and the same work, which mesh_input_face's tries add up.
+  const BlockModel m = block_model(one_block(Ring{{0, 0}, {6, 0}, {4, 2}, {2, 2}}), BlockRules{}, kQ);
+  std::vector<long long> work(3, 0);
+  std::vector<std::vector<int>> counts;
+  for (long long& w : work) {
+    IntervalOptions options;
+    options.target_size = 0.37;
+    options.simplex_work = &w;
+    counts.push_back(assign_edge_intervals(m, options).intervals);
+  }
+  CHECK(work[0] > 0);
+  CHECK(work[1] == work[0]);
+  CHECK(work[2] == work[0]);
+  CHECK(counts[1] == counts[0]);
+  CHECK(counts[2] == counts[0]);
+  // Added to, not set.
+  long long total = 5;
+  IntervalOptions options;
+  options.target_size = 0.37;
+  options.simplex_work = &total;
+  assign_edge_intervals(m, options);
+  CHECK(total == 5 + work[0]);
+}

@@ -295,3 +295,63 @@ TEST_CASE("cuts with the same chords have the same pieces, and cut_region_if sto
   CHECK(told > 2000);
   CHECK(shared > 300);
 }
+
+TEST_CASE("loops_touch: the grid's answer is every vertex against every other loop's edges", "[region][cut]") {
+  // Disks of many holes (more vertices than the brute force takes), a third of the holes put within a
+  // quantum or two of the outer loop or of another hole: the grid of a large part must find every
+  // vertex within a quantum of another loop's edge, as the quadratic reference does.
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double q = 0.01;
+  auto brute = [&](const Region& r) {
+    for (int a = 0; a < r.loop_count(); ++a) {
+      for (int b = 0; b < r.loop_count(); ++b) {
+        if (a == b) continue;
+        const Ring& ring = r.loop(b);
+        for (const Point2& v : r.loop(a)) {
+          for (size_t i = 0; i < ring.size(); ++i) {
+            if (autoblock::segment_distance_squared(v, ring[i], ring[(i + 1) % ring.size()]) <= q * q) return true;
+          }
+        }
+      }
+    }
+    return false;
+  };
+  auto circle = [](Point2 c, double r, int n, bool clockwise) {
+    Ring ring;
+    for (int i = 0; i < n; ++i) {
+      const double t = 2 * M_PI * (clockwise ? n - i : i) / n;
+      ring.push_back({c.x + r * std::cos(t), c.y + r * std::sin(t)});
+    }
+    return ring;
+  };
+  int large = 0, touching = 0;
+  for (int shape = 0; shape < 400; ++shape) {
+    const int n = 20 + static_cast<int>(unit(rng) * 100);
+    const Ring outer = circle({0, 0}, 10, n, false);
+    std::vector<Ring> holes;
+    const int count = 1 + static_cast<int>(unit(rng) * 8);
+    Point2 last{0, 0};
+    for (int h = 0; h < count; ++h) {
+      const double r = 0.5 + unit(rng), t = 2 * M_PI * unit(rng);
+      double d = (8.5 - r) * std::sqrt(unit(rng));
+      if (unit(rng) < 0.2) d = 10 * std::cos(M_PI / n) - r - 2 * q * unit(rng);  // at the outer loop's chord
+      Point2 c{d * std::cos(t), d * std::sin(t)};
+      if (h > 0 && unit(rng) < 0.2) {  // beside the previous hole, a gap of about a quantum
+        const double gap = 2 * r + 2 * q * unit(rng) - 0.5 * q;
+        c = {last.x + gap, last.y};
+      }
+      holes.push_back(circle(c, r, 8 + static_cast<int>(unit(rng) * 40), true));
+      last = c;
+    }
+    const Region part(outer, holes, q);
+    if (part.is_empty()) continue;
+    INFO("shape " << shape);
+    const bool expected = brute(part);
+    CHECK(autoblock::loops_touch(part) == expected);
+    large += part.vertex_count() > 64 ? 1 : 0;
+    touching += expected && part.vertex_count() > 64 ? 1 : 0;
+  }
+  CHECK(large > 300);
+  CHECK(touching > 50);
+}

@@ -52,6 +52,16 @@ double taper_cost(const RegionDecomposition& d) {
 }
 double search_objective(const RegionDecomposition& d) { return d.total_return - taper_cost(d); }
 
+// The two decompositions made the same actions, in the same order.
+void check_same_cuts(const RegionDecomposition& a, const RegionDecomposition& b) {
+  REQUIRE(a.cuts.size() == b.cuts.size());
+  for (size_t k = 0; k < a.cuts.size(); ++k) {
+    CHECK(a.cuts[k].action.kind == b.cuts[k].action.kind);
+    CHECK(a.cuts[k].action.cut.origin == b.cuts[k].action.cut.origin);
+    CHECK(a.cuts[k].action.cut.direction == b.cuts[k].action.cut.direction);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("search on general faces finishes them, never below greedy, and memoises parts", "[region][search]") {
@@ -125,12 +135,7 @@ TEST_CASE("search: branch and bound prunes candidates and decides as the search 
     const RegionDecomposition a = decompose_region(face, bounded, mesh), b = decompose_region(face, exhaustive, mesh);
     REQUIRE(a.complete());
     CHECK(a.total_return == b.total_return);
-    REQUIRE(a.cuts.size() == b.cuts.size());
-    for (size_t k = 0; k < a.cuts.size(); ++k) {
-      CHECK(a.cuts[k].action.kind == b.cuts[k].action.kind);
-      CHECK(a.cuts[k].action.cut.origin == b.cuts[k].action.cut.origin);
-      CHECK(a.cuts[k].action.cut.direction == b.cuts[k].action.cut.direction);
-    }
+    check_same_cuts(a, b);
     CHECK(bounded.solved_parts() <= exhaustive.solved_parts());
     CHECK(exhaustive.pruned_candidates() == 0);
     pruned += bounded.pruned_candidates();
@@ -146,4 +151,39 @@ TEST_CASE("search: branch and bound prunes candidates and decides as the search 
   options.prune = false;
   RegionSearchPolicy exhaustive(options);
   CHECK(decompose_region(face, bounded, paper).total_return == decompose_region(face, exhaustive, paper).total_return);
+}
+
+TEST_CASE("search: its budget is counted in work, so a capped search repeats exactly", "[region][search]") {
+  std::mt19937_64 rng(17);
+  RegionEpisodeOptions mesh;
+  mesh.reward = RewardPreset::Mesh;
+  int capped = 0;
+  for (int i = 0; i < 4; ++i) {
+    const Region face = generated_face(rng, i, 16, 24, 6);
+    RegionSearchOptions options;
+    options.time_limit = 0.0;
+    RegionSearchPolicy unlimited(options);
+    const RegionDecomposition whole = decompose_region(face, unlimited, mesh);
+    REQUIRE(whole.complete());
+    CHECK_FALSE(whole.time_capped);
+    CHECK(whole.work > 0);
+    // A third of that work as the budget: the search is capped there, whatever the machine's speed.
+    options.time_limit = 0.3 * static_cast<double>(whole.work) / kSearchWorkPerSecond;
+    std::vector<RegionDecomposition> runs;
+    for (int k = 0; k < 3; ++k) {
+      RegionSearchPolicy search(options);
+      runs.push_back(decompose_region(face, search, mesh));
+    }
+    REQUIRE(runs[0].complete());
+    if (!runs[0].time_capped) continue;
+    ++capped;
+    CHECK(runs[0].work > std::llround(0.3 * static_cast<double>(whole.work)) - 1);
+    for (int k = 1; k < 3; ++k) {
+      CHECK(runs[k].time_capped);
+      CHECK(runs[k].work == runs[0].work);
+      CHECK(runs[k].total_return == runs[0].total_return);
+      check_same_cuts(runs[k], runs[0]);
+    }
+  }
+  CHECK(capped >= 2);
 }
