@@ -148,10 +148,15 @@ int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices
     }
     return least;
   };
-  // v may move to `to_point` d away: no vertex next to it in a loop lies towards it closer than 2 d,
-  // and its pieces keep their shapes.
+  // Vertices others have been made one with (to[w] == v for some w): a far move of v would take them
+  // along unchecked (a foot made one with a near foot, then moved past its piece's corner, left an
+  // edge three pieces used: a 62-hole plate's template, block_model's logic_error).
+  std::vector<char> joined(n, 0);
+  // v may move to `to_point` d away: v is no vertex others were made one with, no vertex next to it in
+  // a loop lies towards it closer than 2 d, and its pieces keep their shapes.
   const double least_shape = std::sin(20.0 * M_PI / 180.0);
   auto far_move_keeps = [&](int v, Point2 to_point, double d) {
+    if (joined[static_cast<size_t>(v)]) return false;
     const Point2 from = at(v);
     const double ux = (to_point.x - from.x) / d, uy = (to_point.y - from.y) / d;
     for (int w : neighbours[static_cast<size_t>(v)]) {
@@ -198,6 +203,7 @@ int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices
     }
     if (best < 0) continue;
     to[vi] = best;
+    joined[static_cast<size_t>(best)] = 1;
     auto& into = parts[static_cast<size_t>(best)];
     into.insert(into.end(), parts[vi].begin(), parts[vi].end());
     std::sort(into.begin(), into.end());

@@ -604,6 +604,35 @@ TEST_CASE("a bar with a row of holes close to its edges: a tight O-grid in each 
   CHECK(cut.region.finished.size() > 4);
 }
 
+TEST_CASE("the far feet's model of a 62-hole plate: a foot others were made one with stays", "[api][general][mesh][arc]") {
+  // A plate of 62 holes (the perforated set's face 4), searched as mesh's third try under the default
+  // budget (counted in work: the same decomposition on every machine). Its far feet's model
+  // (FeetSnap::far) moved a foot that a neighbour's foot had been made one with, past its piece's
+  // corner: an edge that three pieces used, and block_model's logic_error. Now such a foot does not
+  // move far; the model builds, every edge on one or two blocks' sides.
+  const InputFace face = arc_test_face("perforated-62-holes");
+  const SearchTry& t = kSearchTries[2];
+  DecomposeSettings settings;
+  settings.occt_blocks = false;
+  settings.mesh_tries = false;
+  settings.corner_fraction = t.corner_fraction;
+  settings.cut_smooth_parts = t.cut_smooth_parts;
+  settings.policy_settings.general_tight_ogrid = t.tight_ogrid;
+  settings.policy_settings.general_search_width = t.width;
+  const FaceDecomposition d = decompose_input_face(face, settings);
+  REQUIRE(d.region.complete());
+  BlockModel far;
+  REQUIRE_NOTHROW(far = block_model(d.region, d.region.rules, face.region.quantum(), false, FeetSnap::far));
+  CHECK(far.far_feet());
+  std::vector<int> uses(far.edges.size(), 0);
+  for (const ModelBlock& block : far.blocks) {
+    for (const ModelSide& side : block.sides) {
+      for (const int e : side.edges) ++uses[static_cast<size_t>(e)];
+    }
+  }
+  CHECK(*std::max_element(uses.begin(), uses.end()) <= 2);
+}
+
 TEST_CASE("decompose keeps the decomposition mesh keeps, its cuts, replayed under its rules, mesh the same",
           "[api][general][mesh]") {
   // The hexagon above, whose first try is poor: the tries keep another width, other rules or finer
