@@ -25,7 +25,7 @@ double value_upper_bound(const Region& part, const RegionEpisodeOptions& options
 }  // namespace
 
 bool RegionSearchPolicy::late() const {
-  return limited_ && (work_.spent >= budget_ || std::chrono::steady_clock::now() > backstop_);
+  return limited() && (work_.spent >= budget_ || std::chrono::steady_clock::now() > backstop_);
 }
 
 double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions& options, double face_size) {
@@ -61,7 +61,7 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
   // Only candidates that can be among the `width` best are scored (with pruning on: the same ones).
   const size_t width = late_now ? 1 : static_cast<size_t>(std::max(1, options_.width));
   const bool taper = options_.taper && !late_now && options.reward == RewardPreset::Mesh;
-  work_.stop = !limited_ ? 0
+  work_.stop = !limited() ? 0
                : late_now ? work_.spent + std::llround(kSearchWorkPerSecond *
                                                        late_slice(options_.time_limit, work_.spent > 2 * budget_))
                           : budget_;
@@ -146,8 +146,6 @@ RegionAction RegionSearchPolicy::choose(const RegionEpisode& episode) {
     capped_ = false;
     pruned_ = 0;
     work_ = SearchWork{};
-    limited_ = options_.time_limit > 0.0;
-    budget_ = limited_ ? std::llround(kSearchWorkPerSecond * options_.time_limit) : 0;
     backstop_ = std::chrono::steady_clock::now() +
                 std::chrono::microseconds(std::llround(search_wall_backstop(options_.time_limit) * 1e6));
   }

@@ -30,6 +30,7 @@
 #pragma once
 
 #include <chrono>
+#include <cmath>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -76,7 +77,8 @@ struct RegionSearchOptions {
 
 class RegionSearchPolicy : public RegionPolicy {
  public:
-  explicit RegionSearchPolicy(RegionSearchOptions options = {}) : options_(options) {}
+  explicit RegionSearchPolicy(RegionSearchOptions options = {})
+      : options_(options), budget_(limited() ? std::llround(kSearchWorkPerSecond * options.time_limit) : 0) {}
   std::string name() const override { return "search"; }
   RegionAction choose(const RegionEpisode& episode) override;
   bool time_capped() const override { return capped_; }
@@ -106,9 +108,9 @@ class RegionSearchPolicy : public RegionPolicy {
   bool capped_ = false;
   size_t pruned_ = 0;
   SearchWork work_;
-  bool limited_ = false;  // a time limit was set
-  long long budget_ = 0;  // work units (kSearchWorkPerSecond times the limit)
+  long long budget_;      // work units (kSearchWorkPerSecond times the limit; 0 without one)
   std::chrono::steady_clock::time_point backstop_;
+  bool limited() const { return options_.time_limit > 0.0; }
   // Past the budget, or past the wall clock's backstop.
   bool late() const;
 };
