@@ -68,19 +68,19 @@ Action AutoPolicy::choose(const Episode& episode) {
     decided_by_ = "greedy";
     return GreedyPolicy().choose(episode);
   }
+  // The search's budgets are counted in work (optimal_search.h), so that a face decomposes the same
+  // on every machine; the whole decomposition's limit stays on the wall clock (it bounds the learned
+  // fallback too).
   const double left = options_.search_seconds - searched_;
   if (left > 0) {
-    const auto begin = std::chrono::steady_clock::now();
-    double budget = std::min(options_.part_seconds, left);
-    if (options_.total_seconds > 0) budget = std::min(budget, options_.total_seconds - seconds_since(start_));
-    search_->set_budget(std::max(budget, 1e-6));
+    search_->set_budget(std::max(std::min(options_.part_seconds, left), 1e-6));
     try {
       const AxisLine line = search_->best_line(episode.current_part());
-      searched_ += seconds_since(begin);
+      searched_ += static_cast<double>(search_->work()) / kOptimalWorkPerSecond;
       decided_by_ = "optimal";
       return action_on_line(episode, line);
     } catch (const OptimalSearch::TimeLimit&) {
-      searched_ += seconds_since(begin);
+      searched_ += static_cast<double>(search_->work()) / kOptimalWorkPerSecond;
     }
   }
   return fallback(episode);

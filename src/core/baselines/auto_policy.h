@@ -51,7 +51,7 @@ class AutoPolicy : public Policy {
   bool fallback_failed_ = false;
   bool started_ = false;
   std::chrono::steady_clock::time_point start_;
-  double searched_ = 0.0;  // seconds spent in the exact search
+  double searched_ = 0.0;  // the exact search's work so far, in seconds of it (kOptimalWorkPerSecond)
   bool capped_ = false;
   std::string decided_by_ = "auto";
 };

@@ -1,27 +1,26 @@
 #include "core/baselines/optimal_search.h"
 
+#include <cmath>
 #include <limits>
 #include <set>
 #include <utility>
 
 #include "core/baselines/greedy_policy.h"
+#include "core/common/wall_backstop.h"
 #include "core/geometry/part_boundary.h"
 
 namespace autoblock {
 
-OptimalSearch::OptimalSearch(double face_size, double seconds, RewardPreset reward)
-    : face_size_(face_size),
-      reward_(reward),
-      limited_(seconds > 0),
-      deadline_(std::chrono::steady_clock::now() +
-                std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(
-                    seconds > 0 ? seconds : 0.0))) {}
+OptimalSearch::OptimalSearch(double face_size, double seconds, RewardPreset reward) : face_size_(face_size), reward_(reward) {
+  set_budget(seconds);
+}
 
 void OptimalSearch::set_budget(double seconds) {
   limited_ = seconds > 0;
-  deadline_ = std::chrono::steady_clock::now() +
-              std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                  std::chrono::duration<double>(seconds > 0 ? seconds : 0.0));
+  budget_ = limited_ ? std::llround(kOptimalWorkPerSecond * seconds) : 0;
+  work_ = 0;
+  deadline_ = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                     std::chrono::duration<double>(limited_ ? search_wall_backstop(seconds) : 0.0));
   calls_ = 0;
 }
 
@@ -32,7 +31,7 @@ AxisLine OptimalSearch::best_line(const Part& part) { return solve(part).line; }
 const OptimalSearch::Entry& OptimalSearch::solve(const Part& part) {
   const auto found = memo_.find(part);
   if (found != memo_.end()) return found->second;
-  if (limited_ && (++calls_ & 255) == 0 && std::chrono::steady_clock::now() > deadline_) throw TimeLimit();
+  if (limited_ && (work_ > budget_ || ((++calls_ & 255) == 0 && std::chrono::steady_clock::now() > deadline_))) throw TimeLimit();
 
   std::set<std::pair<int, int>> lines;  // (direction, index), each line once
   for (const CornerRing& loop : part_boundary(part)) {
@@ -41,6 +40,7 @@ const OptimalSearch::Entry& OptimalSearch::solve(const Part& part) {
       lines.emplace(static_cast<int>(CutDirection::Vertical), c.i);
     }
   }
+  work_ += static_cast<long long>(lines.size() + 1) * part.width_cells() * part.height_cells();
   Entry best{-std::numeric_limits<double>::infinity(), AxisLine{}};
   for (const auto& [direction, index] : lines) {
     const AxisLine line{static_cast<CutDirection>(direction), index};

@@ -7,7 +7,14 @@
 // Cuts that change nothing (N = 1) never help: they leave the part as it was at a negative reward
 // (3/R - 6 under Eq. (1), -3 under the mesh preset). V is
 // memoised on the part's cells (parts recur across branches), and the search stops with
-// OptimalSearch::TimeLimit when its time budget runs out.
+// OptimalSearch::TimeLimit when its budget runs out.
+//
+// The budget is counted in work, not wall time, so that a face decomposes the same on every machine
+// and under any load: each part solved charges its bounding box's cells for every line tried, and one
+// more time (the part's boundary); a budget of s seconds is s * kOptimalWorkPerSecond units, what the
+// search got through in a second on the machine its figures were measured on (BENCHMARKS.md, "`auto`'s
+// and `optimal`'s search budgets in work"). The wall clock only backs it (search_wall_backstop,
+// common/wall_backstop.h).
 #pragma once
 
 #include <chrono>
@@ -21,14 +28,16 @@
 
 namespace autoblock {
 
+constexpr double kOptimalWorkPerSecond = 6.0e7;
+
 class OptimalSearch {
  public:
   struct TimeLimit : std::runtime_error {
     TimeLimit() : std::runtime_error("the optimal search ran out of time") {}
   };
 
-  // Inputs: face_size, the face's longer bounding-box side (reward scale); seconds, the time budget
-  // counted from construction (<= 0: unlimited); reward, the preset to maximise.
+  // Inputs: face_size, the face's longer bounding-box side (reward scale); seconds, the budget (as
+  // work, above) counted from construction (<= 0: unlimited); reward, the preset to maximise.
   OptimalSearch(double face_size, double seconds, RewardPreset reward = RewardPreset::Paper);
 
   // Inputs: part. Output: V(part). Throws TimeLimit.
@@ -36,9 +45,11 @@ class OptimalSearch {
   // Inputs: part, not a rectangle. Output: the first line reaching V(part). Throws TimeLimit.
   AxisLine best_line(const Part& part);
   size_t memo_size() const { return memo_.size(); }
-  // Inputs: seconds, a new budget counted from now (<= 0: unlimited). The memo is kept: every value
-  // in it is exact (a search stopped by TimeLimit memoises nothing it did not finish).
+  // Inputs: seconds, a new budget (as work) counted from now (<= 0: unlimited). The memo is kept:
+  // every value in it is exact (a search stopped by TimeLimit memoises nothing it did not finish).
   void set_budget(double seconds);
+  // The work done since the last budget was set (or since construction), in units (above).
+  long long work() const { return work_; }
 
  private:
   struct Entry {
@@ -50,7 +61,9 @@ class OptimalSearch {
   double face_size_;
   RewardPreset reward_;
   bool limited_;
-  std::chrono::steady_clock::time_point deadline_;
+  long long budget_ = 0;  // work units (kOptimalWorkPerSecond times the seconds)
+  long long work_ = 0;
+  std::chrono::steady_clock::time_point deadline_;  // the wall-clock backstop
   long calls_ = 0;
   std::unordered_map<Part, Entry, PartHash> memo_;
 };

@@ -35,6 +35,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "core/common/wall_backstop.h"
 #include "core/region/hole_division.h"
 #include "core/region/region_policy.h"
 
@@ -43,16 +44,9 @@ namespace autoblock {
 // The search's budget is counted in work (SearchWork, region_policy.h), not wall time, so that a face
 // decomposes the same on every machine and under any load: time_limit seconds are
 // time_limit * kSearchWorkPerSecond units, what the search's scoring got through in a second on the
-// machine its figures were measured on (BENCHMARKS.md, "A budget in work"). The wall clock only backs it:
-// past search_wall_backstop(time_limit) seconds (kSearchWallBackstop times it, a machine that much
-// slower, and at least kSearchWallFloor more than it), parts are finished as past the budget.
+// machine its figures were measured on (BENCHMARKS.md, "A budget in work"). The wall clock only backs it
+// (search_wall_backstop, common/wall_backstop.h): past that, parts are finished as past the budget.
 constexpr double kSearchWorkPerSecond = 7.0e6;
-constexpr double kSearchWallBackstop = 4.0;
-constexpr double kSearchWallFloor = 1.0;
-inline double search_wall_backstop(double time_limit) {
-  const double times = kSearchWallBackstop * time_limit, floor = time_limit + kSearchWallFloor;
-  return times > floor ? times : floor;
-}
 
 // Past the search's budget, the work each part's greedy scoring may take (see solve), in seconds of
 // it: 2 % of the budget, a tenth of that once twice the budget has passed (a face of a thousand

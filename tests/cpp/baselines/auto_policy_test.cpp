@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <chrono>
+#include <cstdlib>
 #include <set>
 #include <thread>
 
@@ -82,6 +83,44 @@ TEST_CASE("auto hands a part to its fallback when the search runs out of time, a
   const std::set<std::string> deciders(d.decided_by.begin(), d.decided_by.end());
   CHECK(deciders.count("stand-in") == 1);
   CHECK_FALSE(d.time_capped);
+}
+
+TEST_CASE("auto's search budgets are counted in work: the same cuts by the same deciders on every run", "[baselines][auto]") {
+  GeneratorOptions generator;
+  generator.min_rects = 30;
+  generator.max_rects = 40;
+  generator.holes = true;
+  const GridFace face = make_grid_face(test::generated_shapes(1, 17, generator)[0].polygon);
+  OptimalSearch full(face.size, 0, RewardPreset::Mesh);
+  full.value(face.whole);
+  const double whole = static_cast<double>(full.work()) / kOptimalWorkPerSecond;  // in seconds of work
+  AutoPolicyOptions options;
+  options.part_seconds = 0.3 * whole;  // the face's first part runs out; its pieces may not
+  options.search_seconds = 0.6 * whole;
+  std::vector<std::string> first_deciders;
+  std::vector<CutRecord> first_cuts;
+  for (int run = 0; run < 3; ++run) {
+    // A fallback slow enough that a wall-clock budget would run out at another cut each run.
+    AutoPolicy policy(face.size, options, [] { return std::make_unique<NamedGreedy>(nullptr, 0.001 * (1 + std::rand() % 5)); });
+    const Decomposition d = decompose_face(face, policy, mesh_options());
+    REQUIRE(d.complete());
+    const std::vector<CutRecord>& cuts = d.cuts;
+    if (run == 0) {
+      first_deciders = d.decided_by;
+      first_cuts = cuts;
+      const std::set<std::string> deciders(d.decided_by.begin(), d.decided_by.end());
+      CHECK(deciders.count("stand-in") == 1);
+      CHECK(deciders.count("optimal") == 1);
+    }
+    CHECK(d.decided_by == first_deciders);
+    REQUIRE(cuts.size() == first_cuts.size());
+    for (size_t k = 0; k < cuts.size(); ++k) {
+      CHECK(cuts[k].part_id == first_cuts[k].part_id);
+      CHECK(cuts[k].position.x == first_cuts[k].position.x);
+      CHECK(cuts[k].position.y == first_cuts[k].position.y);
+      CHECK(cuts[k].direction == first_cuts[k].direction);
+    }
+  }
 }
 
 TEST_CASE("auto without a fallback finishes greedily and names greedy", "[baselines][auto]") {

@@ -86,3 +86,35 @@ TEST_CASE("under the mesh preset optimal needs close to the minimum number of bl
   }
   CHECK(blocks <= 1.05 * minimum);
 }
+
+TEST_CASE("the exact search's budget is counted in work: it stops at the same place on every run", "[baselines][optimal]") {
+  GeneratorOptions options;
+  options.min_rects = 30;
+  options.max_rects = 40;
+  options.holes = true;
+  const GridFace face = make_grid_face(test::generated_shapes(1, 17, options)[0].polygon);
+  OptimalSearch full(face.size, 0, RewardPreset::Mesh);
+  const double value = full.value(face.whole);
+  const long long work = full.work();
+  REQUIRE(work > 1000);
+  // A third of that budget: stopped, each time after the same work with the same values memoised.
+  const double seconds = static_cast<double>(work) / 3.0 / kOptimalWorkPerSecond;
+  long long stopped_at = -1;
+  size_t memo = 0;
+  for (int run = 0; run < 3; ++run) {
+    OptimalSearch search(face.size, seconds, RewardPreset::Mesh);
+    CHECK_THROWS_AS(search.value(face.whole), OptimalSearch::TimeLimit);
+    CHECK(search.work() > std::llround(seconds * kOptimalWorkPerSecond));
+    CHECK(search.work() < work);
+    if (run == 0) {
+      stopped_at = search.work();
+      memo = search.memo_size();
+    }
+    CHECK(search.work() == stopped_at);
+    CHECK(search.memo_size() == memo);
+  }
+  // Budget enough: the full search, its value and work.
+  OptimalSearch enough(face.size, 1.01 * static_cast<double>(work) / kOptimalWorkPerSecond, RewardPreset::Mesh);
+  CHECK(enough.value(face.whole) == Approx(value));
+  CHECK(enough.work() == work);
+}
