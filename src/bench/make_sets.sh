@@ -22,4 +22,8 @@ gen r-thin-2-10 --count 100 --seed 804 "${thin32[@]}"
 gen r-thin-11-40 --count 50 --seed 805 "${thin64[@]}"
 gen r-thin-11-40-holes --count 50 --seed 806 "${thin64[@]}" --holes
 gen r-thin-41-80 --count 20 --seed 807 --grid 96 --min-side 4 --max-side 30 --min-rects 41 --max-rects 80
+# Larger faces with holes, whose exact search runs into auto's budget ("auto's and optimal's search
+# budgets in work").
+gen x-60-100-holes --count 30 --seed 901 --min-rects 60 --max-rects 100 --holes
+gen x-thin-41-80-holes --count 30 --seed 902 --grid 96 --min-side 4 --max-side 30 --min-rects 41 --max-rects 80 --holes
 echo "sets in $out"
