@@ -17,7 +17,7 @@ void PolicyArguments::add_to(CLI::App& command) {
   command.add_option("--max-steps", max_steps, "step cap per face (0: 10 x corners + 10)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  time_limit_option_ = command.add_option("--time-limit", time_limit, "seconds per face before greedy finishes the remaining parts (optimal, auto and learned policies; on faces with edges at other angles, the search's and a learned policy's budget, default 2); the searches' budgets (optimal's, auto's exact search, the general search) are counted in work, about that many seconds, so a face decomposes the same on any machine")
+  time_limit_option_ = command.add_option("--time-limit", time_limit, "seconds per face before greedy finishes the remaining parts (optimal, auto and learned policies; on faces with edges at other angles, the search's and a learned policy's budget, default 2); the searches' budgets (optimal's, auto's exact search, the general search) and a learned policy's on general faces are counted in work, about that many seconds, so a face decomposes the same on any machine")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command.add_option("--reward", reward, "reward preset: paper (Eq. 1) | mesh (few, fat blocks); default: the policy's own")

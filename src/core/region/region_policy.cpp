@@ -14,6 +14,7 @@
 
 #include "core/region/region_candidates.h"
 #include "core/region/region_reward.h"
+#include "core/region/region_search.h"
 
 namespace autoblock {
 
@@ -195,9 +196,11 @@ RegionAction TimedRegionPolicy::choose(const RegionEpisode& episode) {
     started_ = true;
     capped_ = false;
     face_hash_ = episode.face().hash();
-    deadline_ = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds_));
+    start_work_ = policy_->work();
+    deadline_ = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                          std::chrono::duration<double>(seconds_ > 0.0 ? search_wall_backstop(seconds_) : 0.0));
   }
-  if (seconds_ > 0.0 && now > deadline_) {
+  if (seconds_ > 0.0 && (policy_->work() - start_work_ > std::llround(kSearchWorkPerSecond * seconds_) || now > deadline_)) {
     capped_ = true;
     return greedy_.choose(episode);
   }

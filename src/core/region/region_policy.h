@@ -50,9 +50,11 @@ class RegionRandomPolicy : public RegionPolicy {
 };
 
 // A policy with a time budget per face (a learned policy on general faces: what the grid's learned
-// policies do under --time-limit): the wrapped policy chooses until `seconds` have passed since its
-// first choice on the face, then greedy finishes the parts left and time_capped() says so. A new face
-// (another face, or an episode at its first step) starts the clock again.
+// policies do under --time-limit): the wrapped policy chooses until its work on the face (work(), in
+// the search's units) passes `seconds` x kSearchWorkPerSecond (region_search.h), then greedy finishes
+// the parts left and time_capped() says so. Counted, not timed, so that a face decomposes the same on
+// every machine; the wall clock backs it (search_wall_backstop). A new face (another face, or an
+// episode at its first step) starts the count again.
 // Inputs: policy, not null; seconds (<= 0: no limit, the policy alone).
 class TimedRegionPolicy : public RegionPolicy {
  public:
@@ -70,7 +72,8 @@ class TimedRegionPolicy : public RegionPolicy {
   size_t face_hash_ = 0;
   bool started_ = false;
   bool capped_ = false;
-  std::chrono::steady_clock::time_point deadline_;
+  long long start_work_ = 0;  // the policy's work when the face began
+  std::chrono::steady_clock::time_point deadline_;  // the wall-clock backstop
 };
 
 // The best candidate by immediate reward, with its outcome (shared by greedy and search).

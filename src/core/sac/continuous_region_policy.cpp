@@ -18,6 +18,7 @@ RegionAction ContinuousRegionPolicy::choose(const RegionEpisode& episode) {
   const Region& part = episode.current_part();
   const BlockRules& rules = episode.options().rules;
   const auto state = general_state(part, config_.graph);
+  work_ += kContinuousGraphEdgeWork * state->graph.edge_count();
   const std::vector<float> values = agent_->vertex_values(*state);
   const float finish = template_choice_reward(part, episode.options().reward, episode.face_size(), rules);
   std::vector<size_t> order(values.size());
@@ -31,6 +32,7 @@ RegionAction ContinuousRegionPolicy::choose(const RegionEpisode& episode) {
     }
     RegionAction action;
     action.cut = cut_of_angle(part, static_cast<int>(order[k]), agent_->angle_action(state->observations[order[k]], nullptr));
+    work_ += part.vertex_count();
     if (makes_progress(part, episode.outcome_of(action).pieces, rules)) return action;
   }
   if (!std::isnan(finish)) {

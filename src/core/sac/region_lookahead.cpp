@@ -12,7 +12,8 @@
 
 namespace autoblock {
 
-RegionLookahead region_look_ahead(const Region& part, double face_size, const RegionEpisodeOptions& options, bool taper) {
+RegionLookahead region_look_ahead(const Region& part, double face_size, const RegionEpisodeOptions& options, bool taper,
+                                  SearchWork* work) {
   RegionLookahead result;
   const double scale = lookahead_reward_scale(options.reward);
   // The vertex each candidate starts at, by its origin (candidates start at a vertex exactly).
@@ -30,7 +31,7 @@ RegionLookahead region_look_ahead(const Region& part, double face_size, const Re
   // As the search expands them whatever their reward (region_search.cpp): the O-grid on a part with a
   // hole, the template on a reflex fillet's corner piece.
   const bool finishing_template = !part.holes().empty() || !concave_runs(part.outer(), options.rules).empty();
-  for (ScoredAction& scored : score_candidates(part, face_size, options, nullptr, 0, taper)) {
+  for (ScoredAction& scored : score_candidates(part, face_size, options, work, 0, taper)) {
     RegionCandidate c;
     c.action = scored.action;
     c.reward = scored.reward;

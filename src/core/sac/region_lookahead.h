@@ -49,9 +49,10 @@ struct RegionLookahead {
 // Outputs: its lookahead (above). Deterministic.
 // taper: each candidate's reward less the taper charge of the blocks it leaves (score_candidates,
 //         region_policy.h; the search's ranking under the mesh preset), in the candidates and the
-//         summaries alike.
+//         summaries alike. work (optional): charged for the candidates measured, as the search's is
+//         (SearchWork, never stopped here).
 RegionLookahead region_look_ahead(const Region& part, double face_size, const RegionEpisodeOptions& options,
-                                  bool taper = false);
+                                  bool taper = false, SearchWork* work = nullptr);
 
 // Inputs:  candidates; keep, how many (0: all).
 // Outputs: the indices (increasing) of the keep candidates with the best reward, the earlier among

@@ -41,8 +41,11 @@ std::vector<double> RegionLookaheadPolicy::values_of(const std::vector<const Reg
     }
   }
   if (!fresh.empty()) {
+    RegionStateOptions options = state_options(episode, face_size);
+    options.work = &work_;
     for (const Region& piece : fresh) {
-      keep.push_back(make_region_state(piece, state_options(episode, face_size)));
+      keep.push_back(make_region_state(piece, options));
+      work_.spent += kLookaheadGraphEdgeWork * keep.back()->graph.edge_count();
       batch.push_back(keep.back().get());
     }
     const std::vector<double> w = agent_->deployed_values(batch);
@@ -66,6 +69,7 @@ std::vector<const RegionCandidate*> RegionLookaheadPolicy::contenders(const Regi
   proposed.clear();
   for (auto& proposal : agent_->propose_cuts(part, state, face_size, episode.rules, nullptr)) {
     ++deploy_profile().proposals;
+    work_.spent += part.vertex_count();  // its cut measured, as a candidate is
     if (proposal.candidate) proposed.push_back(std::move(*proposal.candidate));
   }
   deploy_profile().proposals_progress += static_cast<long>(proposed.size());
@@ -79,7 +83,10 @@ RegionAction RegionLookaheadPolicy::choose(const RegionEpisode& episode) {
     face_hash_ = episode.face().hash();
   }
   const Region& part = episode.current_part();
-  const auto state = make_region_state(part, state_options(episode.options(), episode.face_size()));
+  RegionStateOptions options = state_options(episode.options(), episode.face_size());
+  options.work = &work_;
+  const auto state = make_region_state(part, options);
+  work_.spent += kLookaheadGraphEdgeWork * state->graph.edge_count();
   if (state->candidates.empty()) return progress_action(part, episode.options().rules);
   std::vector<RegionCandidate> proposed;
   const std::vector<const RegionCandidate*> which = contenders(part, *state, episode.options(), episode.face_size(), proposed);

@@ -26,11 +26,21 @@
 
 namespace autoblock {
 
+// What its choices cost, counted (work(), in the search's units, so that TimedRegionPolicy's budget is
+// the search's: kSearchWorkPerSecond): the candidates measured on the part and on each piece valued, as
+// the search counts them (SearchWork), and kLookaheadGraphEdgeWork per directed edge of each state's
+// graph made (its triangulation, the value network's and the actor's passes over it). Measured with
+// sac-mesh on this machine (BENCHMARKS.md, "`auto`'s and `optimal`'s search budgets in work"): 42 units
+// an edge is the median over 34 general faces whose decomposition took over 0.05 s; counted against
+// wall time, polygons of 13-40 vertices 1.00, faces with arcs 1.06, plates with holes 0.82 (medians).
+constexpr long long kLookaheadGraphEdgeWork = 42;
+
 class RegionLookaheadPolicy : public RegionPolicy {
  public:
   RegionLookaheadPolicy(std::shared_ptr<LookaheadAgent> agent, std::string name);
   std::string name() const override { return name_; }
   RegionAction choose(const RegionEpisode& episode) override;
+  long long work() const override { return work_.spent; }
   // Inputs: state, a part's (state_options: with lookahead); the episode's options; face_size.
   // Output: Q of each of state.candidates.
   std::vector<double> action_values(const RegionPartState& state, const RegionEpisodeOptions& episode, double face_size);
@@ -57,6 +67,7 @@ class RegionLookaheadPolicy : public RegionPolicy {
   std::string name_;
   size_t face_hash_ = 0;
   std::unordered_map<Region, double, RegionHash> values_;  // W of the pieces valued in this face
+  SearchWork work_;  // counted, never stopped (above)
 };
 
 }  // namespace autoblock

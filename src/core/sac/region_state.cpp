@@ -19,7 +19,7 @@ std::shared_ptr<const RegionPartState> make_region_state(const Region& region, c
     throw std::logic_error("make_region_state: graph and observations disagree on the vertices");
   }
   if (!options.lookahead) return state;
-  RegionLookahead lookahead = region_look_ahead(region, options.face_size, options.episode, options.taper);
+  RegionLookahead lookahead = region_look_ahead(region, options.face_size, options.episode, options.taper, options.work);
   set_lookahead_features(*state, lookahead.vertex_features, lookahead.scale);
   state->candidates = std::move(lookahead.candidates);
   return state;

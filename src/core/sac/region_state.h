@@ -20,6 +20,7 @@ struct RegionStateOptions {
   RegionEpisodeOptions episode;    // lookahead: the reward preset and block rules to look ahead with
   double face_size = 1.0;          // lookahead: the longer side of the face's bounding box
   bool taper = false;              // lookahead: rewards less the taper charge (region_look_ahead)
+  SearchWork* work = nullptr;      // lookahead: charged for the candidates measured (not part of the state)
 };
 
 struct RegionPartState : PartState {

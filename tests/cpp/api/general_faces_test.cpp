@@ -718,6 +718,27 @@ TEST_CASE("a lookahead agent's trained policy decomposes general faces by name, 
   CHECK(capped.region.complete());
   CHECK(capped.region.time_capped);
   CHECK(capped.region.policy == "sac-mesh");
+  // That budget is counted work (the lookahead's candidates and graphs), not time: half of what the
+  // whole decomposition counts caps it at the same choice on every run.
+  settings.policy_settings.general_time_limit = 100.0;
+  const FaceDecomposition whole = decompose_input_face(face, settings);
+  REQUIRE_FALSE(whole.region.time_capped);
+  REQUIRE(whole.region.work > 0);
+  settings.policy_settings.general_time_limit = 0.5 * static_cast<double>(whole.region.work) / kSearchWorkPerSecond;
+  const FaceDecomposition half = decompose_input_face(face, settings);
+  CHECK(half.region.time_capped);
+  CHECK(half.region.work < whole.region.work);
+  for (int run = 0; run < 2; ++run) {
+    const FaceDecomposition again = decompose_input_face(face, settings);
+    CHECK(again.region.work == half.region.work);
+    CHECK(again.region.policy_steps == half.region.policy_steps);
+    REQUIRE(again.region.cuts.size() == half.region.cuts.size());
+    for (size_t k = 0; k < half.region.cuts.size(); ++k) {
+      CHECK(again.region.cuts[k].action.cut.origin.x == half.region.cuts[k].action.cut.origin.x);
+      CHECK(again.region.cuts[k].action.cut.origin.y == half.region.cuts[k].action.cut.origin.y);
+      CHECK(again.region.cuts[k].action.cut.direction.x == half.region.cuts[k].action.cut.direction.x);
+    }
+  }
   settings.policy_settings.general_time_limit = 2.0;
   settings.policy = "sac-faithful";
   CHECK_THROWS_WITH(decompose_input_face(face, settings), Catch::Contains("the paper's agent"));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <cmath>
 #include <random>
@@ -365,17 +366,23 @@ TEST_CASE("a part with two corners that the smooth template does not take: cut u
 
 namespace {
 
-// A policy that counts its choices and takes 2 ms over each (a slow learned policy's stand-in).
+// A policy that counts its choices and takes 2 ms over each, or 1-5 ms at random (a slow learned
+// policy's stand-in), each counted as 1000 units of work.
 class SlowGreedy : public RegionPolicy {
  public:
+  explicit SlowGreedy(bool random_sleep = false) : random_sleep_(random_sleep) {}
   std::string name() const override { return "slow"; }
   RegionAction choose(const RegionEpisode& episode) override {
     ++calls;
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    std::this_thread::sleep_for(std::chrono::milliseconds(random_sleep_ ? 1 + std::rand() % 5 : 2));
     return greedy.choose(episode);
   }
+  long long work() const override { return 1000LL * calls; }
   int calls = 0;
   RegionGreedyPolicy greedy;
+
+ private:
+  bool random_sleep_;
 };
 
 }  // namespace
@@ -414,4 +421,27 @@ TEST_CASE("a timed policy: past its budget greedy finishes the face, and a new f
   const RegionDecomposition again = decompose_region(face, timed, options);
   CHECK(inner->calls == 2);
   CHECK(again.time_capped);
+}
+
+TEST_CASE("a timed policy's budget is its counted work: the same choices however long they take", "[region][policy]") {
+  std::mt19937_64 rng(20261206);
+  GeneralOptions generate;
+  generate.min_vertices = generate.max_vertices = 24;
+  const Region face = face_region(generate_general_shape(rng, generate));
+  RegionEpisodeOptions options;
+  options.reward = RewardPreset::Mesh;
+  // 3 500 units: the policy's first four choices (0, 1 000, 2 000 and 3 000 units spent before them),
+  // then greedy's, whatever each choice's wall time.
+  const double seconds = 3500.0 / kSearchWorkPerSecond;
+  for (int run = 0; run < 3; ++run) {
+    auto slow = std::make_unique<SlowGreedy>(true);
+    SlowGreedy* inner = slow.get();
+    TimedRegionPolicy timed(std::move(slow), seconds);
+    const RegionDecomposition d = decompose_region(face, timed, options);
+    REQUIRE(d.complete());
+    REQUIRE(d.cuts.size() > 4);
+    CHECK(inner->calls == 4);
+    CHECK(d.time_capped);
+    CHECK(d.work == 4000);
+  }
 }
