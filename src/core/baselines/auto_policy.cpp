@@ -74,13 +74,16 @@ Action AutoPolicy::choose(const Episode& episode) {
   const double left = options_.search_seconds - searched_;
   if (left > 0) {
     search_->set_budget(std::max(std::min(options_.part_seconds, left), 1e-6));
+    std::optional<AxisLine> line;
     try {
-      const AxisLine line = search_->best_line(episode.current_part());
-      searched_ += static_cast<double>(search_->work()) / kOptimalWorkPerSecond;
-      decided_by_ = "optimal";
-      return action_on_line(episode, line);
+      line = search_->best_line(episode.current_part());
     } catch (const OptimalSearch::TimeLimit&) {
-      searched_ += static_cast<double>(search_->work()) / kOptimalWorkPerSecond;
+      // the fallback cuts this part
+    }
+    searched_ += static_cast<double>(search_->work()) / kOptimalWorkPerSecond;
+    if (line) {
+      decided_by_ = "optimal";
+      return action_on_line(episode, *line);
     }
   }
   return fallback(episode);

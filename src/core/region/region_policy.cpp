@@ -192,15 +192,13 @@ TimedRegionPolicy::TimedRegionPolicy(std::unique_ptr<RegionPolicy> policy, doubl
 
 RegionAction TimedRegionPolicy::choose(const RegionEpisode& episode) {
   const auto now = std::chrono::steady_clock::now();
-  if (!started_ || episode.face().hash() != face_hash_ || episode.steps() == 0) {
-    started_ = true;
+  if (face_start_(episode)) {
     capped_ = false;
-    face_hash_ = episode.face().hash();
-    start_work_ = policy_->work();
     deadline_ = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                           std::chrono::duration<double>(seconds_ > 0.0 ? search_wall_backstop(seconds_) : 0.0));
+    return policy_->choose(episode);  // its work() counts this face's from here
   }
-  if (seconds_ > 0.0 && (policy_->work() - start_work_ > std::llround(kSearchWorkPerSecond * seconds_) || now > deadline_)) {
+  if (seconds_ > 0.0 && (policy_->work() > std::llround(kSearchWorkPerSecond * seconds_) || now > deadline_)) {
     capped_ = true;
     return greedy_.choose(episode);
   }

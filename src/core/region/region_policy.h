@@ -33,6 +33,23 @@ class RegionPolicy {
   virtual long long work() const { return 0; }
 };
 
+// What a policy keeps per face (a memo, a budget, its work) starts again at a new face: another face
+// than the last choice's, or an episode at its first step.
+class FaceStart {
+ public:
+  // Inputs: episode, about to be chosen for. Output: true when it begins a new face (then remembered).
+  bool operator()(const RegionEpisode& episode) {
+    if (started_ && episode.face().hash() == hash_ && episode.steps() > 0) return false;
+    started_ = true;
+    hash_ = episode.face().hash();
+    return true;
+  }
+
+ private:
+  bool started_ = false;
+  size_t hash_ = 0;
+};
+
 class RegionGreedyPolicy : public RegionPolicy {
  public:
   std::string name() const override { return "greedy"; }
@@ -50,11 +67,11 @@ class RegionRandomPolicy : public RegionPolicy {
 };
 
 // A policy with a time budget per face (a learned policy on general faces: what the grid's learned
-// policies do under --time-limit): the wrapped policy chooses until its work on the face (work(), in
-// the search's units) passes `seconds` x kSearchWorkPerSecond (region_search.h), then greedy finishes
-// the parts left and time_capped() says so. Counted, not timed, so that a face decomposes the same on
-// every machine; the wall clock backs it (search_wall_backstop). A new face (another face, or an
-// episode at its first step) starts the count again.
+// policies do under --time-limit): the wrapped policy makes a face's first choice, and chooses on
+// until its work on the face (work(), in the search's units) passes `seconds` x kSearchWorkPerSecond
+// (region_search.h); then greedy finishes the parts left and time_capped() says so. Counted, not
+// timed, so that a face decomposes the same on every machine; the wall clock backs it
+// (search_wall_backstop). A new face (FaceStart) starts the count again.
 // Inputs: policy, not null; seconds (<= 0: no limit, the policy alone).
 class TimedRegionPolicy : public RegionPolicy {
  public:
@@ -69,10 +86,8 @@ class TimedRegionPolicy : public RegionPolicy {
   std::unique_ptr<RegionPolicy> policy_;
   double seconds_;
   RegionGreedyPolicy greedy_;
-  size_t face_hash_ = 0;
-  bool started_ = false;
+  FaceStart face_start_;
   bool capped_ = false;
-  long long start_work_ = 0;  // the policy's work when the face began
   std::chrono::steady_clock::time_point deadline_;  // the wall-clock backstop
 };
 

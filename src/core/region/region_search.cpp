@@ -137,12 +137,10 @@ double RegionSearchPolicy::solve(const Region& part, const RegionEpisodeOptions&
 }
 
 RegionAction RegionSearchPolicy::choose(const RegionEpisode& episode) {
-  if (!started_ || episode.face().hash() != face_hash_ || episode.steps() == 0) {
+  if (face_start_(episode)) {
     memo_.clear();
     centres_.clear();
     divided_.clear();
-    face_hash_ = episode.face().hash();
-    started_ = true;
     capped_ = false;
     pruned_ = 0;
     work_ = SearchWork{};

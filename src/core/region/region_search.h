@@ -97,8 +97,7 @@ class RegionSearchPolicy : public RegionPolicy {
   // The pieces a hole division left (a plate's strips): those with two holes that divide_sector does
   // not divide go to divide_holes too.
   std::unordered_set<Region, RegionHash> divided_;
-  size_t face_hash_ = 0;
-  bool started_ = false;
+  FaceStart face_start_;
   bool capped_ = false;
   size_t pruned_ = 0;
   SearchWork work_;

@@ -15,6 +15,7 @@ std::vector<float> ContinuousRegionPolicy::vertex_scores(const RegionEpisode& ep
 
 RegionAction ContinuousRegionPolicy::choose(const RegionEpisode& episode) {
   constexpr size_t kTries = 8;  // vertices tried, by value, before progress_action
+  if (face_start_(episode)) work_ = 0;
   const Region& part = episode.current_part();
   const BlockRules& rules = episode.options().rules;
   const auto state = general_state(part, config_.graph);

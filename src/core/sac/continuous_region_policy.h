@@ -33,7 +33,8 @@ class ContinuousRegionPolicy : public RegionPolicy {
   std::shared_ptr<ContinuousSacAgent> agent_;
   SacConfig config_;
   std::string name_;
-  long long work_ = 0;
+  FaceStart face_start_;
+  long long work_ = 0;  // this face's
 };
 
 }  // namespace autoblock

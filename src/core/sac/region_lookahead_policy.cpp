@@ -78,9 +78,9 @@ std::vector<const RegionCandidate*> RegionLookaheadPolicy::contenders(const Regi
 }
 
 RegionAction RegionLookaheadPolicy::choose(const RegionEpisode& episode) {
-  if (episode.face().hash() != face_hash_ || episode.steps() == 0) {
+  if (face_start_(episode)) {
     values_.clear();
-    face_hash_ = episode.face().hash();
+    work_ = SearchWork{};
   }
   const Region& part = episode.current_part();
   RegionStateOptions options = state_options(episode.options(), episode.face_size());

@@ -65,9 +65,9 @@ class RegionLookaheadPolicy : public RegionPolicy {
                                                  std::vector<RegionCandidate>& proposed);
   std::shared_ptr<LookaheadAgent> agent_;
   std::string name_;
-  size_t face_hash_ = 0;
+  FaceStart face_start_;
   std::unordered_map<Region, double, RegionHash> values_;  // W of the pieces valued in this face
-  SearchWork work_;  // counted, never stopped (above)
+  SearchWork work_;  // this face's, counted, never stopped (above)
 };
 
 }  // namespace autoblock
