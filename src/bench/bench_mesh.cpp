@@ -395,7 +395,7 @@ std::map<std::string, std::vector<Sample>> sample_faces(const std::string& title
 // What the general and arc rows add up over a method's runs: each sample against its face's bound and
 // gmsh's run at size h (the time reference).
 struct RowTotals {
-  std::vector<double> ms, process_ms, ratios;
+  std::vector<double> ms, process_ms, ratios, edge_ratios;
   double worst = 1e300, worst_sj = 1e300, mean_ratio = 0, mean_min_sj = 0, irregular = 0, quads = 0;
   int n = 0, conformal = 0, failed = 0;
 
@@ -415,12 +415,23 @@ struct RowTotals {
     irregular += s.irregular;
     quads += s.quads;
     conformal += s.conformal;
+    edge_ratios.push_back(s.max_aspect);
     ms.push_back(1e3 * s.seconds);
     process_ms.push_back(1e3 * s.process_seconds);
     if (gmsh.quads > 0) ratios.push_back(s.process_seconds / gmsh.process_seconds);
     return true;
   }
   int divisor() const { return std::max(1, n); }
+  // The faces' largest quad edge ratios (longest edge over shortest): their median, and "; N above 20"
+  // where some face has a quad past that.
+  std::string edge_ratio_column() const {
+    int above = 0;
+    for (const double r : edge_ratios) above += r > kEdgeRatioShown;
+    char text[64];
+    std::snprintf(text, sizeof text, "%.1f; %d", median(edge_ratios), above);
+    return text;
+  }
+  static constexpr double kEdgeRatioShown = 20.0;
 };
 
 // Inputs: method; samples, its runs; bounds, AutoBlock's runs (their faces' bounds); gmsh, gmsh's runs at
@@ -433,9 +444,9 @@ void print_general_row(const std::string& method, const std::vector<Sample>& sam
     if (t.add(samples[k], bounds[k].bound, gmsh[k])) above += samples[k].min_sj / bounds[k].bound >= 0.8;
   }
   const int d = t.divisor();
-  std::printf("| %s | %d/%zu | %.1f | %.4f | %.4f | %d | %.4f | %.2f | %d | %.1f | %.1f | %.2f |\n", method.c_str(), t.n,
-              samples.size(), t.quads / d, t.worst, t.mean_ratio / d, above, t.mean_min_sj / d, t.irregular / d, t.conformal,
-              median(t.ms), median(t.process_ms), median(t.ratios));
+  std::printf("| %s | %d/%zu | %.1f | %.4f | %.4f | %d | %.4f | %.2f | %s | %d | %.1f | %.1f | %.2f |\n", method.c_str(), t.n,
+              samples.size(), t.quads / d, t.worst, t.mean_ratio / d, above, t.mean_min_sj / d, t.irregular / d,
+              t.edge_ratio_column().c_str(), t.conformal, median(t.ms), median(t.process_ms), median(t.ratios));
   if (t.failed) std::printf("<!-- %s failed on %d faces -->\n", method.c_str(), t.failed);
 }
 
@@ -462,9 +473,9 @@ void run_general_set(const std::string& title, const std::vector<GeneralOptions>
   std::map<std::string, std::vector<Sample>> samples = sample_faces(title, faces, autoblock, folder);
   std::printf("\n### %s (%d faces)\n\n", title.c_str(), count);
   std::printf("| method | meshed | mean quads | worst min SJ / bound | mean min SJ / bound | faces >= 0.8 of the bound | "
-              "mean min SJ | mean irregular interior vertices | conformal | median ms in process | median ms, whole "
-              "process | median whole-process time / gmsh's at size h |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+              "mean min SJ | mean irregular interior vertices | largest quad edge ratio: median; faces above 20 | conformal | "
+              "median ms in process | median ms, whole process | median whole-process time / gmsh's at size h |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   // Every row divides by the face's bound (AutoBlock's report gives it) and by gmsh's time at size h.
   for (const std::string& method : {ours, gmsh_h, gmsh_matched}) {
     print_general_row(method, samples[method], samples[ours], samples[gmsh_h]);
@@ -491,9 +502,10 @@ void print_arc_row(const std::string& method, const std::vector<Sample>& samples
   const int d = t.divisor();
   const std::string own_column = is_ours ? std::to_string(own) : "-";
   const std::string above_column = is_ours ? "-" : std::to_string(above) + "/" + std::to_string(samples.size());
-  std::printf("| %s | %d/%zu | %d | %s | %d (%.1e; on circles %.1e) | %.1f | %.4f | %.4f | %.4f | %.4f | %s | %.2f | %.1f | %.2f |\n", method.c_str(),
+  std::printf("| %s | %d/%zu | %d | %s | %d (%.1e; on circles %.1e) | %.1f | %.4f | %.4f | %.4f | %.4f | %s | %.2f | %s | %.1f | %.2f |\n", method.c_str(),
               t.n, samples.size(), t.conformal, own_column.c_str(), off_faces, worst_off, worst_off_circles, t.quads / d, t.mean_min_sj / d,
-              t.mean_ratio / d, t.worst_sj, t.worst, above_column.c_str(), t.irregular / d, median(t.process_ms), median(t.ratios));
+              t.mean_ratio / d, t.worst_sj, t.worst, above_column.c_str(), t.irregular / d, t.edge_ratio_column().c_str(),
+              median(t.process_ms), median(t.ratios));
   if (t.failed) std::printf("<!-- %s failed on %d faces -->\n", method.c_str(), t.failed);
 }
 
@@ -502,9 +514,9 @@ void print_arc_table(std::map<std::string, std::vector<Sample>>& samples) {
   const std::string ours = kOurs, gmsh_h = kGmshH, gmsh_matched = kGmshMatched;
   std::printf("| method | meshed | conformal (true face) | conformal (own check, gap != 0) | faces with a boundary node off "
               "the boundary (farthest / face size; of the nodes nearest a circle) | mean quads | mean min SJ | mean min SJ / bound | worst min SJ | worst min SJ / bound | faces "
-              "where AutoBlock's min SJ >= this | mean irregular interior vertices | median ms, whole process | median "
-              "whole-process time / gmsh's at size h |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+              "where AutoBlock's min SJ >= this | mean irregular interior vertices | largest quad edge ratio: median; faces "
+              "above 20 | median ms, whole process | median whole-process time / gmsh's at size h |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const std::string& method : {ours, gmsh_h, gmsh_matched}) {
     print_arc_row(method, samples[method], samples[ours], samples[gmsh_h], method == ours);
   }

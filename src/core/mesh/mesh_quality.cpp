@@ -25,28 +25,34 @@ double quad_scaled_jacobian(const std::array<Point2, 4>& p) {
   return worst;
 }
 
+double quad_edge_ratio(const std::array<Point2, 4>& p) {
+  double shortest = 1e300, longest = 0.0;
+  for (size_t k = 0; k < 4; ++k) {
+    const double l = std::hypot(p[(k + 1) % 4].x - p[k].x, p[(k + 1) % 4].y - p[k].y);
+    shortest = std::min(shortest, l);
+    longest = std::max(longest, l);
+  }
+  return shortest > 0 ? longest / shortest : INFINITY;
+}
+
 QuadQuality quad_quality(const std::array<Point2, 4>& p) {
   constexpr double kPi = 3.14159265358979323846;
   QuadQuality q;
   q.scaled_jacobian = quad_scaled_jacobian(p);
   q.min_angle = 1e300;
   q.max_angle = -1e300;
-  double shortest = 1e300, longest = 0;
   for (int k = 0; k < 4; ++k) {
     const Point2& c = p[static_cast<size_t>(k)];
     const Point2& next = p[static_cast<size_t>((k + 1) % 4)];
     const Point2& prev = p[static_cast<size_t>((k + 3) % 4)];
     const double e1x = next.x - c.x, e1y = next.y - c.y, e2x = prev.x - c.x, e2y = prev.y - c.y;
-    const double l1 = std::sqrt(e1x * e1x + e1y * e1y);
-    shortest = std::min(shortest, l1);
-    longest = std::max(longest, l1);
     const double cross = e1x * e2y - e1y * e2x;
     double angle = std::atan2(cross, e1x * e2x + e1y * e2y) * 180.0 / kPi;  // signed, in (-180, 180]
     if (angle < 0) angle += 360.0;                                            // reflex corners exceed 180
     q.min_angle = std::min(q.min_angle, angle);
     q.max_angle = std::max(q.max_angle, angle);
   }
-  q.aspect_ratio = shortest > 0 ? longest / shortest : INFINITY;
+  q.aspect_ratio = quad_edge_ratio(p);
   // Principal axes as sums of edge vectors (exactly axis-parallel for a rectangle).
   const double x1x = (p[1].x - p[0].x) + (p[2].x - p[3].x), x1y = (p[1].y - p[0].y) + (p[2].y - p[3].y);
   const double x2x = (p[3].x - p[0].x) + (p[2].x - p[1].x), x2y = (p[3].y - p[0].y) + (p[2].y - p[1].y);

@@ -37,6 +37,10 @@ QuadQuality quad_quality(const std::array<Point2, 4>& corners);
 // <= 0 when a corner is reflex or flat, or an edge has no length.
 double quad_scaled_jacobian(const std::array<Point2, 4>& corners);
 
+// Inputs: the four corners. Output: the aspect ratio alone (quad_quality's): the longest edge over the
+// shortest, infinite when an edge has no length.
+double quad_edge_ratio(const std::array<Point2, 4>& corners);
+
 // Inputs: mesh with at least one quad. Output: the statistics over all quads and nodes.
 MeshQuality mesh_quality(const QuadMesh& mesh);
 

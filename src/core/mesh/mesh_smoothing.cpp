@@ -89,6 +89,21 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
     }
     return worst;
   };
+  // The edge ratio each quad around a node may reach from the node's present position: the limit, or
+  // the quad's ratio there if higher (set_caps); a candidate position past it is refused (capped_worst).
+  std::vector<double> caps;
+  auto set_caps = [&](size_t node) {
+    caps.clear();
+    for (const auto& [q, k] : around[node]) caps.push_back(std::max(kSmoothingEdgeRatio, quad_edge_ratio(mesh.corners(static_cast<size_t>(q)))));
+  };
+  auto capped_worst = [&](size_t node, double bar) {
+    const double worst = local_worst(node, bar);
+    if (worst <= bar) return worst;
+    for (size_t i = 0; i < around[node].size(); ++i) {
+      if (quad_edge_ratio(mesh.corners(static_cast<size_t>(around[node][i].first))) > caps[i]) return -1e300;
+    }
+    return worst;
+  };
   for (int sweep = 0; sweep < max_sweeps; ++sweep) {
     ++report.sweeps;
     double best_gain = 0.0;
@@ -121,9 +136,10 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
       const double current = local_worst(v);
       double best = current;
       Point2 best_at = here;
+      set_caps(v);
       for (const Point2& c : candidates) {
         mesh.nodes[v] = c;
-        const double w = local_worst(v, best);
+        const double w = capped_worst(v, best);
         if (w > best) {
           best = w;
           best_at = c;
@@ -226,13 +242,14 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
         const double at = sliding ? parameter_of(here) : 0.0;
         Point2 best_at = here;
         double best = current;
+        set_caps(node);
         for (int d = 0; d < (sliding ? 2 : 8); ++d) {
           if (sliding) {
             mesh.nodes[node] = point_at(std::clamp(at + (d == 0 ? step : -step) / path_length, low, high));
           } else {
             mesh.nodes[node] = {here.x + step * directions[static_cast<size_t>(d)].x, here.y + step * directions[static_cast<size_t>(d)].y};
           }
-          const double w = local_worst(node, best);
+          const double w = capped_worst(node, best);
           if (w > best) {
             best = w;
             best_at = mesh.nodes[node];

@@ -423,7 +423,9 @@ TEST_CASE("a rounded acute tip: the arcs' chord steps as targets, not minima, ke
   const MeshResult targets = mesh_region_decomposition(face, d.region, options);
   REQUIRE(targets.conformity.conformal);  // every boundary node on its arc, the chords within the rule
   CHECK(targets.arc_targets);
-  CHECK(targets.quality.min_scaled_jacobian > minima.quality.min_scaled_jacobian + 0.1);
+  // 0.270 against 0.241 measured (by more than 0.1 while the smoothing could draw quads into slivers:
+  // kSmoothingEdgeRatio).
+  CHECK(targets.quality.min_scaled_jacobian > minima.quality.min_scaled_jacobian + 0.02);
   CHECK(targets.mesh.quads.size() < minima.mesh.quads.size());
   // On a convex arc an edge spans at most kMeshEdgeArcSteps chord steps, on others one.
   for (size_t e = 0; e < targets.block_model.edges.size(); ++e) {
@@ -548,13 +550,25 @@ TEST_CASE("where feet made one leave the blocks without interval counts, the fee
   // Twenty-four bolt holes on one circle, their cells cut at both ends: some neighbours' feet are a
   // hair apart, others not, and made one where they are, the counts round the ring cannot balance
   // (the hair-thin edges left balanced them). The model as the templates place them meshes the first
-  // try (0.854 of the bound measured; a later try's blocks gave 0.834, with twice the quads).
+  // try's blocks. (Its hair-thin edges make quads of one edge 0.0002 long: 0.854 of the bound
+  // measured while the smoothing could draw their neighbours into slivers too, kSmoothingEdgeRatio;
+  // the first try no longer ends the tries, but none meshes better.)
+  const InputFace face = arc_test_face("flange-twenty-four-bolts");
+  const FaceDecomposition d = decompose_input_face(face, untimed_settings());
+  REQUIRE(d.region.complete());
+  CHECK(d.region.templates == 24);
+  MeshOptions options;
+  options.occt_model = false;
+  options.min_edge_intervals = d.region.min_edge_intervals;
+  options.general.reward = d.region.reward;
+  const MeshResult first = mesh_region_decomposition(face, d.region, options);
+  CHECK(first.conformity.conformal);
+  CHECK(first.block_model.snapped_feet == 0);
+  CHECK(first.block_model.feet == FeetSnap::placed);
+  CHECK(first.quality.min_scaled_jacobian > 0.75 * first.bound);  // 0.782 measured
   const FaceMeshing m = meshed_arc_face("flange-twenty-four-bolts");
-  CHECK(m.attempts == 1);
-  CHECK(m.decomposition.region.templates == 24);
-  CHECK(m.result.block_model.snapped_feet == 0);
-  CHECK(face_meshing_json("flange-twenty-four-bolts", m)["feet_snapped"] == false);
-  CHECK(m.result.quality.min_scaled_jacobian > 0.8 * m.result.bound);
+  CHECK(m.result.quality.min_scaled_jacobian >= first.quality.min_scaled_jacobian);
+  CHECK(face_meshing_json("flange-twenty-four-bolts", m)["feet_snapped"] == (m.result.block_model.snapped_feet > 0));
 }
 
 TEST_CASE("where neither the feet made one nor the feet as placed admit counts, feet a fair way apart are made one",

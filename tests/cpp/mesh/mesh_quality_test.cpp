@@ -43,6 +43,17 @@ TEST_CASE("scaled Jacobian of quads by hand", "[mesh][quality]") {
   CHECK(quad_scaled_jacobian({Point2{0, 0}, {1, 0}, {1, 0}, {0, 1}}) == 0.0);
 }
 
+TEST_CASE("edge ratio of quads by hand", "[mesh][quality]") {
+  CHECK(quad_edge_ratio({Point2{0, 0}, {3, 0}, {3, 1}, {0, 1}}) == Approx(3.0));
+  CHECK(quad_edge_ratio({Point2{0, 0}, {1, 0}, {1.5, 1}, {0.5, 1}}) == Approx(std::sqrt(1.25)));
+  // A quad drawn into a triangle (an edge of 1e-6): a good scaled Jacobian, an edge ratio of millions.
+  const std::array<Point2, 4> sliver{Point2{0, 0}, {2, 0}, {2 + 0.5e-6, 1e-6 * std::sqrt(0.75)}, {1, std::sqrt(3.0)}};
+  CHECK(quad_scaled_jacobian(sliver) > 0.8);
+  CHECK(quad_edge_ratio(sliver) > 1e6);
+  CHECK(quad_edge_ratio({Point2{0, 0}, {1, 0}, {1, 0}, {0, 1}}) == INFINITY);
+  CHECK(quad_quality({Point2{0, 0}, {3, 0}, {3, 1}, {0, 1}}).aspect_ratio == quad_edge_ratio({Point2{0, 0}, {3, 0}, {3, 1}, {0, 1}}));
+}
+
 TEST_CASE("scaled Jacobian: each edge's length once gives the corner-by-corner values", "[mesh][quality]") {
   std::mt19937 random(20261203);
   std::uniform_real_distribution<double> coordinate(-10.0, 10.0);
