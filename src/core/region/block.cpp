@@ -970,6 +970,8 @@ namespace {
 
 // The usual template's pieces (block.h): one per corner, around the centre of the largest circle in
 // the polygon of its corners (with fallback corners on a part with fewer than three).
+constexpr double kFootOnVertex = 0.05;
+
 std::vector<QuadPiece> usual_template_pieces(const Region& region, const BlockRules& rules) {
   const Ring& ring = region.outer();
   const size_t n = ring.size();
@@ -1003,10 +1005,18 @@ std::vector<QuadPiece> usual_template_pieces(const Region& region, const BlockRu
     const double foot = chord2 > 0.0 ? ((c.x - a.x) * (b.x - a.x) + (c.y - a.y) * (b.y - a.y)) / chord2 : 0.5;
     const double split_at = std::clamp(foot, 0.25, 0.75) * at.back();
     Split& s = splits[k];
-    // A side vertex within the quantum of that point is the point.
+    // A side vertex within the quantum of that point is the point; so is one within kFootOnVertex of
+    // the shorter edge beside it, which would otherwise leave a hair-thin edge between the two (its
+    // quads triangles with an edge of no length: a foot 0.009 from a vertex on sides of 8.8).
     size_t on_vertex = 0;
+    double nearest = 1e300;
     for (size_t v = 1; v + 1 < side.size(); ++v) {
-      if (std::fabs(at[v] - split_at) <= q) on_vertex = v;
+      const double off = std::fabs(at[v] - split_at);
+      const double reach = std::max(q, kFootOnVertex * std::min(at[v] - at[v - 1], at[v + 1] - at[v]));
+      if (off <= reach && off < nearest) {
+        nearest = off;
+        on_vertex = v;
+      }
     }
     for (size_t v = 0; v + 1 < side.size(); ++v) {
       if (on_vertex != 0 ? v < on_vertex : at[v] < split_at) s.before.push_back(side[v]);

@@ -222,7 +222,9 @@ CornerAngle piece_corner_angle(const QuadPiece& piece, int k);
 // Outputs: the template's pieces, one per corner of the region, in the order of template_quads:
 //          piece k runs from corner k along the region's boundary (through its side vertices) to the
 //          foot on that side, to the centre, to the foot on the side that ends at corner k, and back
-//          along the boundary. A foot within the region's quantum of a side vertex is that vertex.
+//          along the boundary. A foot within the region's quantum of a side vertex is that vertex, as is
+//          one within a twentieth of the shorter edge beside the vertex (not a hair-thin edge between
+//          them, whose quads would be triangles with an edge of no length).
 //          The pieces' loops share their spokes (foot to centre) exactly. A smooth part's template
 //          (smooth_template) and the O-grid (ogrid_template) give their own pieces instead;
 //          two_corner: a part with two corners the two-corner template's where it scores better

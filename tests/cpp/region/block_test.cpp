@@ -142,6 +142,39 @@ TEST_CASE("template pieces: four-sided loops through side vertices, sharing spok
   CHECK(found);
 }
 
+TEST_CASE("template pieces: a foot a hair from a side vertex is that vertex", "[region][block]") {
+  // A triangle whose bottom side has a side vertex (bent by a tenth of a degree) near where the spoke
+  // from the centre (x = 5) meets it. 0.02 away, the foot is the vertex: no edge 0.02 long between
+  // them, whose quads would be triangles with an edge of no length. 0.6 away (more than a twentieth of
+  // the shorter edge beside it), the foot stays where the spoke meets the side.
+  for (const double x : {5.02, 4.98, 5.6}) {
+    const Region triangle(Ring{{0, 0}, {x, -0.01}, {10, 0}, {5, 8}}, {}, kQ);
+    REQUIRE(template_applies(triangle));
+    const auto pieces = template_pieces(triangle);
+    REQUIRE(pieces.size() == 3);
+    const QuadPiece* from_origin = nullptr;
+    double shortest = 1e300;
+    for (const QuadPiece& p : pieces) {
+      if (p.ring[0] == Point2{0, 0}) from_origin = &p;
+      for (size_t i = 0; i < p.ring.size(); ++i) {
+        const Point2 a = p.ring[i], b = p.ring[(i + 1) % p.ring.size()];
+        shortest = std::min(shortest, std::hypot(b.x - a.x, b.y - a.y));
+      }
+    }
+    REQUIRE(from_origin);
+    const Point2 foot = from_origin->ring[static_cast<size_t>(from_origin->corners[1])];
+    INFO("side vertex at x = " << x);
+    if (x == 5.6) {
+      CHECK(foot.x == Approx(5.0).margin(0.01));
+      CHECK(shortest > 0.5);
+    } else {
+      CHECK(foot.x == Approx(x).margin(1e-6));
+      CHECK(foot.y == Approx(-0.01).margin(1e-6));
+      CHECK(shortest > 2.0);  // the spokes, 2.77
+    }
+  }
+}
+
 TEST_CASE("the scaled Jacobian bound of a face's corners", "[region][block]") {
   CHECK(scaled_jacobian_bound({Ring{{0, 0}, {1, 0}, {1, 1}, {0, 1}}}) == Approx(1.0));
   // An L-shape's reflex corner (270 degrees) takes three right angles.
