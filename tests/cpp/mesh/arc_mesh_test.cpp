@@ -171,7 +171,7 @@ TEST_CASE("arc faces: a circular segment's 30-degree tips are meshed again with 
 // The face between two arcs over the chord from (0, 0) to (chord, 0), through (chord / 2, upper) and
 // (chord / 2, lower), meshed with the search's blocks at the default size (the greedy policy's one
 // template meets acute tips badly); its tips' angle `tip`: conformal, the bound sin tip, the tip pass
-// kept and at least 0.97 of the bound.
+// kept and at least `fraction` of the bound, no quad past the smoothing's edge ratio.
 namespace {
 FaceMeshing checked_tip_mesh(double chord, double upper, double lower, double tip, const std::string& name,
                              double fraction = 0.97) {
