@@ -237,12 +237,12 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
         return Point2{arc->center.x + arc->radius * std::cos(angle), arc->center.y + arc->radius * std::sin(angle)};
       };
       const double path_length = arc ? arc->radius * std::fabs(sweep) : line_length;
+      set_caps(node);  // again only where the node moves: nothing else here does
       for (int halving = 0; halving < kHalvings && step > 0.0;) {
         const Point2 here = mesh.nodes[node];
         const double at = sliding ? parameter_of(here) : 0.0;
         Point2 best_at = here;
         double best = current;
-        set_caps(node);
         for (int d = 0; d < (sliding ? 2 : 8); ++d) {
           if (sliding) {
             mesh.nodes[node] = point_at(std::clamp(at + (d == 0 ? step : -step) / path_length, low, high));
@@ -256,6 +256,7 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
           }
         }
         mesh.nodes[node] = best_at;
+        if (!(best_at == here)) set_caps(node);
         if (best > current + 1e-9) {
           current = best;
           improved = true;

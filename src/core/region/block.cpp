@@ -968,10 +968,11 @@ bool roomy_ogrid_template(const Region& region, const BlockRules& rules) {
 
 namespace {
 
-// The usual template's pieces (block.h): one per corner, around the centre of the largest circle in
-// the polygon of its corners (with fallback corners on a part with fewer than three).
+// A template's foot within this fraction of the shorter edge beside a side vertex is that vertex.
 constexpr double kFootOnVertex = 0.05;
 
+// The usual template's pieces (block.h): one per corner, around the centre of the largest circle in
+// the polygon of its corners (with fallback corners on a part with fewer than three).
 std::vector<QuadPiece> usual_template_pieces(const Region& region, const BlockRules& rules) {
   const Ring& ring = region.outer();
   const size_t n = ring.size();
