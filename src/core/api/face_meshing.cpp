@@ -9,6 +9,7 @@
 
 #include "core/common/error.h"
 #include "core/mesh/mesh_picture.h"
+#include "core/mesh/mesh_quality.h"
 #include "core/mesh/mesh_report.h"
 #include "core/region/region_search.h"
 
@@ -55,7 +56,7 @@ FaceMeshing mesh_input_face(const InputFace& face, const DecomposeSettings& sett
   // Measured against the topology bound (block.h), not the corners' alone: a disk, a fillet or a
   // round hole caps every mesh of the face below its corner bound, and a try cannot beat that.
   auto ratio = [](const MeshResult& r) {
-    return r.conformity.conformal ? r.quality.min_scaled_jacobian / r.topology_bound : -1e300;
+    return r.conformity.conformal ? judged_jacobian(r.quality) / r.topology_bound : -1e300;
   };
   // A decomposition's O-grids in tight cells (block.h).
   auto tight_ogrids = [](const RegionDecomposition& d) {

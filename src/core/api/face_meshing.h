@@ -45,7 +45,8 @@ struct FaceMeshing {
 //          corners, holes and arcs allow) on a block model other than the far feet's
 //          (block_model.h: a try whose blocks admit no counts otherwise, which a later try may mesh
 //          better); a try's mesh below it is meshed again with at least two intervals per model
-//          edge; the conformal mesh with the best minimum scaled Jacobian is kept (attempts,
+//          edge; the conformal mesh with the best judged_jacobian is kept (mesh_quality.h: the
+//          minimum scaled Jacobian, a mesh with a degenerate quad ranking below any without; attempts,
 //          search_width, corner_fraction, cut_smooth_parts, tight_ogrid and min_edge_intervals say
 //          what was kept; tight_ogrids counts its tight cells' O-grids). Each search has the time
 //          limit (counted in work); once a try has meshed and the tries have cost kTriesTimeLimits

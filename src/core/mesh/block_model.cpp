@@ -57,12 +57,56 @@ class VertexIndex {
   std::unordered_map<std::uint64_t, std::vector<int>> cells_;
 };
 
+// How a vertex may move in snap_near_feet: a part's own vertex inside the face, near only; a vertex a
+// template makes, near and (with far) far too.
+constexpr char kMovesNear = 1, kMovesFar = 2;
+
 struct LoopPiece {
   std::vector<int> loop;  // vertex ids, counter-clockwise
   std::array<int, 4> corners{};  // positions in loop
   int part = 0;
   bool from_template = false;
 };
+
+// Inputs:  pieces, their loops as ids into vertices (counter-clockwise; T-junctions not yet in them);
+//          tolerance, how far off a side a vertex may lie and be on it.
+// Output:  per vertex, 1 where the pieces round it fill the full turn (inside the face), 0 where they
+//          leave a gap (on the face's boundary: an outline's or a hole's).
+std::vector<char> inside_face(const std::vector<LoopPiece>& pieces, const std::vector<Point2>& vertices, double tolerance) {
+  const size_t n = vertices.size();
+  std::vector<double> turn(n, 0.0);
+  std::vector<int> order(n);
+  for (size_t v = 0; v < n; ++v) order[v] = static_cast<int>(v);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return vertices[static_cast<size_t>(a)].x < vertices[static_cast<size_t>(b)].x; });
+  std::vector<double> xs(n);
+  for (size_t i = 0; i < n; ++i) xs[i] = vertices[static_cast<size_t>(order[i])].x;
+  for (const LoopPiece& piece : pieces) {
+    const size_t m = piece.loop.size();
+    if (m < 3) continue;
+    for (size_t i = 0; i < m; ++i) {
+      // The piece's angle at its loop vertex i (the inside lies to the left of a counter-clockwise loop).
+      const Point2 o = vertices[static_cast<size_t>(piece.loop[i])];
+      const Point2 next = vertices[static_cast<size_t>(piece.loop[(i + 1) % m])], prev = vertices[static_cast<size_t>(piece.loop[(i + m - 1) % m])];
+      const double ax = next.x - o.x, ay = next.y - o.y, bx = prev.x - o.x, by = prev.y - o.y;
+      double angle = std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+      if (angle < 0.0) angle += 2.0 * M_PI;
+      turn[static_cast<size_t>(piece.loop[i])] += angle;
+      // A vertex on the inside of the side from i to i + 1 (a T-junction): half a turn.
+      const double dx = next.x - o.x, dy = next.y - o.y, length = std::hypot(dx, dy);
+      if (!(length > 0.0)) continue;
+      const auto first = std::lower_bound(xs.begin(), xs.end(), std::min(o.x, next.x) - tolerance);
+      for (size_t j = static_cast<size_t>(first - xs.begin()); j < n && xs[j] <= std::max(o.x, next.x) + tolerance; ++j) {
+        const Point2 p = vertices[static_cast<size_t>(order[j])];
+        const double t = ((p.x - o.x) * dx + (p.y - o.y) * dy) / length;
+        if (t <= tolerance || t >= length - tolerance) continue;
+        if (std::fabs((p.x - o.x) * dy - (p.y - o.y) * dx) / length <= tolerance) turn[static_cast<size_t>(order[j])] += M_PI;
+      }
+    }
+  }
+  std::vector<char> inside(n, 0);
+  for (size_t v = 0; v < n; ++v) inside[v] = std::fabs(turn[v] - 2.0 * M_PI) < 1e-3;
+  return inside;
+}
 
 // Two templates' feet on the side their parts share, a hair apart, would make a model edge a tiny
 // fraction of its neighbours: given an interval, it holds the minimum down; round a ring of parts the
@@ -76,8 +120,15 @@ struct LoopPiece {
 // either) is taken to be it too, where no vertex of its pieces lies between them or within the
 // distance beyond, and every piece with it as a corner keeps its quadrilateral of corners convex,
 // its least sine above sin(20 degrees) and kFarFootShape of what it was.
-// Inputs:  pieces, their loops as ids into vertices; movable, per vertex (a template's own); tolerance,
-//          how far off a side's line a point may lie and be on it; far, as above.
+// A part's own vertex inside the face (kMovesNear: a cut's end, not on the face's boundary) is taken
+// to be another part's vertex a hair from it in the same way, near only (24-bolt flange: a cut's end
+// 0.005 from the corner of the template beside it, on sides of 5, gave the edge between them two
+// intervals and a strip of quads 40 000 times longer than wide). The parts at it change by the hair
+// the move takes along their shared side: a side at it turns about its other end, and a template's
+// vertex on that side moves with it; the move is made only where every vertex on the inside of a
+// side stays on it (no other part's vertex on a side that turns: another cut ending on this one).
+// Inputs:  pieces, their loops as ids into vertices; movable, per vertex (kMovesNear, kMovesFar or 0:
+//          it stays); tolerance, how far off a side's line a point may lie and be on it; far, as above.
 // Outputs: pieces with the snapped vertices replaced (a loop's repeats dropped, its corners kept);
 //          vertices without those no loop uses any more (ids renumbered); the number snapped.
 int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices, const std::vector<char>& movable,
@@ -171,13 +222,89 @@ int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices
     }
     return true;
   };
+  // (A near move of a part's vertex, below.) The vertices' x in `order`, to find those near a side;
+  // p on the inside of the side from a to b (off its ends by more than the tolerance), or on either.
+  std::vector<double> xs(n);
+  for (size_t i = 0; i < n; ++i) xs[i] = vertices[static_cast<size_t>(order[i])].x;
+  auto on_inside = [&](Point2 p, Point2 a, Point2 b) {
+    const double dx = b.x - a.x, dy = b.y - a.y, length = std::hypot(dx, dy);
+    if (!(length > 0.0)) return false;
+    const double t = ((p.x - a.x) * dx + (p.y - a.y) * dy) / length;
+    return t > tolerance && t < length - tolerance && std::fabs((p.x - a.x) * dy - (p.y - a.y) * dx) / length <= tolerance;
+  };
+  auto on_or_end = [&](Point2 p, Point2 a, Point2 b) {
+    return std::hypot(p.x - a.x, p.y - a.y) <= tolerance || std::hypot(p.x - b.x, p.y - b.y) <= tolerance || on_inside(p, a, b);
+  };
+  // Every vertex still where the pieces need it with these moves (roots to new places): a vertex on the
+  // inside of a side at a moved one stays on it, or on an end; a moved one on the inside of a side
+  // stays on it, or on an end.
+  auto moves_keep = [&](const std::vector<std::pair<int, Point2>>& all) {
+    auto moved = [&](int y) -> const Point2* {
+      for (const auto& [m, p] : all) {
+        if (m == y) return &p;
+      }
+      return nullptr;
+    };
+    auto new_at = [&](int y) {
+      const Point2* p = moved(root(y));
+      return p ? *p : at(y);
+    };
+    for (size_t id = 0; id < n; ++id) {
+      const int m = root(static_cast<int>(id));
+      for (int w : neighbours[id]) {
+        const int rw = root(w);
+        const Point2 a = at(m), b = at(rw);
+        const bool turns = moved(m) || moved(rw);
+        if (turns) {
+          const Point2 a2 = new_at(m), b2 = new_at(rw);
+          const auto first = std::lower_bound(xs.begin(), xs.end(), std::min(a.x, b.x) - tolerance);
+          for (size_t j = static_cast<size_t>(first - xs.begin()); j < n && xs[j] <= std::max(a.x, b.x) + tolerance; ++j) {
+            const int y = root(order[j]);
+            if (y == m || y == rw) continue;
+            if (on_inside(at(y), a, b) && !on_or_end(new_at(y), a2, b2)) return false;
+          }
+        } else {
+          for (const auto& [y, p] : all) {
+            if (y != m && y != rw && on_inside(at(y), a, b) && !on_or_end(p, a, b)) return false;
+          }
+        }
+      }
+    }
+    return true;
+  };
+  // v may move onto r where every vertex stays where the pieces need it (moves_keep): a side at v turns
+  // about its other end unless it runs along the move, and a template's vertex on it (a foot of the
+  // template beside) moves with it, at its share of the side; a part's vertex there (another cut's end)
+  // forbids the move. *moves: those template vertices and where they go (roots), then v's.
+  auto keeps_imprints = [&](int v, int r, std::vector<std::pair<int, Point2>>* moves) {
+    moves->clear();
+    const Point2 a = at(v), moved = at(r);
+    for (int w : neighbours[static_cast<size_t>(v)]) {
+      const Point2 b = at(w);
+      const double length2 = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
+      const auto first = std::lower_bound(xs.begin(), xs.end(), std::min(a.x, b.x) - tolerance);
+      for (size_t j = static_cast<size_t>(first - xs.begin()); j < n && xs[j] <= std::max(a.x, b.x) + tolerance; ++j) {
+        const int x = root(order[j]);
+        if (x == root(v) || x == root(w) || x == r) continue;
+        const Point2 p = at(x);
+        if (!on_inside(p, a, b) || on_inside(p, moved, b)) continue;
+        if (movable[static_cast<size_t>(x)] != kMovesFar) return false;
+        const double share = ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / length2;
+        moves->emplace_back(x, Point2{moved.x + share * (b.x - moved.x), moved.y + share * (b.y - moved.y)});
+      }
+    }
+    moves->emplace_back(root(v), moved);
+    return moves_keep(*moves);
+  };
+  std::vector<std::pair<int, Point2>> moves;
   int snapped = 0;
   for (size_t i = 0; i < n; ++i) {
     const int v = order[i];
     const size_t vi = static_cast<size_t>(v);
     if (!movable[vi] || parts[vi].empty()) continue;
+    const bool may_go_far = far && movable[vi] == kMovesFar;
     const Point2 pv = vertices[vi];
-    const double reach = far ? kFarFootSnap * longest[vi] : kFootSnap * shortest[vi];
+    const double reach = may_go_far ? kFarFootSnap * longest[vi] : kFootSnap * shortest[vi];
     int best = -1;
     double best_distance = std::numeric_limits<double>::infinity();
     for (int step : {-1, 1}) {
@@ -189,9 +316,10 @@ int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices
         if (d >= best_distance) continue;
         const size_t ui = static_cast<size_t>(u);
         const bool near = d <= kFootSnap * std::min(shortest[vi], shortest[ui]);
-        if (!near && !(far && d <= kFarFootSnap * std::min(longest[vi], longest[ui]))) continue;
+        if (!near && !(may_go_far && d <= kFarFootSnap * std::min(longest[vi], longest[ui]))) continue;
         const int r = root(u);
         if (r == v || !disjoint(parts[vi], parts[static_cast<size_t>(r)]) || !on_side_line(u, v) || !on_side_line(v, u)) continue;
+        if (movable[vi] == kMovesNear && !keeps_imprints(v, r, &moves)) continue;
         if (!near) {
           const Point2 pr = vertices[static_cast<size_t>(r)];
           const double dr = std::hypot(pr.x - pv.x, pr.y - pv.y);
@@ -202,6 +330,12 @@ int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices
       }
     }
     if (best < 0) continue;
+    if (movable[vi] == kMovesNear) {
+      keeps_imprints(v, best, &moves);
+      for (const auto& [x, p] : moves) {
+        if (x != v) vertices[static_cast<size_t>(x)] = p;
+      }
+    }
     to[vi] = best;
     joined[static_cast<size_t>(best)] = 1;
     auto& into = parts[static_cast<size_t>(best)];
@@ -295,20 +429,22 @@ BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, do
     }
   }
 
-  // A vertex a template makes may move (snap_near_feet); a part's own vertices, and every vertex of a
-  // block part, stay.
+  // A vertex a template makes may move (snap_near_feet); a part's own vertex inside the face a hair
+  // (near), one on the face's boundary never.
   model.feet = snap;
   if (snap != FeetSnap::placed) {
-    std::vector<char> movable(model.vertices.size(), 1);
+    const std::vector<char> inside = inside_face(pieces, model.vertices, tolerance);
+    std::vector<char> movable(model.vertices.size(), kMovesFar);
+    auto own = [&](int v) { movable[static_cast<size_t>(v)] = inside[static_cast<size_t>(v)] ? kMovesNear : 0; };
     for (const LoopPiece& piece : pieces) {
       if (piece.from_template) continue;
-      for (int v : piece.loop) movable[static_cast<size_t>(v)] = 0;
+      for (int v : piece.loop) own(v);
     }
     for (const FinishedRegion& part : d.finished) {
       if (!part.is_template) continue;
       auto fix = [&](const Ring& ring) {
         for (const Point2& p : ring) {
-          if (const int v = index.find(p); v >= 0) movable[static_cast<size_t>(v)] = 0;
+          if (const int v = index.find(p); v >= 0) own(v);
         }
       };
       fix(part.region.outer());

@@ -85,7 +85,9 @@ struct BlockModel {
 //          apart (within kFootSnap of the shortest piece side at either), made one (near), and those
 //          a fair way apart too (far: within kFarFootSnap of the longest piece side at either, the
 //          pieces that move keeping kFarFootShape of their shape and their order along the side);
-//          one moves to the other, along the side; a part's own vertices never move.
+//          one moves to the other, along the side; a part's own vertex moves only a hair (near),
+//          only inside the face, and only where every vertex on a side it turns stays on it (a
+//          template's vertex there moves with it); one on the face's boundary never moves.
 // Outputs: the model above, blocks part by part in the decomposition's order (a template's pieces
 //          in template_pieces's order).
 // Throws std::logic_error when the pieces do not fit together (an edge used by more than two

@@ -426,12 +426,13 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   result.conformity = check_conformity(result.mesh, loops, tolerance, face.arcs);
   result.check_seconds = since(start);
   auto poor = [&] {
-    return result.conformity.conformal && result.quality.min_scaled_jacobian < kArcTargetsBelow * result.topology_bound;
+    return result.conformity.conformal && judged_jacobian(result.quality) < kArcTargetsBelow * result.topology_bound;
   };
-  // Keeps again's mesh (and, with own_model, its block model) when it is better and conformal.
+  // Keeps again's mesh (and, with own_model, its block model) when it is better (judged_jacobian: a
+  // degenerate quad ranks a mesh below any without) and conformal.
   auto keep_if_better = [&](MeshResult& again, bool own_model) {
     const MeshQuality quality = mesh_quality(again.mesh);
-    if (!(quality.min_scaled_jacobian > result.quality.min_scaled_jacobian)) return false;
+    if (!(judged_jacobian(quality) > judged_jacobian(result.quality))) return false;
     Conformity conformity = check_conformity(again.mesh, loops, tolerance, face.arcs);
     if (!conformity.conformal) return false;
     if (own_model) result.block_model = std::move(again.block_model);
@@ -503,10 +504,10 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   // (The block model kept: the two-corner template's is another, with other edges.)
   const ArcMinima kept = result.two_corner ? arc_minima(result.block_model, face.arcs, tip_steps) : minima;
   for (const double share : {kGradedTipShare, kTipShare}) {
-    if (!result.conformity.conformal || result.quality.min_scaled_jacobian >= kGradedTipShare * result.bound) break;
+    if (!result.conformity.conformal || judged_jacobian(result.quality) >= kGradedTipShare * result.bound) break;
     const std::vector<std::array<double, 2>> graded_steps = share == kTipShare ? tip_steps : acute_tip_steps(loops, face.arcs, share);
     for (const double ratio : kTipGradingRatios) {
-      if (result.quality.min_scaled_jacobian >= kGradedTipShare * result.bound) break;
+      if (judged_jacobian(result.quality) >= kGradedTipShare * result.bound) break;
       const ArcEndGrading grading{graded_steps, ratio};
       bool graded = false;
       const std::vector<int> counts = graded_counts(result.block_model, face.arcs, grading, kept.chord, &graded);
@@ -518,7 +519,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
       }
     }
   }
-  if (kept.tipped && result.conformity.conformal && result.quality.min_scaled_jacobian < kTipShare * result.bound) {
+  if (kept.tipped && result.conformity.conformal && judged_jacobian(result.quality) < kTipShare * result.bound) {
     MeshResult again;
     if (remake(again, result.block_model, kept.tips, {}, false)) {
       result.acute_tips = true;

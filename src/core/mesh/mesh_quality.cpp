@@ -96,4 +96,10 @@ MeshQuality mesh_quality(const QuadMesh& mesh) {
   return m;
 }
 
+double judged_jacobian(const MeshQuality& quality) {
+  if (!(quality.min_scaled_jacobian > 0.0)) return quality.min_scaled_jacobian - 2.0;
+  if (quality.max_aspect_ratio > kDegenerateEdgeRatio) return quality.min_scaled_jacobian - 1.0;
+  return quality.min_scaled_jacobian;
+}
+
 }  // namespace autoblock

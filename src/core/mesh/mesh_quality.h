@@ -44,5 +44,17 @@ double quad_edge_ratio(const std::array<Point2, 4>& corners);
 // Inputs: mesh with at least one quad. Output: the statistics over all quads and nodes.
 MeshQuality mesh_quality(const QuadMesh& mesh);
 
+// A quad longer than this (longest edge over shortest) is taken to be degenerate: an edge of next to
+// no length, a triangle in all but name, whose corners the scaled Jacobian still scores well (a strip
+// of quads 40 000 times longer than wide, from two vertices of the block model a hair apart, scored
+// 0.76). A mapped mesh's honest stretch stays well below: gmsh's largest on 200 faces with arcs, 15.3.
+constexpr double kDegenerateEdgeRatio = 100.0;
+
+// Inputs: quality, of a mesh. Output: its minimum scaled Jacobian as meshes of one face are judged by
+//         it: as it is where every quad is valid (> 0) and none degenerate (kDegenerateEdgeRatio);
+//         1 less with a degenerate quad, 2 less with an invalid one; so that any mesh of the first
+//         kind ranks above any of the second, and those above any of the third.
+double judged_jacobian(const MeshQuality& quality);
+
 
 }  // namespace autoblock

@@ -253,3 +253,89 @@ TEST_CASE("block model: two templates' feet a hair apart on their shared side ar
     CHECK(far.vertices.size() == 12);
   }
 }
+
+TEST_CASE("block model: two cuts' ends a hair apart on the side their parts share are made one", "[mesh][block_model]") {
+  // The line y = 1 across a 4 by 2 face: below it a cut at x = 2, above it one at x = 2 + gap. Each
+  // end is a vertex of the two parts it divides and a T-junction on the side of a part across the line.
+  auto blocks = [](double gap, bool lower_split, bool upper_split) {
+    RegionDecomposition d;
+    d.status = EpisodeStatus::Complete;
+    const double x = 2.0 + gap;
+    std::vector<Ring> rings{Ring{{2, 0}, {4, 0}, {4, 1}, {2, 1}}, Ring{{x, 1}, {4, 1}, {4, 2}, {x, 2}}, Ring{{0, 1}, {x, 1}, {x, 2}, {0, 2}}};
+    // A split part puts its own vertex on a side that the move of the cut's end beside it would turn.
+    if (lower_split) {
+      rings.push_back(Ring{{0, 0}, {2, 0}, {2, 0.5}, {0, 0.5}});
+      rings.push_back(Ring{{0, 0.5}, {2, 0.5}, {2, 1}, {0, 1}});
+    } else {
+      rings.push_back(Ring{{0, 0}, {2, 0}, {2, 1}, {0, 1}});
+    }
+    if (upper_split) {
+      rings[1] = Ring{{x, 1}, {4, 1}, {4, 1.5}, {x, 1.5}};
+      rings.push_back(Ring{{x, 1.5}, {4, 1.5}, {4, 2}, {x, 2}});
+    }
+    for (const Ring& r : rings) d.finished.push_back(block(static_cast<int>(d.finished.size()), r));
+    return d;
+  };
+  auto near_x = [](const BlockModel& m, double x) {
+    int count = 0;
+    for (const Point2& v : m.vertices) count += std::fabs(v.y - 1.0) < 1e-9 && std::fabs(v.x - x) < 1e-9;
+    return count;
+  };
+  auto check_edges = [](const BlockModel& m, double perimeter) {
+    double boundary = 0.0, shortest = 1e300;
+    for (size_t e = 0; e < m.edges.size(); ++e) {
+      const int uses = edge_uses(m, e);
+      CHECK((uses == 1 || uses == 2));
+      if (uses == 1) boundary += m.edges[e].length;
+      shortest = std::min(shortest, m.edges[e].length);
+    }
+    CHECK(boundary == Approx(perimeter));
+    return shortest;
+  };
+  SECTION("a hair apart: one vertex") {
+    const RegionDecomposition d = blocks(0.001, false, false);
+    const BlockModel as_placed = block_model(d, BlockRules{}, kQ, false, FeetSnap::placed);
+    CHECK(check_edges(as_placed, 12.0) == Approx(0.001));
+    CHECK(as_placed.vertices.size() == 10);
+    const BlockModel m = block_model(d, BlockRules{}, kQ);
+    CHECK(m.snapped_feet == 1);
+    CHECK(m.vertices.size() == 9);
+    CHECK(check_edges(m, 12.0) == Approx(1.0).margin(0.01));  // the cuts, 1 long
+    CHECK(near_x(m, 2.0) + near_x(m, 2.001) == 1);
+  }
+  SECTION("the end whose move would leave another part's vertex off its side stays; the other moves") {
+    // The part left of the lower cut is split at y = 0.5: (2, 0.5) lies on the lower cut. Moving
+    // (2, 1) would turn the cut about (2, 0) and leave (2, 0.5) off it; the upper end moves instead.
+    const BlockModel m = block_model(blocks(0.001, true, false), BlockRules{}, kQ);
+    CHECK(m.snapped_feet == 1);
+    CHECK(near_x(m, 2.0) == 1);
+    CHECK(near_x(m, 2.001) == 0);
+    CHECK(check_edges(m, 12.0) > 0.4);
+  }
+  SECTION("where neither end may move, both stay") {
+    const BlockModel m = block_model(blocks(0.001, true, true), BlockRules{}, kQ);
+    CHECK(m.snapped_feet == 0);
+    CHECK(near_x(m, 2.0) == 1);
+    CHECK(near_x(m, 2.001) == 1);
+    CHECK(check_edges(m, 12.0) == Approx(0.001));
+  }
+  SECTION("a fair way apart: both stay") {
+    const BlockModel m = block_model(blocks(0.2, false, false), BlockRules{}, kQ, false, FeetSnap::far);
+    CHECK(m.snapped_feet == 0);
+    CHECK(check_edges(m, 12.0) == Approx(0.2));
+  }
+  SECTION("a vertex on the face's boundary stays; the one inside moves to it") {
+    // An L: the face's reflex corner (2.001, 1) is the upper part's corner, a hair from the lower cut's
+    // end (2, 1), which moves onto it.
+    RegionDecomposition d;
+    d.status = EpisodeStatus::Complete;
+    d.finished.push_back(block(0, Ring{{0, 0}, {2, 0}, {2, 1}, {0, 1}}));
+    d.finished.push_back(block(1, Ring{{2, 0}, {4, 0}, {4, 1}, {2, 1}}));
+    d.finished.push_back(block(2, Ring{{0, 1}, {2.001, 1}, {2.001, 2}, {0, 2}}));
+    const BlockModel m = block_model(d, BlockRules{}, kQ);
+    CHECK(m.snapped_feet == 1);
+    CHECK(near_x(m, 2.0) == 0);
+    CHECK(near_x(m, 2.001) == 1);
+    CHECK(check_edges(m, 12.0) > 0.9);
+  }
+}

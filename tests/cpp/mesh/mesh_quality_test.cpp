@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -52,6 +53,37 @@ TEST_CASE("edge ratio of quads by hand", "[mesh][quality]") {
   CHECK(quad_edge_ratio(sliver) > 1e6);
   CHECK(quad_edge_ratio({Point2{0, 0}, {1, 0}, {1, 0}, {0, 1}}) == INFINITY);
   CHECK(quad_quality({Point2{0, 0}, {3, 0}, {3, 1}, {0, 1}}).aspect_ratio == quad_edge_ratio({Point2{0, 0}, {3, 0}, {3, 1}, {0, 1}}));
+}
+
+TEST_CASE("meshes are judged valid and undegenerate first, then by their minimum scaled Jacobian", "[mesh][quality]") {
+  // Three meshes of one face: a sound one of 0.6; one of 0.9 whose worst quad is a sliver (an edge
+  // ratio of millions); one with an inverted quad.
+  auto mesh_of = [](std::vector<std::array<Point2, 4>> quads) {
+    QuadMesh m;
+    for (const auto& q : quads) {
+      std::array<int, 4> ids{};
+      for (size_t k = 0; k < 4; ++k) {
+        ids[k] = static_cast<int>(m.nodes.size());
+        m.nodes.push_back(q[k]);
+      }
+      m.quads.push_back(ids);
+      m.quad_block.push_back(0);
+    }
+    m.blocks = 1;
+    return mesh_quality(m);
+  };
+  const double s = std::sqrt(3.0);
+  const MeshQuality sound = mesh_of({{Point2{0, 0}, {1, 0}, {1.8, 0.6}, {0.8, 0.6}}});
+  const MeshQuality sliver = mesh_of({{Point2{0, 0}, {2, 0}, {2 + 0.5e-6, 1e-6 * std::sqrt(0.75)}, {1, s}}, {Point2{0, 0}, {1, 0}, {1, 1}, {0, 1}}});
+  const MeshQuality inverted = mesh_of({{Point2{0, 0}, {2, 0}, {2, 2}, {1.5, 0.5}}});
+  REQUIRE(sliver.min_scaled_jacobian > sound.min_scaled_jacobian);
+  CHECK(sound.max_aspect_ratio <= kDegenerateEdgeRatio);
+  CHECK(sliver.max_aspect_ratio > kDegenerateEdgeRatio);
+  CHECK(judged_jacobian(sound) == sound.min_scaled_jacobian);
+  CHECK(judged_jacobian(sliver) == Approx(sliver.min_scaled_jacobian - 1.0));
+  CHECK(judged_jacobian(sound) > judged_jacobian(sliver));
+  CHECK(judged_jacobian(sliver) > judged_jacobian(inverted));
+  CHECK(judged_jacobian(inverted) == Approx(inverted.min_scaled_jacobian - 2.0));
 }
 
 TEST_CASE("scaled Jacobian: each edge's length once gives the corner-by-corner values", "[mesh][quality]") {
