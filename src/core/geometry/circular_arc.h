@@ -19,8 +19,9 @@
 namespace autoblock {
 
 // How far, in lattice quanta, a point of a general face may lie off an arc's polygon and be on it
-// (FaceArcs::tolerance): samples and cut ends are rounded to the lattice, T-junctions lie within 3
-// quanta of a side (mesh/block_model.h, kModelToleranceQuanta).
+// (FaceArcs::tolerance): samples and cut ends are rounded to the lattice, within q / sqrt 2 of the
+// polygon. (A T-junction is imprinted within kModelToleranceQuanta of a side, mesh/block_model.h: more,
+// for the drift of many cuts' ends along one straight line.)
 constexpr double kArcToleranceQuanta = 4.0;
 
 // The largest turn of one chord of a polygonised arc, in degrees (a full circle: 24 chords).

@@ -202,7 +202,7 @@ InputFace input_face_from_occt(const TopoDS_Face& face, const std::string& sourc
       input.region = validate_general_rings(read.rings, &input.planar.tolerance);
       input.arcs.arcs = read.arcs;
       // Samples and cut ends lie on the lattice (within q / sqrt 2 of where they belong), T-junctions
-      // within kModelToleranceQuanta (3) quanta of a side (block_model.h).
+      // within kModelToleranceQuanta quanta of a side (block_model.h).
       input.arcs.tolerance = kArcToleranceQuanta * input.region.quantum();
       check_vertices_on_plane(read, input.planar.tolerance);
       check_occt_face(input.occt, tolerance, smallest_feature(input.region));

@@ -377,7 +377,7 @@ double BlockModel::side_length(const ModelSide& side) const {
 }
 
 BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, double quantum, bool two_corner,
-                       FeetSnap snap) {
+                       FeetSnap snap, double tolerance_quanta) {
   if (!d.complete()) throw std::logic_error("block_model: the decomposition is incomplete");
   if (!(quantum > 0.0)) throw std::logic_error("block_model: the quantum must be positive");
   BlockModel model;
@@ -388,7 +388,7 @@ BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, do
   // angle, the parts on either side round their meeting point to lattice points several quanta apart
   // along the cuts (5 quanta at 15 degrees on face 56 of the arc property test), and each of the two
   // points, imprinted into the other parts' sides, made an edge between them that three pieces used.
-  const double tolerance = kModelToleranceQuanta * quantum;
+  const double tolerance = tolerance_quanta * quantum;
   VertexIndex index(&model.vertices, 2.0 * tolerance);
 
   // The pieces, their loops as vertex ids.

@@ -26,6 +26,13 @@ namespace autoblock {
 // own ends, so a point of a side may sit about two quanta off the chord of its rounded ends (measured:
 // 2.2 quanta on a face with a hole). The mesh's conformity is checked to the same tolerance.
 constexpr double kModelToleranceQuanta = 3.0;
+// The tolerance of a second model where the first's mesh fails its conformity check
+// (mesh_region_decomposition): where many cuts end on one line, each splitting it at a point rounded to
+// the lattice, the drift adds up (7.1 quanta on a perforated disk of 89 holes, whose radial lines carry
+// scores of cut ends: at 3, hanging nodes, and `autoblock mesh` stopped with an internal error). Not the
+// first model's: at 10, vertices a hair apart that the first keeps apart (the 24-bolt flange's, 5
+// quanta) are taken for one, and its mesh fails. Ten quanta are about 5e-7 of the face's size.
+constexpr double kWideModelToleranceQuanta = 10.0;
 
 // Feet a hair apart (block_model's FeetSnap::near): nearer than this share of the shortest piece side
 // at either.
@@ -80,7 +87,8 @@ struct BlockModel {
 };
 
 // Inputs:  decomposition, complete; rules, the block rules it was made with (side vertices);
-//          quantum, the face's lattice spacing (Region::quantum); two_corner, as template_pieces
+//          quantum, the face's lattice spacing (Region::quantum), and tolerance_quanta, how many of
+//          them a vertex may lie off a side and be on it; two_corner, as template_pieces
 //          takes it (block.h); snap: two templates' feet on the side their parts share, a hair
 //          apart (within kFootSnap of the shortest piece side at either), made one (near), and those
 //          a fair way apart too (far: within kFarFootSnap of the longest piece side at either, the
@@ -93,7 +101,8 @@ struct BlockModel {
 // Throws std::logic_error when the pieces do not fit together (an edge used by more than two
 // pieces, a corner lost).
 BlockModel block_model(const RegionDecomposition& decomposition, const BlockRules& rules, double quantum,
-                       bool two_corner = false, FeetSnap snap = FeetSnap::near);
+                       bool two_corner = false, FeetSnap snap = FeetSnap::near,
+                       double tolerance_quanta = kModelToleranceQuanta);
 
 // Along an arc of the face's boundary every sample of its polygon is a model vertex, so each chord
 // would get its own whole number of intervals and the nodes would bunch where chords round up. This

@@ -345,7 +345,10 @@ std::vector<int> graded_counts(const BlockModel& model, const FaceArcs& arcs, co
 
 }  // namespace
 
-MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecomposition& d, const MeshOptions& options) {
+// mesh_region_decomposition with the block model's tolerance (and the conformity check's) at
+// tolerance_quanta quanta.
+MeshResult mesh_region_decomposition_at(const InputFace& face, const RegionDecomposition& d, const MeshOptions& options,
+                                        double tolerance_quanta) {
   if (!face.is_general()) throw std::logic_error("mesh_region_decomposition: the face is rectilinear");
   if (!d.complete()) {
     const size_t left = d.unfinished.size();
@@ -355,7 +358,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   MeshResult result;
   const double h = checked_target_size(face, options, result);
   const double q = face.region.quantum();
-  const double tolerance = std::max({face.planar.tolerance, kModelToleranceQuanta * q, 1e-9 * face.region.bbox().longer_side()});
+  const double tolerance = std::max({face.planar.tolerance, tolerance_quanta * q, 1e-9 * face.region.bbox().longer_side()});
   const std::vector<Ring> loops = face.region.loops();
   result.bound = scaled_jacobian_bound(loops, face.arcs);
   result.topology_bound = topology_jacobian_bound(loops, face.arcs);
@@ -369,7 +372,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   // (below). Where neither does, the model with feet a fair way apart made one too (FeetSnap::far): a
   // hole's cell cut into quarters through the hole, each quarter a template, puts its feet on the
   // cuts a twentieth of a side apart, and round the hole those edges cannot balance.
-  result.block_model = block_model(d, d.rules, q);
+  result.block_model = block_model(d, d.rules, q, false, FeetSnap::near, tolerance_quanta);
   merge_arc_chains(result.block_model, face.arcs);
   // An edge along an arc gets at least one interval per chord step of the arc: a quad's edge along the
   // arc is a chord the conformity check finds on the arc (FaceArcs::arc_of_mesh_edge). That minimum can
@@ -383,7 +386,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   ArcMinima minima = arc_minima(result.block_model, face.arcs, tip_steps);
   const BlockModel& model = result.block_model;
   auto snapped_model = [&](FeetSnap snap) {
-    BlockModel m = block_model(d, d.rules, q, false, snap);
+    BlockModel m = block_model(d, d.rules, q, false, snap, tolerance_quanta);
     merge_arc_chains(m, face.arcs);
     return m;
   };
@@ -432,7 +435,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
   // degenerate quad ranks a mesh below any without) and conformal.
   auto keep_if_better = [&](MeshResult& again, bool own_model) {
     const MeshQuality quality = mesh_quality(again.mesh);
-    if (!(judged_jacobian(quality) > judged_jacobian(result.quality))) return false;
+    if (result.conformity.conformal && !(judged_jacobian(quality) > judged_jacobian(result.quality))) return false;
     Conformity conformity = check_conformity(again.mesh, loops, tolerance, face.arcs);
     if (!conformity.conformal) return false;
     if (own_model) result.block_model = std::move(again.block_model);
@@ -483,7 +486,7 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
         return f.is_template && two_corner_improves(f.region, d.rules);
       })) {
     MeshResult again;
-    again.block_model = block_model(d, d.rules, q, true, model.snapped_feet > 0 ? model.feet : FeetSnap::placed);
+    again.block_model = block_model(d, d.rules, q, true, model.snapped_feet > 0 ? model.feet : FeetSnap::placed, tolerance_quanta);
     merge_arc_chains(again.block_model, face.arcs);
     const ArcMinima again_minima = arc_minima(again.block_model, face.arcs, tip_steps);
     if (remake(again, again.block_model, again_minima.chord, {}, true)) {
@@ -525,6 +528,23 @@ MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecompos
       result.acute_tips = true;
       result.arc_targets = false;
     }
+  }
+  return result;
+}
+
+MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecomposition& d, const MeshOptions& options) {
+  MeshResult result = mesh_region_decomposition_at(face, d, options, kModelToleranceQuanta);
+  if (result.conformity.conformal) return result;
+  // A T-junction the model missed leaves hanging nodes: the model made again with the wider tolerance
+  // (kWideModelToleranceQuanta), kept when its mesh passes the check. Its failure leaves the first.
+  try {
+    MeshResult wide = mesh_region_decomposition_at(face, d, options, kWideModelToleranceQuanta);
+    if (wide.conformity.conformal) {
+      wide.wide_tolerance = true;
+      return wide;
+    }
+  } catch (const std::runtime_error&) {
+    // the first mesh stands (and its check says what is wrong)
   }
   return result;
 }

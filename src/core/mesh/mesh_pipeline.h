@@ -93,6 +93,9 @@ struct MeshResult {
   // A general face's: the mesh kept was made with finer intervals on the arcs' edges from acute tips
   // (a convex corner sharper than 60 degrees where an arc ends; mesh_region_decomposition).
   bool acute_tips = false;
+  // A general face's: the mesh kept is of the block model made with the wider tolerance, the first's
+  // having failed its conformity check (kWideModelToleranceQuanta; mesh_region_decomposition).
+  bool wide_tolerance = false;
 };
 
 // Inputs:  face; decomposition of it (complete); options.
@@ -111,7 +114,9 @@ ConformalBlocks region_occt_model(const InputFace& face, const RegionDecompositi
 // Inputs:  face, a general face; decomposition of face.region (complete), made with options.general;
 //          options.
 // Outputs: everything above (layout empty; block_model, and fixed counts over its edges). Nodes lie
-//          on the face's lattice (within its quantum), and conformity is checked to kModelToleranceQuanta quanta.
+//          on the face's lattice (within its quantum), and conformity is checked to kModelToleranceQuanta quanta;
+//          where that mesh fails the check, the block model is made again with kWideModelToleranceQuanta
+//          (block_model.h), and that mesh, checked to it, is kept when it passes (wide_tolerance).
 // Throws as mesh_decomposition.
 MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecomposition& decomposition,
                                      const MeshOptions& options = {});

@@ -79,6 +79,7 @@ nlohmann::json mesh_report_json(const std::string& input, const RegionDecomposit
   report["acute_tips"] = r.acute_tips;
   report["feet_snapped"] = r.block_model.snapped_feet > 0;  // the kept model's (block_model's snap)
   report["far_feet"] = r.block_model.far_feet();
+  report["wide_tolerance"] = r.wide_tolerance;
   report["smoothing"] = {{"sweeps", r.smoothing.sweeps},
                          {"moves", r.smoothing.moves},
                          {"min_scaled_jacobian_before", r.smoothing.min_before}};

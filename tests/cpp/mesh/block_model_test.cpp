@@ -67,6 +67,33 @@ TEST_CASE("block model: shared vertices and edges, a T-junction imprinted into t
   CHECK(boundary == Approx(8.0));
 }
 
+TEST_CASE("block model: a T-junction several quanta off the side it lies on is imprinted at the wide tolerance", "[mesh][block_model]") {
+  // The two upper squares' shared corner 7 quanta above the long block's top side (where many cuts end
+  // on one line, each splitting it at a point rounded to the lattice, the drift adds up: 7.1 quanta
+  // measured on a perforated disk of 89 holes). Imprinted, every edge bounds one or two pieces and the
+  // boundary is the face's perimeter (8); not imprinted, the top side and the squares' bottoms each
+  // bound one piece (12).
+  RegionDecomposition d;
+  d.status = EpisodeStatus::Complete;
+  const double y = 1.0 + 7.0 * kQ;
+  d.finished.push_back(block(0, Ring{{0, 0}, {2, 0}, {2, 1}, {0, 1}}));
+  d.finished.push_back(block(1, Ring{{0, 1}, {1, y}, {1, 2}, {0, 2}}));
+  d.finished.push_back(block(2, Ring{{1, y}, {2, 1}, {2, 2}, {1, 2}}));
+  auto boundary = [](const BlockModel& m) {
+    double length = 0.0;
+    for (size_t e = 0; e < m.edges.size(); ++e) {
+      const int uses = edge_uses(m, e);
+      CHECK((uses == 1 || uses == 2));
+      if (uses == 1) length += m.edges[e].length;
+    }
+    return length;
+  };
+  CHECK(boundary(block_model(d, BlockRules{}, kQ)) == Approx(12.0));
+  const BlockModel wide = block_model(d, BlockRules{}, kQ, false, FeetSnap::near, kWideModelToleranceQuanta);
+  REQUIRE(wide.blocks.size() == 3);
+  CHECK(boundary(wide) == Approx(8.0));
+}
+
 TEST_CASE("block model: a template's pieces share their spokes and midpoints", "[mesh][block_model]") {
   RegionDecomposition d;
   d.status = EpisodeStatus::Complete;
