@@ -68,6 +68,38 @@ struct LoopPiece {
   bool from_template = false;
 };
 
+// Vertex ids in order of x, to visit those whose x lies within a side's span (its ends' x, widened by
+// the tolerance).
+class ByX {
+ public:
+  explicit ByX(const std::vector<Point2>& vertices) : order_(vertices.size()), xs_(vertices.size()) {
+    for (size_t v = 0; v < order_.size(); ++v) order_[v] = static_cast<int>(v);
+    std::sort(order_.begin(), order_.end(), [&](int a, int b) { return vertices[static_cast<size_t>(a)].x < vertices[static_cast<size_t>(b)].x; });
+    for (size_t i = 0; i < order_.size(); ++i) xs_[i] = vertices[static_cast<size_t>(order_[i])].x;
+  }
+  const std::vector<int>& order() const { return order_; }
+  // Calls visit(id) for every vertex whose x (as it was at construction) lies in [x0, x1].
+  template <typename Visit>
+  void within(double x0, double x1, Visit visit) const {
+    for (size_t j = static_cast<size_t>(std::lower_bound(xs_.begin(), xs_.end(), x0) - xs_.begin()); j < xs_.size() && xs_[j] <= x1; ++j) {
+      visit(order_[j]);
+    }
+  }
+
+ private:
+  std::vector<int> order_;
+  std::vector<double> xs_;
+};
+
+// Inputs: p; a side from a to b; tolerance. Output: true where p lies within the tolerance of the side
+// and along it more than the tolerance from either end.
+bool on_side_inside(Point2 p, Point2 a, Point2 b, double tolerance) {
+  const double dx = b.x - a.x, dy = b.y - a.y, length = std::hypot(dx, dy);
+  if (!(length > 0.0)) return false;
+  const double t = ((p.x - a.x) * dx + (p.y - a.y) * dy) / length;
+  return t > tolerance && t < length - tolerance && std::fabs((p.x - a.x) * dy - (p.y - a.y) * dx) / length <= tolerance;
+}
+
 // Inputs:  pieces, their loops as ids into vertices (counter-clockwise; T-junctions not yet in them);
 //          tolerance, how far off a side a vertex may lie and be on it.
 // Output:  per vertex, 1 where the pieces round it fill the full turn (inside the face), 0 where they
@@ -75,11 +107,7 @@ struct LoopPiece {
 std::vector<char> inside_face(const std::vector<LoopPiece>& pieces, const std::vector<Point2>& vertices, double tolerance) {
   const size_t n = vertices.size();
   std::vector<double> turn(n, 0.0);
-  std::vector<int> order(n);
-  for (size_t v = 0; v < n; ++v) order[v] = static_cast<int>(v);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return vertices[static_cast<size_t>(a)].x < vertices[static_cast<size_t>(b)].x; });
-  std::vector<double> xs(n);
-  for (size_t i = 0; i < n; ++i) xs[i] = vertices[static_cast<size_t>(order[i])].x;
+  const ByX by_x(vertices);
   for (const LoopPiece& piece : pieces) {
     const size_t m = piece.loop.size();
     if (m < 3) continue;
@@ -92,15 +120,9 @@ std::vector<char> inside_face(const std::vector<LoopPiece>& pieces, const std::v
       if (angle < 0.0) angle += 2.0 * M_PI;
       turn[static_cast<size_t>(piece.loop[i])] += angle;
       // A vertex on the inside of the side from i to i + 1 (a T-junction): half a turn.
-      const double dx = next.x - o.x, dy = next.y - o.y, length = std::hypot(dx, dy);
-      if (!(length > 0.0)) continue;
-      const auto first = std::lower_bound(xs.begin(), xs.end(), std::min(o.x, next.x) - tolerance);
-      for (size_t j = static_cast<size_t>(first - xs.begin()); j < n && xs[j] <= std::max(o.x, next.x) + tolerance; ++j) {
-        const Point2 p = vertices[static_cast<size_t>(order[j])];
-        const double t = ((p.x - o.x) * dx + (p.y - o.y) * dy) / length;
-        if (t <= tolerance || t >= length - tolerance) continue;
-        if (std::fabs((p.x - o.x) * dy - (p.y - o.y) * dx) / length <= tolerance) turn[static_cast<size_t>(order[j])] += M_PI;
-      }
+      by_x.within(std::min(o.x, next.x) - tolerance, std::max(o.x, next.x) + tolerance, [&](int v) {
+        if (on_side_inside(vertices[static_cast<size_t>(v)], o, next, tolerance)) turn[static_cast<size_t>(v)] += M_PI;
+      });
     }
   }
   std::vector<char> inside(n, 0);
@@ -176,9 +198,10 @@ int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices
     }
     return true;
   };
-  std::vector<int> order(n), to(n);
-  for (size_t v = 0; v < n; ++v) order[v] = to[v] = static_cast<int>(v);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return vertices[static_cast<size_t>(a)].x < vertices[static_cast<size_t>(b)].x; });
+  const ByX by_x(vertices);
+  const std::vector<int>& order = by_x.order();
+  std::vector<int> to(n);
+  for (size_t v = 0; v < n; ++v) to[v] = static_cast<int>(v);
   auto root = [&](int v) {
     while (to[static_cast<size_t>(v)] != v) v = to[static_cast<size_t>(v)];
     return v;
@@ -222,16 +245,8 @@ int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices
     }
     return true;
   };
-  // (A near move of a part's vertex, below.) The vertices' x in `order`, to find those near a side;
-  // p on the inside of the side from a to b (off its ends by more than the tolerance), or on either.
-  std::vector<double> xs(n);
-  for (size_t i = 0; i < n; ++i) xs[i] = vertices[static_cast<size_t>(order[i])].x;
-  auto on_inside = [&](Point2 p, Point2 a, Point2 b) {
-    const double dx = b.x - a.x, dy = b.y - a.y, length = std::hypot(dx, dy);
-    if (!(length > 0.0)) return false;
-    const double t = ((p.x - a.x) * dx + (p.y - a.y) * dy) / length;
-    return t > tolerance && t < length - tolerance && std::fabs((p.x - a.x) * dy - (p.y - a.y) * dx) / length <= tolerance;
-  };
+  // (A near move of a part's vertex, below.) p on the inside of the side from a to b, or on either end.
+  auto on_inside = [&](Point2 p, Point2 a, Point2 b) { return on_side_inside(p, a, b, tolerance); };
   auto on_or_end = [&](Point2 p, Point2 a, Point2 b) {
     return std::hypot(p.x - a.x, p.y - a.y) <= tolerance || std::hypot(p.x - b.x, p.y - b.y) <= tolerance || on_inside(p, a, b);
   };
@@ -257,12 +272,12 @@ int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices
         const bool turns = moved(m) || moved(rw);
         if (turns) {
           const Point2 a2 = new_at(m), b2 = new_at(rw);
-          const auto first = std::lower_bound(xs.begin(), xs.end(), std::min(a.x, b.x) - tolerance);
-          for (size_t j = static_cast<size_t>(first - xs.begin()); j < n && xs[j] <= std::max(a.x, b.x) + tolerance; ++j) {
-            const int y = root(order[j]);
-            if (y == m || y == rw) continue;
-            if (on_inside(at(y), a, b) && !on_or_end(new_at(y), a2, b2)) return false;
-          }
+          bool kept = true;
+          by_x.within(std::min(a.x, b.x) - tolerance, std::max(a.x, b.x) + tolerance, [&](int id_y) {
+            const int y = root(id_y);
+            if (kept && y != m && y != rw && on_inside(at(y), a, b) && !on_or_end(new_at(y), a2, b2)) kept = false;
+          });
+          if (!kept) return false;
         } else {
           for (const auto& [y, p] : all) {
             if (y != m && y != rw && on_inside(at(y), a, b) && !on_or_end(p, a, b)) return false;
@@ -279,24 +294,28 @@ int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices
   auto keeps_imprints = [&](int v, int r, std::vector<std::pair<int, Point2>>* moves) {
     moves->clear();
     const Point2 a = at(v), moved = at(r);
+    bool part_vertex = false;  // another part's vertex on a side that turns
     for (int w : neighbours[static_cast<size_t>(v)]) {
       const Point2 b = at(w);
       const double length2 = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
-      const auto first = std::lower_bound(xs.begin(), xs.end(), std::min(a.x, b.x) - tolerance);
-      for (size_t j = static_cast<size_t>(first - xs.begin()); j < n && xs[j] <= std::max(a.x, b.x) + tolerance; ++j) {
-        const int x = root(order[j]);
-        if (x == root(v) || x == root(w) || x == r) continue;
+      by_x.within(std::min(a.x, b.x) - tolerance, std::max(a.x, b.x) + tolerance, [&](int id_x) {
+        const int x = root(id_x);
+        if (part_vertex || x == root(v) || x == root(w) || x == r) return;
         const Point2 p = at(x);
-        if (!on_inside(p, a, b) || on_inside(p, moved, b)) continue;
-        if (movable[static_cast<size_t>(x)] != kMovesFar) return false;
+        if (!on_inside(p, a, b) || on_inside(p, moved, b)) return;
+        if (movable[static_cast<size_t>(x)] != kMovesFar) {
+          part_vertex = true;
+          return;
+        }
         const double share = ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / length2;
         moves->emplace_back(x, Point2{moved.x + share * (b.x - moved.x), moved.y + share * (b.y - moved.y)});
-      }
+      });
+      if (part_vertex) return false;
     }
     moves->emplace_back(root(v), moved);
     return moves_keep(*moves);
   };
-  std::vector<std::pair<int, Point2>> moves;
+  std::vector<std::pair<int, Point2>> moves, best_moves;  // a candidate's; the best one's so far
   int snapped = 0;
   for (size_t i = 0; i < n; ++i) {
     const int v = order[i];
@@ -327,12 +346,12 @@ int snap_near_feet(std::vector<LoopPiece>& pieces, std::vector<Point2>& vertices
         }
         best = r;
         best_distance = d;
+        if (movable[vi] == kMovesNear) best_moves.swap(moves);
       }
     }
     if (best < 0) continue;
     if (movable[vi] == kMovesNear) {
-      keeps_imprints(v, best, &moves);
-      for (const auto& [x, p] : moves) {
+      for (const auto& [x, p] : best_moves) {
         if (x != v) vertices[static_cast<size_t>(x)] = p;
       }
     }
