@@ -116,8 +116,9 @@ double longest_side(const TopoDS_Shape& solid) {
 }
 
 // The solid's figures for the conformity check; tolerance, how far the cap's nodes may lie off its
-// boundary (a general face's: on its lattice, as the 2-D check allows).
-SolidFigures solid_figures(const SweptSolid& s) {
+// boundary (a general face's: on its lattice, as the 2-D check allows, at the tolerance its block
+// model was made with: wide, kWideModelToleranceQuanta, where the cap's first mesh failed its check).
+SolidFigures solid_figures(const SweptSolid& s, bool wide) {
   SolidFigures f;
   f.volume = s.volume;
   f.area = s.area;
@@ -161,7 +162,7 @@ SolidFigures solid_figures(const SweptSolid& s) {
     }
   }
   if (s.cap.is_general()) {
-    f.tolerance = std::max({s.cap.planar.tolerance, kModelToleranceQuanta * s.cap.region.quantum(),
+    f.tolerance = std::max({s.cap.planar.tolerance, (wide ? kWideModelToleranceQuanta : kModelToleranceQuanta) * s.cap.region.quantum(),
                             1e-9 * s.cap.region.bbox().longer_side()});
   }
   return f;
@@ -251,7 +252,7 @@ SolidMeshing mesh_swept_solid(const SweptSolid& solid, const DecomposeSettings& 
 
   t = std::chrono::steady_clock::now();
   out.quality = hex_mesh_quality(out.mesh);
-  out.conformity = check_hex_conformity(out.mesh, solid_figures(solid));
+  out.conformity = check_hex_conformity(out.mesh, solid_figures(solid, out.cap.result.wide_tolerance));
   out.check_seconds = since(t);
   out.seconds = since(start);
   return out;
