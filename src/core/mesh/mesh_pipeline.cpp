@@ -346,9 +346,10 @@ std::vector<int> graded_counts(const BlockModel& model, const FaceArcs& arcs, co
 }  // namespace
 
 // mesh_region_decomposition with the block model's tolerance (and the conformity check's) at
-// tolerance_quanta quanta.
+// tolerance_quanta quanta. With remake_failed false, a first mesh that fails its check is returned
+// as it is (the model as the templates place its feet is not tried).
 MeshResult mesh_region_decomposition_at(const InputFace& face, const RegionDecomposition& d, const MeshOptions& options,
-                                        double tolerance_quanta) {
+                                        double tolerance_quanta, bool remake_failed) {
   if (!face.is_general()) throw std::logic_error("mesh_region_decomposition: the face is rectilinear");
   if (!d.complete()) {
     const size_t left = d.unfinished.size();
@@ -428,6 +429,7 @@ MeshResult mesh_region_decomposition_at(const InputFace& face, const RegionDecom
   result.quality = mesh_quality(result.mesh);
   result.conformity = check_conformity(result.mesh, loops, tolerance, face.arcs);
   result.check_seconds = since(start);
+  if (!remake_failed && !result.conformity.conformal) return result;
   auto poor = [&] {
     return result.conformity.conformal && judged_jacobian(result.quality) < kArcTargetsBelow * result.topology_bound;
   };
@@ -533,20 +535,23 @@ MeshResult mesh_region_decomposition_at(const InputFace& face, const RegionDecom
 }
 
 MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecomposition& d, const MeshOptions& options) {
-  MeshResult result = mesh_region_decomposition_at(face, d, options, kModelToleranceQuanta);
+  MeshResult result = mesh_region_decomposition_at(face, d, options, kModelToleranceQuanta, false);
   if (result.conformity.conformal) return result;
   // A T-junction the model missed leaves hanging nodes: the model made again with the wider tolerance
-  // (kWideModelToleranceQuanta), kept when its mesh passes the check. Its failure leaves the first.
+  // (kWideModelToleranceQuanta), kept when its mesh passes the check. Where it does not, the first
+  // model's other meshes (the feet as the templates place them), as without the wider one; their
+  // failure leaves the first mesh. (The wider model first: where it is needed, the first model's
+  // other meshes fail their check too, and each is a whole interval program and mesh.)
   try {
-    MeshResult wide = mesh_region_decomposition_at(face, d, options, kWideModelToleranceQuanta);
+    MeshResult wide = mesh_region_decomposition_at(face, d, options, kWideModelToleranceQuanta, true);
     if (wide.conformity.conformal) {
       wide.wide_tolerance = true;
       return wide;
     }
   } catch (const std::runtime_error&) {
-    // the first mesh stands (and its check says what is wrong)
+    // the first model's other meshes below
   }
-  return result;
+  return mesh_region_decomposition_at(face, d, options, kModelToleranceQuanta, true);
 }
 
 }  // namespace autoblock

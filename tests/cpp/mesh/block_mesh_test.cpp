@@ -15,6 +15,7 @@
 #include "core/mesh/mesh_pipeline.h"
 #include "core/mesh/mesh_quality.h"
 #include "core/mesh/mesh_smoothing.h"
+#include "core/region/block.h"
 #include "core/region/region_policy.h"
 
 using namespace autoblock;
@@ -126,4 +127,37 @@ TEST_CASE("graded spacing from an edge's ends against hand values", "[mesh][bloc
   check(graded_fractions(5, 10.0, 1.0, 1.0, 2.0), {0.0, 0.1, 0.3, 0.7, 0.9, 1.0});
   // Too few intervals to fill 10 from a first of 1 at ratio 2 (1 + 2 + 4 = 7): all scaled by 10 / 7.
   check(graded_fractions(3, 10.0, 1.0, 0.0, 2.0), {0.0, 1.0 / 7.0, 3.0 / 7.0, 1.0});
+}
+
+TEST_CASE("block mesh: a T-junction the first block model misses is meshed with the wide tolerance", "[mesh][block_model]") {
+  // A 2 x 2 square: a long block below, two squares above whose shared corner lies 7 quanta above the
+  // long block's top side (block_model_test: imprinted at the wide tolerance, not at the first). The
+  // first model's mesh has hanging nodes there and fails its check; the mesh kept is the wide model's,
+  // conformal.
+  InputFace face;
+  face.region = Region(Ring{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {}, kQ);
+  RegionDecomposition d;
+  d.status = EpisodeStatus::Complete;
+  const double y = 1.0 + 7.0 * kQ;
+  auto part = [](int id, const Ring& ring) {
+    FinishedRegion f;
+    f.id = id;
+    f.region = Region(ring, {}, kQ);
+    const auto corners = block_corners(f.region);
+    REQUIRE(corners);
+    f.corners = *corners;
+    return f;
+  };
+  d.finished.push_back(part(0, Ring{{0, 0}, {2, 0}, {2, 1}, {0, 1}}));
+  d.finished.push_back(part(1, Ring{{0, 1}, {1, y}, {1, 2}, {0, 2}}));
+  d.finished.push_back(part(2, Ring{{1, y}, {2, 1}, {2, 2}, {1, 2}}));
+  REQUIRE(d.complete());
+  MeshOptions options;
+  options.size = 0.25;
+  options.occt_model = false;
+  const MeshResult m = mesh_region_decomposition(face, d, options);
+  INFO(m.conformity.problem);
+  CHECK(m.wide_tolerance);
+  CHECK(m.conformity.conformal);
+  CHECK(m.conformity.quad_area == Approx(4.0));
 }
