@@ -15,8 +15,8 @@
 #include "core/mesh/mesh_pipeline.h"
 #include "core/mesh/mesh_quality.h"
 #include "core/mesh/mesh_smoothing.h"
-#include "core/region/block.h"
 #include "core/region/region_policy.h"
+#include "support/mesh_fixtures.h"
 
 using namespace autoblock;
 
@@ -139,15 +139,7 @@ TEST_CASE("block mesh: a T-junction the first block model misses is meshed with 
   RegionDecomposition d;
   d.status = EpisodeStatus::Complete;
   const double y = 1.0 + 7.0 * kQ;
-  auto part = [](int id, const Ring& ring) {
-    FinishedRegion f;
-    f.id = id;
-    f.region = Region(ring, {}, kQ);
-    const auto corners = block_corners(f.region);
-    REQUIRE(corners);
-    f.corners = *corners;
-    return f;
-  };
+  auto part = [](int id, const Ring& ring) { return test::finished_block(id, ring, kQ); };
   d.finished.push_back(part(0, Ring{{0, 0}, {2, 0}, {2, 1}, {0, 1}}));
   d.finished.push_back(part(1, Ring{{0, 1}, {1, y}, {1, 2}, {0, 2}}));
   d.finished.push_back(part(2, Ring{{1, y}, {2, 1}, {2, 2}, {1, 2}}));

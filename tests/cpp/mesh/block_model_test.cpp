@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "support/mesh_fixtures.h"
+
 using namespace autoblock;
 
 namespace {
@@ -13,13 +15,7 @@ namespace {
 constexpr double kQ = 1e-7;
 
 FinishedRegion block(int id, const Ring& ring) {
-  FinishedRegion f;
-  f.id = id;
-  f.region = Region(ring, {}, kQ);
-  const auto corners = block_corners(f.region);
-  REQUIRE(corners);
-  f.corners = *corners;
-  return f;
+  return test::finished_block(id, ring, kQ);
 }
 
 // A long block under two short ones: (1, 1) is a T-junction on the long block's top side.

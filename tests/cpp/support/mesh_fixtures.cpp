@@ -17,6 +17,7 @@
 #include "core/geometry/occt_face.h"
 #include "core/geometry/occt_properties.h"
 #include "core/mesh/mapped_mesh.h"
+#include "core/region/block.h"
 #include "support/test_shapes.h"
 
 namespace autoblock::test {
@@ -100,6 +101,16 @@ void check_conformal_model(const ConformalBlocks& model, const RectilinearPolygo
     }
   }
   CHECK(area == Approx(polygon_area(polygon)).epsilon(1e-12));
+}
+
+FinishedRegion finished_block(int id, const Ring& ring, double quantum) {
+  FinishedRegion f;
+  f.id = id;
+  f.region = Region(ring, {}, quantum);
+  const auto corners = block_corners(f.region);
+  REQUIRE(corners);
+  f.corners = *corners;
+  return f;
 }
 
 }  // namespace autoblock::test

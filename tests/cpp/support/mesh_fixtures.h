@@ -9,6 +9,7 @@
 #include "core/mesh/interval_assignment.h"
 #include "core/mesh/quad_mesh.h"
 #include "core/mesh/strip_layout.h"
+#include "core/region/region_episode.h"
 
 namespace autoblock::test {
 
@@ -34,5 +35,9 @@ std::vector<Box> pinwheel_blocks();
 // boundary or to two faces inside it, every vertex on a face's side is a vertex of that face, and
 // the faces' areas add up to the polygon's.
 void check_conformal_model(const ConformalBlocks& model, const RectilinearPolygon& polygon);
+
+// Inputs: id; ring, a block's outline (four corners); quantum. Output: the finished block (its
+//         corners found as block.h finds them; a Catch2 REQUIRE that it has them).
+FinishedRegion finished_block(int id, const Ring& ring, double quantum);
 
 }  // namespace autoblock::test
