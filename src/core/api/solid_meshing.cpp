@@ -27,6 +27,7 @@
 #include "core/io/shape_file.h"
 #include "core/io/svg_picture.h"
 #include "core/mesh/block_model.h"
+#include "core/mesh/mesh_pipeline.h"
 #include "core/geometry/edge_curve.h"
 #include "core/geometry/occt_face.h"
 
@@ -161,10 +162,7 @@ SolidFigures solid_figures(const SweptSolid& s, bool wide) {
       f.cap_height = std::fabs(s.sweep.Dot(gp_Vec(normal)));
     }
   }
-  if (s.cap.is_general()) {
-    f.tolerance = std::max({s.cap.planar.tolerance, (wide ? kWideModelToleranceQuanta : kModelToleranceQuanta) * s.cap.region.quantum(),
-                            1e-9 * s.cap.region.bbox().longer_side()});
-  }
+  if (s.cap.is_general()) f.tolerance = general_mesh_tolerance(s.cap, wide ? kWideModelToleranceQuanta : kModelToleranceQuanta);
   return f;
 }
 

@@ -343,8 +343,6 @@ std::vector<int> graded_counts(const BlockModel& model, const FaceArcs& arcs, co
   return counts;
 }
 
-}  // namespace
-
 // mesh_region_decomposition with the block model's tolerance (and the conformity check's) at
 // tolerance_quanta quanta. With remake_failed false, a first mesh that fails its check is returned
 // as it is (the model as the templates place its feet is not tried).
@@ -359,7 +357,7 @@ MeshResult mesh_region_decomposition_at(const InputFace& face, const RegionDecom
   MeshResult result;
   const double h = checked_target_size(face, options, result);
   const double q = face.region.quantum();
-  const double tolerance = std::max({face.planar.tolerance, tolerance_quanta * q, 1e-9 * face.region.bbox().longer_side()});
+  const double tolerance = general_mesh_tolerance(face, tolerance_quanta);
   const std::vector<Ring> loops = face.region.loops();
   result.bound = scaled_jacobian_bound(loops, face.arcs);
   result.topology_bound = topology_jacobian_bound(loops, face.arcs);
@@ -532,6 +530,12 @@ MeshResult mesh_region_decomposition_at(const InputFace& face, const RegionDecom
     }
   }
   return result;
+}
+
+}  // namespace
+
+double general_mesh_tolerance(const InputFace& face, double tolerance_quanta) {
+  return std::max({face.planar.tolerance, tolerance_quanta * face.region.quantum(), 1e-9 * face.region.bbox().longer_side()});
 }
 
 MeshResult mesh_region_decomposition(const InputFace& face, const RegionDecomposition& d, const MeshOptions& options) {

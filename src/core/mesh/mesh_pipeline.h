@@ -111,6 +111,13 @@ MeshResult mesh_decomposition(const InputFace& face, const Decomposition& decomp
 // Throws std::logic_error when the replay disagrees with the engine.
 ConformalBlocks region_occt_model(const InputFace& face, const RegionDecomposition& decomposition, const MeshOptions& options);
 
+// Inputs:  face, a general face; tolerance_quanta, its block model's (kModelToleranceQuanta, or
+//          kWideModelToleranceQuanta where the first model's mesh failed its check: MeshResult::wide_tolerance).
+// Output:  how far a node may lie off the face's boundary and off a block's side in the conformity
+//          check (and the hex sweep's, of a cap): that many quanta, at least the face's own tolerance
+//          and 1e-9 of its size.
+double general_mesh_tolerance(const InputFace& face, double tolerance_quanta);
+
 // Inputs:  face, a general face; decomposition of face.region (complete), made with options.general;
 //          options.
 // Outputs: everything above (layout empty; block_model, and fixed counts over its edges). Nodes lie
