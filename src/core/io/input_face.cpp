@@ -128,6 +128,60 @@ double smallest_feature(const Region& region) {
   return smallest;
 }
 
+// The face's vertices between two straight edges (as read) that the region leaves out, on its
+// lattice: a vertex between two edges in line, which the region's canonical form merges. (An arc's
+// ends are its polygon's first and last samples; a full circle's seam is no corner of anything.)
+std::vector<Point2> straight_vertices(const FaceRings& read, const Region& region) {
+  const double q = region.quantum();
+  std::vector<Point2> kept;
+  for (int k = 0; k < region.loop_count(); ++k) kept.insert(kept.end(), region.loop(k).begin(), region.loop(k).end());
+  auto before = [](Point2 a, Point2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); };
+  std::sort(kept.begin(), kept.end(), before);
+  std::vector<Point2> left_out;
+  for (const auto& wire : read.edges) {
+    for (size_t e = 0; e < wire.size(); ++e) {
+      const FaceRings::Edge& edge = wire[e];
+      if (edge.arc >= 0 || wire[(e + wire.size() - 1) % wire.size()].arc >= 0) continue;  // an arc's end
+      const Point2 p{snap_to_lattice(edge.start.x, q), snap_to_lattice(edge.start.y, q)};
+      if (!std::binary_search(kept.begin(), kept.end(), p, before)) left_out.push_back(p);
+    }
+  }
+  return left_out;
+}
+
+// The same for a rectilinear face: its vertices that the polygon leaves out, each coordinate snapped
+// to the polygon's own within tolerance (as the polygon's are, validate_polygon.h).
+std::vector<Point2> straight_vertices(const FaceRings& read, const RectilinearPolygon& polygon, double tolerance) {
+  std::vector<double> xs, ys;
+  std::vector<Point2> kept = polygon.outer;
+  for (const Ring& hole : polygon.holes) kept.insert(kept.end(), hole.begin(), hole.end());
+  for (const Point2& p : kept) {
+    xs.push_back(p.x);
+    ys.push_back(p.y);
+  }
+  auto snapped = [&](double v, const std::vector<double>& values) {
+    double best = v, distance = tolerance;
+    for (double w : values) {
+      if (std::fabs(w - v) <= distance) {
+        distance = std::fabs(w - v);
+        best = w;
+      }
+    }
+    return best;
+  };
+  std::vector<Point2> left_out;
+  for (const auto& wire : read.edges) {
+    for (const FaceRings::Edge& edge : wire) {  // (no arcs: the face is a polygon)
+      const Point2 p{snapped(edge.start.x, xs), snapped(edge.start.y, ys)};
+      const bool kept_vertex = std::any_of(kept.begin(), kept.end(), [&](Point2 k) {
+        return std::fabs(k.x - p.x) <= tolerance && std::fabs(k.y - p.y) <= tolerance;
+      });
+      if (!kept_vertex) left_out.push_back(p);
+    }
+  }
+  return left_out;
+}
+
 // What OpenCASCADE needs beyond the polygon checks before it cuts the face (tolerance, the largest
 // of its tolerances, from check_finite_geometry; feature, the face's smallest feature): a face its
 // own checker accepts (edges on their vertices, curves on the surface, ...), with tolerances small
@@ -197,10 +251,12 @@ InputFace input_face_from_occt(const TopoDS_Face& face, const std::string& sourc
       input.planar.polygon = validate_rings(read.rings, &input.planar.tolerance);
       check_vertices_on_plane(read, input.planar.tolerance);
       input.grid = make_grid_face(input.planar.polygon);
+      input.straight_vertices = straight_vertices(read, input.planar.polygon, input.planar.tolerance);
       check_occt_face(input.occt, tolerance, smallest_feature(*input.grid.grid));
     } else {
       input.region = validate_general_rings(read.rings, &input.planar.tolerance);
       input.arcs.arcs = read.arcs;
+      input.straight_vertices = straight_vertices(read, input.region);
       // Samples and cut ends lie on the lattice (within q / sqrt 2 of where they belong), T-junctions
       // within kModelToleranceQuanta quanta of a side (block_model.h).
       input.arcs.tolerance = kArcToleranceQuanta * input.region.quantum();

@@ -25,6 +25,11 @@ struct InputFace {
   GridFace grid;       // a rectilinear face on its grid; empty for a general face
   Region region;       // a general face as a region on its lattice; empty for a rectilinear face
   FaceArcs arcs;       // a general face's circular edges, in its frame (its region holds their samples)
+  // The face's vertices between two straight edges that its region or polygon leaves out (in line:
+  // the canonical forms merge them, region.h, validate_polygon.h), on the region's lattice or the
+  // polygon's coordinates. The mesh has a node at each, as at every other vertex of the face
+  // (block_model imprints them into the blocks' sides; strip_layout draws a mesh line through each).
+  std::vector<Point2> straight_vertices;
   bool is_general() const { return !region.is_empty(); }
 };
 

@@ -396,7 +396,7 @@ double BlockModel::side_length(const ModelSide& side) const {
 }
 
 BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, double quantum, bool two_corner,
-                       FeetSnap snap, double tolerance_quanta) {
+                       FeetSnap snap, double tolerance_quanta, const std::vector<Point2>& boundary_vertices) {
   if (!d.complete()) throw std::logic_error("block_model: the decomposition is incomplete");
   if (!(quantum > 0.0)) throw std::logic_error("block_model: the quantum must be positive");
   BlockModel model;
@@ -471,6 +471,10 @@ BlockModel block_model(const RegionDecomposition& d, const BlockRules& rules, do
     }
     model.snapped_feet = snap_near_feet(pieces, model.vertices, movable, tolerance, snap == FeetSnap::far);
   }
+
+  // The face's vertices the parts left out (after the snap: they never move), one with a vertex as
+  // near as any two are.
+  for (const Point2& p : boundary_vertices) index.find_or_add(p);
 
   // Imprint: every vertex on the inside of a loop's segment goes into the loop, in order along it.
   for (LoopPiece& piece : pieces) {

@@ -95,14 +95,18 @@ struct BlockModel {
 //          pieces that move keeping kFarFootShape of their shape and their order along the side);
 //          one moves to the other, along the side; a part's own vertex moves only a hair (near),
 //          only inside the face, and only where every vertex on a side it turns stays on it (a
-//          template's vertex there moves with it); one on the face's boundary never moves.
+//          template's vertex there moves with it); one on the face's boundary never moves;
+//          boundary_vertices, points of the face's boundary that are model vertices too (the face's
+//          vertices its region leaves out, InputFace::straight_vertices), imprinted into the sides
+//          they lie on like any other.
 // Outputs: the model above, blocks part by part in the decomposition's order (a template's pieces
 //          in template_pieces's order).
 // Throws std::logic_error when the pieces do not fit together (an edge used by more than two
 // pieces, a corner lost).
 BlockModel block_model(const RegionDecomposition& decomposition, const BlockRules& rules, double quantum,
                        bool two_corner = false, FeetSnap snap = FeetSnap::near,
-                       double tolerance_quanta = kModelToleranceQuanta);
+                       double tolerance_quanta = kModelToleranceQuanta,
+                       const std::vector<Point2>& boundary_vertices = {});
 
 // Along an arc of the face's boundary every sample of its polygon is a model vertex, so each chord
 // would get its own whole number of intervals and the nodes would bunch where chords round up. This

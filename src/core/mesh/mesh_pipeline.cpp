@@ -185,7 +185,7 @@ MeshResult mesh_decomposition(const InputFace& face, const Decomposition& d, con
 
   // Intervals first: an infeasible request fails before the slower CAD work.
   auto start = std::chrono::steady_clock::now();
-  result.layout = strip_layout(face.grid, d.blocks);
+  result.layout = strip_layout(face.grid, d.blocks, face.straight_vertices);
   const double tolerance = std::max(face.planar.tolerance, 1e-9 * face.grid.size);
   assign_with_fixed(result, options, h, [&](const EdgeIntervals& e) {
     return fixed_intervals_on(result.layout, e.a, e.b, e.intervals, tolerance);
@@ -371,7 +371,7 @@ MeshResult mesh_region_decomposition_at(const InputFace& face, const RegionDecom
   // (below). Where neither does, the model with feet a fair way apart made one too (FeetSnap::far): a
   // hole's cell cut into quarters through the hole, each quarter a template, puts its feet on the
   // cuts a twentieth of a side apart, and round the hole those edges cannot balance.
-  result.block_model = block_model(d, d.rules, q, false, FeetSnap::near, tolerance_quanta);
+  result.block_model = block_model(d, d.rules, q, false, FeetSnap::near, tolerance_quanta, face.straight_vertices);
   merge_arc_chains(result.block_model, face.arcs);
   // An edge along an arc gets at least one interval per chord step of the arc: a quad's edge along the
   // arc is a chord the conformity check finds on the arc (FaceArcs::arc_of_mesh_edge). That minimum can
@@ -385,7 +385,7 @@ MeshResult mesh_region_decomposition_at(const InputFace& face, const RegionDecom
   ArcMinima minima = arc_minima(result.block_model, face.arcs, tip_steps);
   const BlockModel& model = result.block_model;
   auto snapped_model = [&](FeetSnap snap) {
-    BlockModel m = block_model(d, d.rules, q, false, snap, tolerance_quanta);
+    BlockModel m = block_model(d, d.rules, q, false, snap, tolerance_quanta, face.straight_vertices);
     merge_arc_chains(m, face.arcs);
     return m;
   };
@@ -486,7 +486,8 @@ MeshResult mesh_region_decomposition_at(const InputFace& face, const RegionDecom
         return f.is_template && two_corner_improves(f.region, d.rules);
       })) {
     MeshResult again;
-    again.block_model = block_model(d, d.rules, q, true, model.snapped_feet > 0 ? model.feet : FeetSnap::placed, tolerance_quanta);
+    again.block_model = block_model(d, d.rules, q, true, model.snapped_feet > 0 ? model.feet : FeetSnap::placed, tolerance_quanta,
+                                     face.straight_vertices);
     merge_arc_chains(again.block_model, face.arcs);
     const ArcMinima again_minima = arc_minima(again.block_model, face.arcs, tip_steps);
     if (remake(again, again.block_model, again_minima.chord, {}, true)) {

@@ -44,13 +44,17 @@ std::vector<double> refined(const std::vector<double>& face_values, const std::v
 
 }  // namespace
 
-StripLayout strip_layout(const GridFace& face, const std::vector<Box>& blocks) {
+StripLayout strip_layout(const GridFace& face, const std::vector<Box>& blocks, const std::vector<Point2>& boundary_points) {
   const Grid& face_grid = *face.grid;
   const double tolerance = 1e-9 * face.size;
   std::vector<double> block_xs, block_ys;
   for (const Box& b : blocks) {
     block_xs.insert(block_xs.end(), {b.xmin, b.xmax});
     block_ys.insert(block_ys.end(), {b.ymin, b.ymax});
+  }
+  for (const Point2& p : boundary_points) {
+    block_xs.push_back(p.x);
+    block_ys.push_back(p.y);
   }
   auto grid_ptr = std::make_shared<Grid>();
   grid_ptr->xs = refined(face_grid.xs, block_xs, tolerance);
@@ -89,6 +93,7 @@ StripLayout strip_layout(const GridFace& face, const std::vector<Box>& blocks) {
     }
   }
   if (covered != inside_cell) throw std::logic_error("strip_layout: the blocks do not cover the face");
+  for (const Point2& p : boundary_points) corner[point(grid_index(g.xs, p.x, tolerance), grid_index(g.ys, p.y, tolerance))] = 1;
 
   // Forced lines. Horizontal grid segment (i, j) is [xs[i], xs[i+1]] at y = ys[j]; it is interior
   // when the cells below and above are both inside. A maximal run of interior segments is a chord

@@ -55,10 +55,13 @@ struct StripLayout {
 };
 
 // Inputs:  face on its grid; blocks, a partition of the face into rectangles (a Decomposition's
-//          blocks, or any other).
+//          blocks, or any other); boundary_points, points of the face's boundary that are mesh nodes
+//          (the face's vertices its polygon leaves out, InputFace::straight_vertices): each forces
+//          the lines through it as a block corner does.
 // Outputs: the strips, the cells, and the strip of every cell of the layout's grid.
 // Throws std::logic_error when the blocks do not partition the face.
-StripLayout strip_layout(const GridFace& face, const std::vector<Box>& blocks);
+StripLayout strip_layout(const GridFace& face, const std::vector<Box>& blocks,
+                         const std::vector<Point2>& boundary_points = {});
 
 // Inputs: layout; axis; grid line index (j for a horizontal line y = ys[j], i for x = xs[i]);
 //         grid range [from, to) along the line.

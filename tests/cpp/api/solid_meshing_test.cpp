@@ -3,6 +3,8 @@
 // every mesh conformal by the independent check, volumes exact, the prism blocks conformal.
 #include "support/catch_torch.h"
 
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepCheck_Analyzer.hxx>
@@ -18,6 +20,8 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "core/api/solid_meshing.h"
 #include "core/common/error.h"
@@ -155,6 +159,30 @@ TEST_CASE("swept solids of general faces (edges at any angle): conformal, exact 
       if (k < 2) check_blocks(m, 1e-6);
       ++k;
     }
+  }
+}
+
+TEST_CASE("swept solids whose cap has a vertex between two edges in line: a column of nodes up the split side",
+          "[solid][hex][api]") {
+  // A rectangle and a pentagon whose bottom edge is two edges meeting at (3.37, 0), extruded: the side
+  // face below that edge is two faces, and the hexahedra must meet both (the cap's mesh had no node at
+  // the vertex, and the sweep failed its conformity check: two side faces' quads did not add up).
+  std::mt19937_64 rng(11);
+  const std::vector<std::vector<std::pair<double, double>>> caps = {{{0, 0}, {3.37, 0}, {10, 0}, {10, 4}, {0, 4}},
+                                                                    {{0, 0}, {3.37, 0}, {10, 0}, {12, 5}, {1, 4}}};
+  for (size_t c = 0; c < caps.size(); ++c) {
+    BRepBuilderAPI_MakePolygon wire;
+    for (const auto& [x, y] : caps[c]) wire.Add(gp_Pnt(x, y, 0));
+    wire.Close();
+    const Extrusion e = extrude(BRepBuilderAPI_MakeFace(wire.Wire()).Face(), 0, 0, 3, false, rng);
+    const SweptSolid solid = swept_solid_from_shape(e.solid, "split side " + std::to_string(c));
+    SolidMeshOptions o;
+    o.cap.size = 1.0;
+    const SolidMeshing m = mesh_swept_solid(solid, greedy(), o);
+    INFO("cap " << c << ": " << m.conformity.problem);
+    CHECK(m.cap.general() == (c == 1));
+    CHECK(m.conformity.conformal);
+    CHECK(m.conformity.hex_volume == Approx(e.volume).epsilon(1e-6));
   }
 }
 

@@ -5,6 +5,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <gp_Pnt.hxx>
+
+#include <algorithm>
 #include <random>
 
 #include "core/data/general_generator.h"
@@ -22,7 +27,17 @@ using namespace autoblock;
 
 namespace {
 constexpr double kQ = 1e-7;
+
+// A complete decomposition of face meshed at size through the pipeline, without the OpenCASCADE model.
+MeshResult mesh_without_occt(const InputFace& face, const RegionDecomposition& d, double size) {
+  REQUIRE(d.complete());
+  MeshOptions options;
+  options.size = size;
+  options.occt_model = false;
+  return mesh_region_decomposition(face, d, options);
 }
+
+}  // namespace
 
 TEST_CASE("block mesh: a parallelogram block gives equal parallelograms of its angle", "[mesh][general]") {
   RegionDecomposition d;
@@ -143,13 +158,39 @@ TEST_CASE("block mesh: a T-junction the first block model misses is meshed with 
   d.finished.push_back(part(0, Ring{{0, 0}, {2, 0}, {2, 1}, {0, 1}}));
   d.finished.push_back(part(1, Ring{{0, 1}, {1, y}, {1, 2}, {0, 2}}));
   d.finished.push_back(part(2, Ring{{1, y}, {2, 1}, {2, 2}, {1, 2}}));
-  REQUIRE(d.complete());
-  MeshOptions options;
-  options.size = 0.25;
-  options.occt_model = false;
-  const MeshResult m = mesh_region_decomposition(face, d, options);
+  const MeshResult m = mesh_without_occt(face, d, 0.25);
   INFO(m.conformity.problem);
   CHECK(m.wide_tolerance);
   CHECK(m.conformity.conformal);
   CHECK(m.conformity.quad_area == Approx(4.0));
+}
+
+TEST_CASE("block mesh: a vertex between two edges in line is a node of the mesh", "[mesh][block_model]") {
+  // A pentagon whose bottom edge is two edges meeting at (3.37, 0): the region merges them, the block
+  // model imprints the vertex into the side it lies on, and the mesh has a node there (on the face's
+  // lattice, as every vertex's node is).
+  BRepBuilderAPI_MakePolygon wire;
+  for (const auto& [x, y] : std::vector<std::pair<double, double>>{{0, 0}, {3.37, 0}, {10, 0}, {12, 5}, {1, 4}}) {
+    wire.Add(gp_Pnt(x, y, 0));
+  }
+  wire.Close();
+  const InputFace face = input_face_from_occt(BRepBuilderAPI_MakeFace(wire.Wire()).Face(), "split pentagon");
+  REQUIRE(face.is_general());
+  CHECK(face.region.outer().size() == 4);
+  REQUIRE(face.straight_vertices.size() == 1);
+  RegionGreedyPolicy greedy;
+  const RegionDecomposition d = decompose_region(face.region, greedy);
+  const MeshResult m = mesh_without_occt(face, d, 1.0);
+  INFO(m.conformity.problem);
+  CHECK(m.conformity.conformal);
+  const double q = face.region.quantum();
+  auto distance_to = [&](Point2 p) {
+    double nearest = 1e300;
+    for (const Point2& n : m.mesh.nodes) nearest = std::min(nearest, std::hypot(n.x - p.x, n.y - p.y));
+    return nearest;
+  };
+  CHECK(distance_to({3.37, 0}) <= q);
+  // Without it the nearest node was a whole interval away (0.37 at this size).
+  const BlockModel plain = block_model(d, d.rules, q);
+  CHECK(std::none_of(plain.vertices.begin(), plain.vertices.end(), [](Point2 v) { return std::fabs(v.x - 3.37) < 1e-3 && v.y == 0.0; }));
 }

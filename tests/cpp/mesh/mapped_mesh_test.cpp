@@ -1,6 +1,12 @@
 // Mapped meshing: conformal meshes of exact rectangles, hand-made T-junctions, hundreds of faces.
 #include <catch2/catch.hpp>
 
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <gp_Pnt.hxx>
+
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <utility>
 
@@ -8,6 +14,7 @@
 #include "core/common/error.h"
 #include "core/env/decomposition.h"
 #include "core/geometry/occt_face.h"
+#include "core/io/input_face.h"
 #include "core/mesh/mesh_conformity.h"
 #include "core/mesh/mesh_pipeline.h"
 #include "core/mesh/mesh_quality.h"
@@ -43,6 +50,16 @@ void check_perfect(const QuadMesh& mesh, const RectilinearPolygon& polygon) {
   CHECK(q.min_scaled_jacobian == 1.0);  // exactly
   CHECK(q.irregular_interior_nodes == 0);
   CHECK(q.max_skew == 0.0);
+}
+
+// A rectangular face's mesh at size: the exact search's one block, meshed.
+MeshResult one_block_mesh(const InputFace& face, double size) {
+  auto policy = make_baseline_policy("optimal", face.grid.size, BaselineOptions{});
+  const Decomposition d = decompose_face(face.grid, *policy);
+  REQUIRE(d.blocks.size() == 1);
+  MeshOptions options;
+  options.size = size;
+  return mesh_decomposition(face, d, options);
 }
 
 }  // namespace
@@ -201,15 +218,35 @@ TEST_CASE("autoblock meshes hundreds of generated faces conformally with perfect
 TEST_CASE("a rectangular face is one block and one structured grid", "[mesh][mapped]") {
   const InputFace face =
       input_face_from_occt(occt_face_from_polygon(test::polygon_of({{0, 0}, {3, 0}, {3, 2}, {0, 2}}), 1, false), "rect");
-  auto policy = make_baseline_policy("optimal", face.grid.size, BaselineOptions{});
-  const Decomposition d = decompose_face(face.grid, *policy);
-  REQUIRE(d.blocks.size() == 1);
-  MeshOptions options;
-  options.size = 0.5;
-  const MeshResult r = mesh_decomposition(face, d, options);
+  const MeshResult r = one_block_mesh(face, 0.5);
   CHECK(r.mesh.quads.size() == 24);
   CHECK(r.mesh.nodes.size() == 35);
   check_perfect(r.mesh, face.planar.polygon);
+}
+
+TEST_CASE("a vertex between two edges in line is a mesh node, its line run across the face", "[mesh][mapped]") {
+  // A 10 x 4 rectangle whose bottom edge is two edges meeting at (3.37, 0) and whose left edge is two
+  // meeting at (0, 2.71) (as a solid's face is split where a neighbour's edge ends): the polygon
+  // merges them, the mesh keeps a node at each, and the mesh lines through them cross the face.
+  BRepBuilderAPI_MakePolygon wire;
+  for (const auto& [x, y] : std::vector<std::pair<double, double>>{{0, 0}, {3.37, 0}, {10, 0}, {10, 4}, {0, 4}, {0, 2.71}}) {
+    wire.Add(gp_Pnt(x, y, 0));
+  }
+  wire.Close();
+  const InputFace face = input_face_from_occt(BRepBuilderAPI_MakeFace(wire.Wire()).Face(), "split rectangle");
+  REQUIRE_FALSE(face.is_general());
+  CHECK(face.planar.polygon.outer.size() == 4);
+  REQUIRE(face.straight_vertices.size() == 2);
+  const MeshResult r = one_block_mesh(face, 1.0);
+  check_perfect(r.mesh, face.planar.polygon);
+  auto has_node = [&](Point2 p) {
+    return std::any_of(r.mesh.nodes.begin(), r.mesh.nodes.end(),
+                       [&](Point2 n) { return std::fabs(n.x - p.x) < 1e-12 && std::fabs(n.y - p.y) < 1e-12; });
+  };
+  for (const Point2 p : {Point2{3.37, 0}, Point2{3.37, 4}, Point2{0, 2.71}, Point2{10, 2.71}}) {
+    INFO(p.x << ", " << p.y);
+    CHECK(has_node(p));
+  }
 }
 
 TEST_CASE("meshing refuses incomplete decompositions", "[mesh][errors]") {
