@@ -114,7 +114,7 @@ void mesh_blocks(MeshResult& r, const BlockModel& model, const InputFace& face, 
                  const MeshOptions& options, double h, double tolerance, std::vector<int> edge_minimum,
                  const std::vector<double>& edge_target, bool second_pass = false, const ArcEndGrading* graded = nullptr) {
   r.mesh = block_model_mesh(model, r.intervals.intervals, face.planar.z, &face.arcs, nullptr, graded);
-  r.smoothing = smooth_quad_mesh(r.mesh, options.smoothing_sweeps, kWorstRounds, &face.arcs);
+  r.smoothing = smooth_quad_mesh(r.mesh, options.smoothing_sweeps, kWorstRounds, &face.arcs, face.straight_vertices);
   // A thin part whose two long sides have their vertices at different places along it gets a twisted
   // (inverted) quad when those sides carry few intervals, each vertex being a node: up to
   // options.twisted_rounds times (kTwistedRounds), the edges of the parts with an inverted quad get
@@ -138,7 +138,7 @@ void mesh_blocks(MeshResult& r, const BlockModel& model, const InputFace& face, 
       break;  // too many quads, or the fixed counts forbid more: the mesh stays as it is
     }
     r.mesh = block_model_mesh(model, r.intervals.intervals, face.planar.z, &face.arcs, nullptr, graded);
-    r.smoothing = smooth_quad_mesh(r.mesh, options.smoothing_sweeps, kWorstRounds, &face.arcs);
+    r.smoothing = smooth_quad_mesh(r.mesh, options.smoothing_sweeps, kWorstRounds, &face.arcs, face.straight_vertices);
   }
   // A fold that finer intervals do not undo (opposite sides spacing their nodes differently: a long
   // side with a fillet facing a short arc): those parts' blocks are filled along their sides' lengths
@@ -148,7 +148,8 @@ void mesh_blocks(MeshResult& r, const BlockModel& model, const InputFace& face, 
     std::vector<char> by_length(model.blocks.size(), 0);
     for (size_t b = 0; b < by_length.size(); ++b) by_length[b] = folded[static_cast<size_t>(model.blocks[b].part)];
     QuadMesh again = block_model_mesh(model, r.intervals.intervals, face.planar.z, &face.arcs, &by_length, graded);
-    const SmoothingReport smoothing = smooth_quad_mesh(again, options.smoothing_sweeps, kWorstRounds, &face.arcs);
+    const SmoothingReport smoothing =
+        smooth_quad_mesh(again, options.smoothing_sweeps, kWorstRounds, &face.arcs, face.straight_vertices);
     if (inverted_quads(again, nullptr) < before) {
       r.mesh = std::move(again);
       r.smoothing = smoothing;

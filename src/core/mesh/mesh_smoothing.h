@@ -18,7 +18,7 @@
 // (a straight stretch: not a corner) or on a circle of the face's arcs with both, staying on that line
 // or circle within [0.05, 0.95] of the way between them: a block whose opposite sides differ in
 // length gets its boundary spacing evened where its quads are worst. No other boundary node moves
-// (an arc's ends, its joins with straight edges, stay).
+// (an arc's ends, its joins with straight edges, the pinned vertices between edges in line, stay).
 //
 // Every move also keeps each quad around the node within kSmoothingEdgeRatio of longest edge over
 // shortest, or within its ratio before the move where that was more: the scaled Jacobian alone is
@@ -28,7 +28,10 @@
 // 16 (BENCHMARKS.md, "Smoothing that draws no quad into a triangle").
 #pragma once
 
+#include <vector>
+
 #include "core/geometry/circular_arc.h"
+#include "core/geometry/point.h"
 #include "core/mesh/quad_mesh.h"
 
 namespace autoblock {
@@ -41,12 +44,14 @@ struct SmoothingReport {
 
 // Inputs:  mesh, counter-clockwise quads; max_sweeps >= 0 (0: nothing moves); worst_rounds >= 0,
 //          the worst-first rounds after the sweeps; arcs, the face's circular edges in the mesh's
-//          frame (nullptr: none; their nodes stay).
+//          frame (nullptr: none; their nodes stay); pinned, points of the boundary whose nodes never
+//          slide though in line with their neighbours (the face's vertices between two edges in line,
+//          InputFace::straight_vertices: each is a node of the mesh, and stays one).
 // Outputs: mesh with its interior nodes, and the boundary nodes that slide, moved as above; the report.
 constexpr int kWorstRounds = 40;
 constexpr double kSmoothingEdgeRatio = 16.0;
 SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_rounds = kWorstRounds,
-                                 const FaceArcs* arcs = nullptr);
+                                 const FaceArcs* arcs = nullptr, const std::vector<Point2>& pinned = {});
 
 // A smoothed mesh may keep an inverted quad where its sweeps stopped at their limit (a sliver between
 // a cut and a hole's arc, one element across): each sweep lifts the worst quads a little. The quads

@@ -7,6 +7,7 @@
 
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
+#include <TopoDS_Wire.hxx>
 #include <gp_Pnt.hxx>
 
 #include <algorithm>
@@ -166,31 +167,45 @@ TEST_CASE("block mesh: a T-junction the first block model misses is meshed with 
 }
 
 TEST_CASE("block mesh: a vertex between two edges in line is a node of the mesh", "[mesh][block_model]") {
-  // A pentagon whose bottom edge is two edges meeting at (3.37, 0): the region merges them, the block
-  // model imprints the vertex into the side it lies on, and the mesh has a node there (on the face's
-  // lattice, as every vertex's node is).
-  BRepBuilderAPI_MakePolygon wire;
-  for (const auto& [x, y] : std::vector<std::pair<double, double>>{{0, 0}, {3.37, 0}, {10, 0}, {12, 5}, {1, 4}}) {
-    wire.Add(gp_Pnt(x, y, 0));
-  }
-  wire.Close();
-  const InputFace face = input_face_from_occt(BRepBuilderAPI_MakeFace(wire.Wire()).Face(), "split pentagon");
-  REQUIRE(face.is_general());
-  CHECK(face.region.outer().size() == 4);
-  REQUIRE(face.straight_vertices.size() == 1);
-  RegionGreedyPolicy greedy;
-  const RegionDecomposition d = decompose_region(face.region, greedy);
-  const MeshResult m = mesh_without_occt(face, d, 1.0);
-  INFO(m.conformity.problem);
-  CHECK(m.conformity.conformal);
-  const double q = face.region.quantum();
-  auto distance_to = [&](Point2 p) {
-    double nearest = 1e300;
-    for (const Point2& n : m.mesh.nodes) nearest = std::min(nearest, std::hypot(n.x - p.x, n.y - p.y));
-    return nearest;
+  // A pentagon whose bottom edge is two edges meeting at (3.37, 0), and a quadrilateral with a hole
+  // whose bottom edge is three edges and whose hole has such a vertex too: the region merges them, the
+  // block model imprints each into the side it lies on, the smoothing does not slide it away (its
+  // neighbours are in line with it), and the mesh has a node there (on the face's lattice, as every
+  // vertex's node is).
+  using Loop = std::vector<std::pair<double, double>>;
+  auto wire_of = [](const Loop& loop) {
+    BRepBuilderAPI_MakePolygon wire;
+    for (const auto& [x, y] : loop) wire.Add(gp_Pnt(x, y, 0));
+    wire.Close();
+    return wire.Wire();
   };
-  CHECK(distance_to({3.37, 0}) <= q);
-  // Without it the nearest node was a whole interval away (0.37 at this size).
-  const BlockModel plain = block_model(d, d.rules, q);
-  CHECK(std::none_of(plain.vertices.begin(), plain.vertices.end(), [](Point2 v) { return std::fabs(v.x - 3.37) < 1e-3 && v.y == 0.0; }));
+  const std::vector<std::pair<Loop, Loop>> faces = {
+      {{{0, 0}, {3.37, 0}, {10, 0}, {12, 5}, {1, 4}}, {}},
+      {{{0, 0}, {2.2, 0}, {5.1, 0}, {10, 0}, {11, 6}, {0, 6}}, {{3, 2}, {3, 4}, {7, 4}, {7, 2.7}, {5, 2.35}}}};
+  for (const auto& [outer, hole] : faces) {
+    BRepBuilderAPI_MakeFace make(wire_of(outer));
+    if (!hole.empty()) make.Add(wire_of(hole));
+    const InputFace face = input_face_from_occt(make.Face(), "split edges");
+    REQUIRE(face.is_general());
+    const size_t merged = hole.empty() ? 1 : 3;
+    CHECK(face.region.vertex_count() == static_cast<int>(outer.size() + hole.size() - merged));
+    REQUIRE(face.straight_vertices.size() == merged);
+    RegionGreedyPolicy greedy;
+    const RegionDecomposition d = decompose_region(face.region, greedy);
+    const MeshResult m = mesh_without_occt(face, d, hole.empty() ? 1.0 : 0.55);
+    INFO(m.conformity.problem);
+    CHECK(m.conformity.conformal);
+    const double q = face.region.quantum();
+    for (const Point2& v : face.straight_vertices) {
+      double nearest = 1e300;
+      for (const Point2& n : m.mesh.nodes) nearest = std::min(nearest, std::hypot(n.x - v.x, n.y - v.y));
+      INFO(v.x << ", " << v.y);
+      CHECK(nearest <= q);
+    }
+    // Without them the block model has no vertex there.
+    const BlockModel plain = block_model(d, d.rules, q);
+    for (const Point2& v : face.straight_vertices) {
+      CHECK(std::none_of(plain.vertices.begin(), plain.vertices.end(), [&](Point2 p) { return std::hypot(p.x - v.x, p.y - v.y) < 1e-3; }));
+    }
+  }
 }
