@@ -1720,6 +1720,26 @@ class TestSolids(unittest.TestCase):
         self.assertAlmostEqual(sum(s.Volume for s in obj.Shape.Solids), plate.Volume, delta=1e-6 * plate.Volume)
         self.assertEqual(len(AutoBlock.hex_mesh_objects_of(obj)), 1)
 
+    def test_a_pad_of_a_sketch_with_a_line_drawn_in_two_pieces(self):
+        """A side drawn as two collinear lines (a vertex mid-edge) splits the solid's side face in two: the cap's
+        mesh has a node at the vertex and the hexahedra a column of nodes up the split (the sweep failed its
+        conformity check before); the face alone meshes with the node too."""
+        V = FreeCAD.Vector
+        points = [V(0, 0, 0), V(3.37, 0, 0), V(10, 0, 0), V(10, 4, 0), V(0, 4, 0), V(0, 0, 0)]
+        face = Part.Face(Part.makePolygon(points))
+        self.assertEqual(len(face.Vertexes), 5)
+        solid = face.extrude(V(0, 0, 3))
+        self.assertEqual(len(solid.Faces), 7)  # the side below the split is two faces
+        source = support.add_face(self.doc, solid, "SplitPad")
+        mesh = AutoBlock.mesh(source, size=1.0)
+        self.assertIsInstance(mesh, AutoBlock.HexMeshResult)
+        self.assertTrue(mesh.conformal)
+        column = [p for p in mesh.nodes if abs(p.x - 3.37) < 1e-9 and abs(p.y) < 1e-9]
+        self.assertEqual(len(column), mesh.layers + 1)
+        flat = AutoBlock.mesh(support.add_face(self.doc, face, "SplitFace"), size=1.0)
+        self.assertTrue(flat.conformal)
+        self.assertTrue([p for p in flat.nodes if abs(p.x - 3.37) < 1e-9 and abs(p.y) < 1e-9])
+
     def test_a_box_meshes_to_hexahedra(self):
         box = self.doc.addObject("Part::Box", "Box")
         box.Length, box.Width, box.Height = 10, 4, 3
