@@ -27,6 +27,7 @@
 #include <cmath>
 #include <optional>
 #include <tuple>
+#include <utility>
 
 #include "core/common/error.h"
 #include "core/common/format.h"
@@ -151,7 +152,7 @@ struct CylinderFace {
 };
 
 // A pair of opposite faces tried as caps: how far it got (0 caps differ, 1 a side is not parallel,
-// 2 volume differs, 3 good) and why it stopped.
+// 2 volume differs, 3 a side face is split across the sweep, 4 good) and why it stopped.
 struct CapTrial {
   int stage = 0;
   std::string why;
@@ -160,8 +161,41 @@ struct CapTrial {
   gp_Vec sweep;
 };
 
+// Inputs: faces, the solid's (by number - 1); bottom, top, the caps; sweep; tolerance.
+// Output: the first edge of a side face that runs across the sweep between the caps (a side split
+// there: its middle strictly between the caps' planes, and not straight along the sweep), with its
+// face's number; none in a straight sweep, whose side faces are bounded by the caps' edges and lines
+// along the sweep.
+std::optional<std::pair<int, TopoDS_Edge>> edge_across_sweep(const std::vector<TopoDS_Face>& faces, const CapFace& bottom,
+                                                             const CapFace& top, const gp_Vec& sweep, double tolerance) {
+  const gp_Vec normal(bottom.normal);
+  const double height = sweep.Dot(normal);
+  if (std::fabs(height) <= tolerance) return std::nullopt;
+  for (size_t k = 0; k < faces.size(); ++k) {
+    const int number = static_cast<int>(k) + 1;
+    if (number == bottom.number || number == top.number || faces[k].IsNull()) continue;
+    for (TopExp_Explorer it(faces[k], TopAbs_EDGE); it.More(); it.Next()) {
+      const TopoDS_Edge edge = TopoDS::Edge(it.Current());
+      if (BRep_Tool::Degenerated(edge)) continue;
+      BRepAdaptor_Curve curve(edge);
+      const gp_Pnt middle = curve.Value(0.5 * (curve.FirstParameter() + curve.LastParameter()));
+      const double along = gp_Vec(bottom.centroid, middle).Dot(normal);
+      if (std::fabs(along) <= tolerance || std::fabs(along - height) <= tolerance) continue;  // in a cap's plane
+      // Along the sweep: straight from end to end (a line, or a translator's B-spline that is one) in
+      // the sweep's direction.
+      const gp_Pnt a = curve.Value(curve.FirstParameter()), b = curve.Value(curve.LastParameter());
+      const gp_Vec chord(a, b);
+      const double off_line = chord.Magnitude() > tolerance ? gp_Vec(a, middle).Crossed(chord).Magnitude() / chord.Magnitude() : 0.0;
+      if (chord.Crossed(sweep).Magnitude() <= tolerance * sweep.Magnitude() && off_line <= tolerance) continue;
+      return std::make_pair(number, edge);
+    }
+  }
+  return std::nullopt;
+}
+
 CapTrial try_caps(const CapFace& bottom, const CapFace& top, const std::vector<CapFace>& planar,
-                  const std::vector<CylinderFace>& cylinders, double volume, double tolerance) {
+                  const std::vector<CylinderFace>& cylinders, const std::vector<TopoDS_Face>& faces, double volume,
+                  double tolerance) {
   CapTrial t;
   t.bottom = &bottom;
   t.top = &top;
@@ -225,6 +259,19 @@ CapTrial try_caps(const CapFace& bottom, const CapFace& top, const std::vector<C
     return t;
   }
   t.stage = 3;
+  // A side face split across the sweep (two faces where one would do, as a fusion of stacked boxes
+  // leaves them): the sweep's layers do not follow the split, and the hexahedra would not meet those
+  // faces' boundaries.
+  if (const auto across = edge_across_sweep(faces, bottom, top, t.sweep, tolerance)) {
+    BRepAdaptor_Curve curve(across->second);
+    t.why = face_name(across->first) + " is split across the sweep from " + face_name(bottom.number) + " to " +
+            face_name(top.number) + " (an edge from " + point_text(curve.Value(curve.FirstParameter()), tolerance) +
+            " to " + point_text(curve.Value(curve.LastParameter()), tolerance) +
+            " between the caps): the hexahedral sweep cannot follow it; merge the split faces first (FreeCAD: "
+            "Part > Create a copy > Refine shape) or mesh the faces one by one";
+    return t;
+  }
+  t.stage = 4;
   return t;
 }
 
@@ -318,8 +365,8 @@ SweptSolid swept_solid_from_shape(const TopoDS_Shape& shape, const std::string& 
     for (size_t i = 0; i < planar.size(); ++i) {
       for (size_t j = i + 1; j < planar.size(); ++j) {
         if (planar[i].normal.Dot(planar[j].normal) > -1.0 + 1e-12) continue;
-        const CapTrial t = try_caps(planar[i], planar[j], planar, cylinders, out.volume, tolerance);
-        if (t.stage == 3) {
+        const CapTrial t = try_caps(planar[i], planar[j], planar, cylinders, out.faces, out.volume, tolerance);
+        if (t.stage == 4) {
           if (!best || key(t) > key(*best)) best = t;
         } else if (!failed || std::make_pair(t.stage, t.bottom->area + t.top->area) >
                                   std::make_pair(failed->stage, failed->bottom->area + failed->top->area)) {

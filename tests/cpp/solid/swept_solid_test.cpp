@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
@@ -193,6 +194,26 @@ TEST_CASE("swept solids: one clear error per class, naming the face", "[solid][e
     part = BRepAlgoAPI_Cut(part, groove({{-0.5, 1.5, -1}, {0.5, 2, -1}, {-0.5, 2.5, -1}}, gp_Vec(0, 0, 6))).Shape();
     check_error(part, "is not parallel to the sweep (");
     check_error(part, "a swept solid's side faces run along the sweep");
+  }
+  SECTION("a side split across the sweep: boxes stacked and side by side, fused unrefined") {
+    // The fusion leaves the sides split where the boxes meet (two faces where one would do): the layers
+    // would not follow the split, and the sweep's check failed with an internal error. Every pair of caps
+    // meets one; the best names it and says how to merge them.
+    const TopoDS_Shape stacked =
+        BRepAlgoAPI_Fuse(BRepPrimAPI_MakeBox(10, 4, 1.3).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 1.3), 10, 4, 1.7).Shape())
+            .Shape();
+    const TopoDS_Shape side_by_side =
+        BRepAlgoAPI_Fuse(BRepPrimAPI_MakeBox(10, 4, 3).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(10, 0, 0), 4, 4, 3).Shape()).Shape();
+    for (const TopoDS_Shape& part : {stacked, side_by_side}) {
+      check_error(part, " is split across the sweep from face ");
+      check_error(part, "between the caps): the hexahedral sweep cannot follow it; merge the split faces first");
+    }
+    // Split along the sweep instead (a side drawn as two collinear lines), it is a sweep.
+    BRepBuilderAPI_MakePolygon split;
+    for (const gp_Pnt& p : {gp_Pnt(0, 0, 0), gp_Pnt(3.37, 0, 0), gp_Pnt(10, 0, 0), gp_Pnt(10, 4, 0), gp_Pnt(0, 4, 0)}) split.Add(p);
+    split.Close();
+    const TopoDS_Shape prism = BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(split.Wire()).Face(), gp_Vec(0, 0, 3)).Shape();
+    CHECK_NOTHROW(swept_solid_from_shape(prism, "split"));
   }
   SECTION("no parallel faces: a tetrahedron") {
     const TopoDS_Shape tetrahedron =
