@@ -1740,6 +1740,19 @@ class TestSolids(unittest.TestCase):
         self.assertTrue(flat.conformal)
         self.assertTrue([p for p in flat.nodes if abs(p.x - 3.37) < 1e-9 and abs(p.y) < 1e-9])
 
+    def test_boxes_fused_without_refining_are_refused_with_the_remedy(self):
+        """Two boxes fused and not refined leave the sides split across the sweep: a ValueError that says so and
+        how to merge them (an internal error before); refined, the same solid meshes."""
+        V = FreeCAD.Vector
+        fused = Part.makeBox(10, 4, 1.3).fuse(Part.makeBox(10, 4, 1.7, V(0, 0, 1.3)))
+        source = support.add_face(self.doc, fused, "Stacked")
+        with self.assertRaisesRegex(ValueError, "is split across the sweep from face .* Refine shape"):
+            AutoBlock.mesh(source, size=1.0)
+        refined = support.add_face(self.doc, fused.removeSplitter(), "Refined")
+        mesh = AutoBlock.mesh(refined, size=1.0)
+        self.assertTrue(mesh.conformal)
+        self.assertAlmostEqual(mesh.volume, 120.0)
+
     def test_a_box_meshes_to_hexahedra(self):
         box = self.doc.addObject("Part::Box", "Box")
         box.Length, box.Width, box.Height = 10, 4, 3
