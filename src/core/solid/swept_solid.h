@@ -50,7 +50,9 @@ struct SweptSolid {
 // shell (a face with a free edge); a solid with more than one shell (a cavity); a curved face other
 // than a cylinder; a cylinder whose axis is not along the sweep; no two
 // parallel opposite faces; caps that are not translated copies of each other; a face not parallel to
-// the sweep; a cap the 2-D pipeline rejects (its message, the cap named).
+// the sweep; a side face split across the sweep (an edge between the caps that is not straight along
+// the sweep: boxes fused without refining; the layers would not follow it); a cap the 2-D pipeline
+// rejects (its message, the cap named).
 SweptSolid swept_solid_from_shape(const TopoDS_Shape& shape, const std::string& source);
 
 // Inputs: shape. Output: true when it should be meshed as a solid rather than as one face: it holds
