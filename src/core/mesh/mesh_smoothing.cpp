@@ -57,14 +57,16 @@ SmoothingReport smooth_quad_mesh(QuadMesh& mesh, int max_sweeps, int worst_round
   };
   // A pinned point's node: at the point, to a hair of the mesh's extent (the block model puts it there).
   double extent = 0.0;
-  for (const Point2& p : mesh.nodes) extent = std::max(extent, std::fabs(p.x) + std::fabs(p.y));
+  if (!pinned.empty()) {
+    for (const Point2& p : mesh.nodes) extent = std::max(extent, std::fabs(p.x) + std::fabs(p.y));
+  }
   auto is_pinned = [&](Point2 p) {
     return std::any_of(pinned.begin(), pinned.end(), [&](Point2 q) { return std::hypot(p.x - q.x, p.y - q.y) <= 1e-12 * extent; });
   };
   for (size_t v = 0; v < n; ++v) {
     const auto [a, b] = along[v];
     if (!fixed[v] || a < 0 || b < 0 || mesh.quad_block.empty()) continue;
-    if (!pinned.empty() && is_pinned(mesh.nodes[v])) continue;
+    if (is_pinned(mesh.nodes[v])) continue;
     bool one_block = true;
     for (const auto& [q, k] : around[v]) {
       one_block = one_block && mesh.quad_block[static_cast<size_t>(q)] == mesh.quad_block[static_cast<size_t>(around[v][0].first)];

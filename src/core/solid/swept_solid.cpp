@@ -27,7 +27,6 @@
 #include <cmath>
 #include <optional>
 #include <tuple>
-#include <utility>
 
 #include "core/common/error.h"
 #include "core/common/format.h"
@@ -161,13 +160,18 @@ struct CapTrial {
   gp_Vec sweep;
 };
 
+// An edge of a side face that runs across the sweep: its face's number and its ends.
+struct EdgeAcross {
+  int face = 0;
+  gp_Pnt from, to;
+};
+
 // Inputs: faces, the solid's (by number - 1); bottom, top, the caps; sweep; tolerance.
 // Output: the first edge of a side face that runs across the sweep between the caps (a side split
-// there: its middle strictly between the caps' planes, and not straight along the sweep), with its
-// face's number; none in a straight sweep, whose side faces are bounded by the caps' edges and lines
-// along the sweep.
-std::optional<std::pair<int, TopoDS_Edge>> edge_across_sweep(const std::vector<TopoDS_Face>& faces, const CapFace& bottom,
-                                                             const CapFace& top, const gp_Vec& sweep, double tolerance) {
+// there: its middle strictly between the caps' planes, and not straight along the sweep); none in a
+// straight sweep, whose side faces are bounded by the caps' edges and lines along the sweep.
+std::optional<EdgeAcross> edge_across_sweep(const std::vector<TopoDS_Face>& faces, const CapFace& bottom,
+                                            const CapFace& top, const gp_Vec& sweep, double tolerance) {
   const gp_Vec normal(bottom.normal);
   const double height = sweep.Dot(normal);
   if (std::fabs(height) <= tolerance) return std::nullopt;
@@ -187,7 +191,7 @@ std::optional<std::pair<int, TopoDS_Edge>> edge_across_sweep(const std::vector<T
       const gp_Vec chord(a, b);
       const double off_line = chord.Magnitude() > tolerance ? gp_Vec(a, middle).Crossed(chord).Magnitude() / chord.Magnitude() : 0.0;
       if (chord.Crossed(sweep).Magnitude() <= tolerance * sweep.Magnitude() && off_line <= tolerance) continue;
-      return std::make_pair(number, edge);
+      return EdgeAcross{number, a, b};
     }
   }
   return std::nullopt;
@@ -263,10 +267,9 @@ CapTrial try_caps(const CapFace& bottom, const CapFace& top, const std::vector<C
   // leaves them): the sweep's layers do not follow the split, and the hexahedra would not meet those
   // faces' boundaries.
   if (const auto across = edge_across_sweep(faces, bottom, top, t.sweep, tolerance)) {
-    BRepAdaptor_Curve curve(across->second);
-    t.why = face_name(across->first) + " is split across the sweep from " + face_name(bottom.number) + " to " +
-            face_name(top.number) + " (an edge from " + point_text(curve.Value(curve.FirstParameter()), tolerance) +
-            " to " + point_text(curve.Value(curve.LastParameter()), tolerance) +
+    t.why = face_name(across->face) + " is split across the sweep from " + face_name(bottom.number) + " to " +
+            face_name(top.number) + " (an edge from " + point_text(across->from, tolerance) + " to " +
+            point_text(across->to, tolerance) +
             " between the caps): the hexahedral sweep cannot follow it; merge the split faces first (FreeCAD: "
             "Part > Create a copy > Refine shape) or mesh the faces one by one";
     return t;
