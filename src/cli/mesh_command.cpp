@@ -181,7 +181,7 @@ void add_mesh_command(CLI::App& app) {
   command->add_option("--picture", args->picture, "write a picture of the blocks and the mesh (.svg or .png)");
   command->add_option("--json", args->json, "write the report as JSON");
   CLI::Option* layers = command->add_option("--layers", args->layers,
-                      "a solid: the number of layers along the sweep (default: the sweep's length over the element size)")
+                      "a solid: the number of layers along the sweep (default: the sweep's length over the element size; at least one between splits of its sides)")
       ->check(CLI::Range(1, 1000000));
   CLI::Option* grading = command->add_option("--grading", args->grading,
                       "a solid: each layer's thickness over the previous one's (default 1: uniform)")

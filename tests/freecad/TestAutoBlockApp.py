@@ -1740,18 +1740,28 @@ class TestSolids(unittest.TestCase):
         self.assertTrue(flat.conformal)
         self.assertTrue([p for p in flat.nodes if abs(p.x - 3.37) < 1e-9 and abs(p.y) < 1e-9])
 
-    def test_boxes_fused_without_refining_are_refused_with_the_remedy(self):
-        """Two boxes fused and not refined leave the sides split across the sweep: a ValueError that says so and
-        how to merge them (an internal error before); refined, the same solid meshes."""
+    def test_boxes_fused_without_refining_mesh_with_layers_at_the_split(self):
+        """Two boxes fused and not refined leave the sides split across the sweep: the layers meet the split
+        (a ValueError before, an internal error before that), every side face gets its quads, and the same
+        solid refined meshes to the same count; a split that slants is a ValueError with the remedy."""
         V = FreeCAD.Vector
         fused = Part.makeBox(10, 4, 1.3).fuse(Part.makeBox(10, 4, 1.7, V(0, 0, 1.3)))
-        source = support.add_face(self.doc, fused, "Stacked")
-        with self.assertRaisesRegex(ValueError, "is split across the sweep from face .* Refine shape"):
-            AutoBlock.mesh(source, size=1.0)
-        refined = support.add_face(self.doc, fused.removeSplitter(), "Refined")
-        mesh = AutoBlock.mesh(refined, size=1.0)
+        self.assertEqual(len(fused.Faces), 10)
+        mesh = AutoBlock.mesh(support.add_face(self.doc, fused, "Stacked"), size=0.5)
+        self.assertIsInstance(mesh, AutoBlock.HexMeshResult)
         self.assertTrue(mesh.conformal)
         self.assertAlmostEqual(mesh.volume, 120.0)
+        heights = sorted({round(p.z, 9) for p in mesh.nodes})
+        self.assertIn(1.3, heights)
+        self.assertEqual(len(heights), mesh.layers + 1)
+        refined = AutoBlock.mesh(support.add_face(self.doc, fused.removeSplitter(), "Refined"), size=0.5)
+        self.assertTrue(refined.conformal)
+        self.assertEqual((len(refined.hexes), refined.layers), (len(mesh.hexes), mesh.layers))
+        lower = Part.Face(Part.makePolygon([V(0, 0, 0), V(10, 0, 0), V(10, 0, 2), V(0, 0, 1), V(0, 0, 0)])).extrude(V(0, 4, 0))
+        upper = Part.Face(Part.makePolygon([V(0, 0, 1), V(10, 0, 2), V(10, 0, 3), V(0, 0, 3), V(0, 0, 1)])).extrude(V(0, 4, 0))
+        slanted = support.add_face(self.doc, lower.fuse(upper), "Slanted")
+        with self.assertRaisesRegex(ValueError, "is split across the sweep from face .* slants .* Refine shape"):
+            AutoBlock.mesh(slanted, size=1.0)
 
     def test_a_box_meshes_to_hexahedra(self):
         box = self.doc.addObject("Part::Box", "Box")

@@ -1,6 +1,7 @@
 #include "core/api/solid_meshing.h"
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepAlgoAPI_Section.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepGProp.hxx>
 #include <BRep_Builder.hxx>
@@ -13,6 +14,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Vertex.hxx>
+#include <gp_Pln.hxx>
 
 #include <algorithm>
 #include <chrono>
@@ -77,6 +79,41 @@ std::vector<CapEdge> cap_edges(const SweptSolid& s) {
       for (size_t k = 0; k < s.faces.size(); ++k) {
         if (!s.faces[k].IsNull() && s.faces[k].IsSame(f)) e.face = static_cast<int>(k) + 1;
       }
+    }
+    out.push_back(e);
+  }
+  return out;
+}
+
+// Inputs: s, a swept solid with splits; at, a fraction of the sweep strictly between the caps and no
+// split. Output: the side faces' edges at that height (the solid cut by the cap's plane moved there,
+// OpenCASCADE's section), moved back to the bottom cap's plane, with their faces.
+std::vector<CapEdge> side_edges_at(const SweptSolid& s, double at) {
+  gp_Dir normal;
+  if (!planar_face_normal(s.faces[static_cast<size_t>(s.bottom - 1)], &normal)) {
+    throw std::logic_error("swept solid: the bottom cap is not planar");
+  }
+  TopoDS_Vertex corner;
+  for (TopExp_Explorer it(s.faces[static_cast<size_t>(s.bottom - 1)], TopAbs_VERTEX); it.More() && corner.IsNull(); it.Next()) {
+    corner = TopoDS::Vertex(it.Current());
+  }
+  const gp_Pln plane(BRep_Tool::Pnt(corner).Translated(s.sweep * at), normal);
+  BRepAlgoAPI_Section section(s.solid, plane, false);
+  section.ComputePCurveOn1(false);
+  section.Approximation(false);
+  section.Build();
+  if (!section.IsDone()) throw std::runtime_error("OpenCASCADE cannot cut the solid across its sweep between its splits");
+  std::vector<CapEdge> out;
+  for (TopExp_Explorer it(section.Shape(), TopAbs_EDGE); it.More(); it.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+    TopoDS_Shape face;
+    if (!section.HasAncestorFaceOn1(edge, face)) continue;
+    CapEdge e{edge_points(edge), 0};
+    for (size_t k = 0; k < s.faces.size() && e.face == 0; ++k) {
+      if (!s.faces[k].IsNull() && s.faces[k].IsSame(face)) e.face = static_cast<int>(k) + 1;
+    }
+    for (Point3& p : e.points) {
+      for (size_t k = 0; k < 3; ++k) p[k] -= at * s.sweep.Coord(static_cast<int>(k) + 1);
     }
     out.push_back(e);
   }
@@ -202,7 +239,8 @@ SolidMeshing mesh_swept_solid(const SweptSolid& solid, const DecomposeSettings& 
   out.grading = options.grading;
   const double length = solid.sweep.Magnitude();
   const double wanted = options.layers > 0 ? options.layers : std::max(1.0, std::round(length / out.target_size));
-  const std::vector<double> stations = layer_stations(wanted > 1e6 ? 1000001 : static_cast<int>(wanted), options.grading);
+  const std::vector<double> stations =
+      layer_stations(wanted > 1e6 ? 1000001 : static_cast<int>(wanted), options.grading, solid.splits);
   const long layers = static_cast<long>(stations.size()) - 1;
   // The cap's quads are about its area over h^2 (as the 2-D pipeline estimates them).
   GProp_GProps cap_area;
@@ -229,12 +267,23 @@ SolidMeshing mesh_swept_solid(const SweptSolid& solid, const DecomposeSettings& 
   where.sweep = {solid.sweep.X(), solid.sweep.Y(), solid.sweep.Z()};
   where.bottom_face = solid.bottom;
   where.top_face = solid.top;
-  const std::vector<CapEdge> edges = cap_edges(solid);
-  where.side_face = [&edges](const Point3& a, const Point3& b) {
+  where.splits = solid.splits;
+  // The side faces' edges per stretch between splits: the bottom cap's, or the solid's section in
+  // the stretch's middle.
+  std::vector<std::vector<CapEdge>> stretch_edges;
+  if (solid.splits.empty()) {
+    stretch_edges.push_back(cap_edges(solid));
+  } else {
+    std::vector<double> ends{0.0};
+    ends.insert(ends.end(), solid.splits.begin(), solid.splits.end());
+    ends.push_back(1.0);
+    for (size_t k = 0; k + 1 < ends.size(); ++k) stretch_edges.push_back(side_edges_at(solid, 0.5 * (ends[k] + ends[k + 1])));
+  }
+  where.side_face = [&stretch_edges](const Point3& a, const Point3& b, int stretch) {
     const Point3 m{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
     int best = 0;
     double nearest = std::numeric_limits<double>::infinity();
-    for (const CapEdge& e : edges) {
+    for (const CapEdge& e : stretch_edges[static_cast<size_t>(stretch)]) {
       for (size_t i = 0; i + 1 < e.points.size(); ++i) {
         const double d = distance_to_segment(m, e.points[i], e.points[i + 1]);
         if (d < nearest) {

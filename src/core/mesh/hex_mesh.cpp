@@ -41,6 +41,34 @@ std::vector<double> layer_stations(int layers, double grading) {
   return s;
 }
 
+std::vector<double> layer_stations(int layers, double grading, const std::vector<double>& splits) {
+  if (splits.empty()) return layer_stations(layers, grading);
+  if (layers < 1) throw InputError("the number of layers must be at least 1");
+  std::vector<double> ends{0.0};
+  ends.insert(ends.end(), splits.begin(), splits.end());
+  ends.push_back(1.0);
+  const size_t stretches = ends.size() - 1;
+  // Each stretch its share of the layers, at least one; the rest by the largest remainders.
+  std::vector<int> count(stretches, 1);
+  std::vector<std::pair<double, size_t>> remainders;
+  int given = static_cast<int>(stretches);
+  for (size_t k = 0; k < stretches; ++k) {
+    const double share = layers * (ends[k + 1] - ends[k]);
+    const int whole = std::max(1, static_cast<int>(std::floor(share)));
+    count[k] = whole;
+    given += whole - 1;
+    remainders.push_back({share - whole, k});  // below 0 when raised to one
+  }
+  std::stable_sort(remainders.begin(), remainders.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (size_t i = 0; given < layers && i < remainders.size(); ++i, ++given) ++count[remainders[i].second];
+  std::vector<double> s{0.0};
+  for (size_t k = 0; k < stretches; ++k) {
+    const std::vector<double> within = layer_stations(count[k], grading);
+    for (size_t i = 1; i < within.size(); ++i) s.push_back(i + 1 == within.size() ? ends[k + 1] : ends[k] + within[i] * (ends[k + 1] - ends[k]));
+  }
+  return s;
+}
+
 HexMesh sweep_quad_mesh(const QuadMesh& cap, const SweepFrame& where, const std::vector<double>& stations) {
   if (stations.size() < 2) throw std::logic_error("sweep_quad_mesh: fewer than two stations");
   HexMesh out;
@@ -63,8 +91,10 @@ HexMesh sweep_quad_mesh(const QuadMesh& cap, const SweepFrame& where, const std:
   bottoms.reserve(cap.quads.size());
   for (const auto& q : cap.quads) bottoms.push_back(reverse ? std::array<int, 4>{q[0], q[3], q[2], q[1]} : q);
 
-  // The boundary edges of the quad mesh (used by one quad), as (quad, its local edge) -> side face.
-  std::vector<std::array<int, 4>> edge_face(cap.quads.size(), {0, 0, 0, 0});
+  // The boundary edges of the quad mesh (used by one quad), as (quad, its local edge) -> side face,
+  // per stretch between splits.
+  const size_t stretches = where.splits.size() + 1;
+  std::vector<std::vector<std::array<int, 4>>> edge_face(stretches, std::vector<std::array<int, 4>>(cap.quads.size(), {0, 0, 0, 0}));
   {
     std::vector<MeshEdge> edges = mesh_edges(cap);
     auto boundary = [&](int a, int b) {
@@ -76,12 +106,18 @@ HexMesh sweep_quad_mesh(const QuadMesh& cap, const SweepFrame& where, const std:
     for (size_t q = 0; q < bottoms.size(); ++q) {
       for (size_t k = 0; k < 4; ++k) {
         const int a = bottoms[q][k], b = bottoms[q][(k + 1) % 4];
-        if (boundary(a, b)) edge_face[q][k] = where.side_face(out.nodes[static_cast<size_t>(a)], out.nodes[static_cast<size_t>(b)]);
+        if (!boundary(a, b)) continue;
+        for (size_t j = 0; j < stretches; ++j) {
+          edge_face[j][q][k] = where.side_face(out.nodes[static_cast<size_t>(a)], out.nodes[static_cast<size_t>(b)], static_cast<int>(j));
+        }
       }
     }
   }
   const int nn = static_cast<int>(n);
   for (int layer = 0; layer < out.layers; ++layer) {
+    // The stretch the layer lies in: the splits below its middle.
+    const double middle = 0.5 * (stations[static_cast<size_t>(layer)] + stations[static_cast<size_t>(layer) + 1]);
+    const auto& faces = edge_face[static_cast<size_t>(std::upper_bound(where.splits.begin(), where.splits.end(), middle) - where.splits.begin())];
     for (size_t q = 0; q < bottoms.size(); ++q) {
       const auto& b = bottoms[q];
       const int lo = layer * nn, hi = (layer + 1) * nn;
@@ -91,7 +127,7 @@ HexMesh sweep_quad_mesh(const QuadMesh& cap, const SweepFrame& where, const std:
       if (layer == 0) out.boundary.push_back({hex, 0, where.bottom_face});
       if (layer + 1 == out.layers) out.boundary.push_back({hex, 1, where.top_face});
       for (int k = 0; k < 4; ++k) {
-        if (edge_face[q][static_cast<size_t>(k)] != 0) out.boundary.push_back({hex, 2 + k, edge_face[q][static_cast<size_t>(k)]});
+        if (faces[q][static_cast<size_t>(k)] != 0) out.boundary.push_back({hex, 2 + k, faces[q][static_cast<size_t>(k)]});
       }
     }
   }

@@ -44,21 +44,33 @@ std::array<int, 4> hex_face_nodes(const std::array<int, 8>& hex, int side);
 // Throws InputError for layers < 1 or a grading that is not a positive finite number.
 std::vector<double> layer_stations(int layers, double grading);
 
+// Inputs:  layers >= 1, the layers wanted in all; grading, as above, within each stretch; splits,
+//          fractions of the sweep in (0, 1), increasing (SweptSolid::splits), where stations must be.
+// Outputs: stations from 0 to 1 with one at every split: each stretch between splits (or an end) gets
+//          its share of the layers by its length (largest remainders), at least one, so that there
+//          are max(layers, splits + 1) layers; graded within each stretch. No splits: as above.
+// Throws InputError as above.
+std::vector<double> layer_stations(int layers, double grading, const std::vector<double>& splits);
+
 // Where a swept quad mesh lies and what its boundary is.
 struct SweepFrame {
   Placement frame;               // the quad mesh's plane in the model (mesh_export.h's placement)
   Point3 sweep{0, 0, 1};         // model coordinates: the last station's nodes are the first's moved by it
   int bottom_face = 0, top_face = 0;  // the solid's faces at the first and the last station
-  // Inputs: the ends of a boundary edge of the quad mesh at the first station (model coordinates).
-  // Output: the solid's face that the edge swept lies on.
-  std::function<int(const Point3&, const Point3&)> side_face;
+  std::vector<double> splits;    // fractions of the sweep where the side faces change (SweptSolid::splits)
+  // Inputs: the ends of a boundary edge of the quad mesh at the first station (model coordinates);
+  //         stretch, which stretch of the sweep between splits (0: from the first station to the first
+  //         split, or to the last station when there is none).
+  // Output: the solid's face that the edge swept through that stretch lies on.
+  std::function<int(const Point3&, const Point3&, int stretch)> side_face;
 };
 
 // Inputs:  cap, a quad mesh (counter-clockwise seen from +Z of its plane); where, as above; stations
 //          (layer_stations).
 // Outputs: the hexahedral mesh: nodes of station k are cap's nodes (through where.frame) plus
 //          stations[k] * sweep; one hexahedron per quad and layer, in the quad's block; boundary
-//          quads on the caps and on the sides (side_face).
+//          quads on the caps and on the sides (side_face, by the stretch the layer lies in: stations
+//          hold every split, layer_stations).
 HexMesh sweep_quad_mesh(const QuadMesh& cap, const SweepFrame& where, const std::vector<double>& stations);
 
 }  // namespace autoblock

@@ -151,13 +151,14 @@ struct CylinderFace {
 };
 
 // A pair of opposite faces tried as caps: how far it got (0 caps differ, 1 a side is not parallel,
-// 2 volume differs, 3 a side face is split across the sweep, 4 good) and why it stopped.
+// 2 volume differs, 3 a side face is split across the sweep where the layers cannot follow, 4 good) and why it stopped.
 struct CapTrial {
   int stage = 0;
   std::string why;
   const CapFace* bottom = nullptr;
   const CapFace* top = nullptr;
   gp_Vec sweep;
+  std::vector<double> splits;  // SweptSolid::splits
 };
 
 // An edge of a side face that runs across the sweep: its face's number and its ends.
@@ -166,35 +167,76 @@ struct EdgeAcross {
   gp_Pnt from, to;
 };
 
+// Where the side faces are split across the sweep: the heights of the splits, or why the layers
+// cannot follow them.
+struct SideSplits {
+  std::vector<double> heights;          // fractions of the sweep in (0, 1), increasing
+  std::optional<EdgeAcross> slanting;   // an edge across the sweep not at one height
+  std::optional<EdgeAcross> off_column; // a vertex between the caps over no vertex of the bottom cap
+                                        // (from: the vertex, to: the point below it)
+};
+
 // Inputs: faces, the solid's (by number - 1); bottom, top, the caps; sweep; tolerance.
-// Output: the first edge of a side face that runs across the sweep between the caps (a side split
-// there: its middle strictly between the caps' planes, and not straight along the sweep); none in a
-// straight sweep, whose side faces are bounded by the caps' edges and lines along the sweep.
-std::optional<EdgeAcross> edge_across_sweep(const std::vector<TopoDS_Face>& faces, const CapFace& bottom,
-                                            const CapFace& top, const gp_Vec& sweep, double tolerance) {
+// Output: where the side faces are split across the sweep (two faces where one would do, as a fusion
+// of stacked boxes leaves them): the heights of their vertices strictly between the caps' planes. A
+// straight sweep has none: its side faces are bounded by the caps' edges and lines along the sweep.
+// The layers can follow a split whose edges across the sweep (not straight along it) lie at one
+// height (every point, sampled) and whose vertices lie over the bottom cap's vertices (where the
+// cap's mesh has nodes; a full circle's seam vertex excepted, as the cap's own); the first edge or
+// vertex that does not is returned instead.
+SideSplits side_splits(const std::vector<TopoDS_Face>& faces, const CapFace& bottom, const CapFace& top,
+                       const gp_Vec& sweep, double tolerance) {
+  SideSplits out;
   const gp_Vec normal(bottom.normal);
   const double height = sweep.Dot(normal);
-  if (std::fabs(height) <= tolerance) return std::nullopt;
+  if (std::fabs(height) <= tolerance) return out;
+  auto level = [&](const gp_Pnt& p) { return gp_Vec(bottom.centroid, p).Dot(normal); };
+  auto between = [&](double along) { return std::fabs(along) > tolerance && std::fabs(along - height) > tolerance; };
   for (size_t k = 0; k < faces.size(); ++k) {
     const int number = static_cast<int>(k) + 1;
     if (number == bottom.number || number == top.number || faces[k].IsNull()) continue;
+    TopTools_IndexedMapOfShape seams;  // the vertices of closed edges (full circles)
     for (TopExp_Explorer it(faces[k], TopAbs_EDGE); it.More(); it.Next()) {
       const TopoDS_Edge edge = TopoDS::Edge(it.Current());
       if (BRep_Tool::Degenerated(edge)) continue;
       BRepAdaptor_Curve curve(edge);
       const gp_Pnt middle = curve.Value(0.5 * (curve.FirstParameter() + curve.LastParameter()));
-      const double along = gp_Vec(bottom.centroid, middle).Dot(normal);
-      if (std::fabs(along) <= tolerance || std::fabs(along - height) <= tolerance) continue;  // in a cap's plane
+      const double along = level(middle);
+      if (!between(along)) continue;  // in a cap's plane
       // Along the sweep: straight from end to end (a line, or a translator's B-spline that is one) in
       // the sweep's direction.
       const gp_Pnt a = curve.Value(curve.FirstParameter()), b = curve.Value(curve.LastParameter());
       const gp_Vec chord(a, b);
       const double off_line = chord.Magnitude() > tolerance ? gp_Vec(a, middle).Crossed(chord).Magnitude() / chord.Magnitude() : 0.0;
       if (chord.Crossed(sweep).Magnitude() <= tolerance * sweep.Magnitude() && off_line <= tolerance) continue;
-      return EdgeAcross{number, a, b};
+      if (a.Distance(b) <= tolerance) TopExp::MapShapes(edge, TopAbs_VERTEX, seams);
+      constexpr int kSamples = 16;
+      bool level_edge = true;
+      for (int i = 0; i <= kSamples && level_edge; ++i) {
+        const double u = curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / kSamples;
+        level_edge = std::fabs(level(curve.Value(u)) - along) <= tolerance;
+      }
+      if (!level_edge && !out.slanting) out.slanting = EdgeAcross{number, a, b};
+    }
+    TopTools_IndexedMapOfShape vertices;
+    TopExp::MapShapes(faces[k], TopAbs_VERTEX, vertices);
+    for (int v = 1; v <= vertices.Extent(); ++v) {
+      const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(vertices(v)));
+      const double along = level(p);
+      if (!between(along)) continue;
+      const double at = along / height;
+      const bool known = std::any_of(out.heights.begin(), out.heights.end(),
+                                     [&](double h) { return std::fabs(h - at) * std::fabs(height) <= tolerance; });
+      if (!known) out.heights.push_back(at);
+      if (seams.Contains(vertices(v)) || out.off_column) continue;
+      const gp_Pnt below = p.Translated(-sweep * at);
+      const bool over_vertex = std::any_of(bottom.vertices.begin(), bottom.vertices.end(),
+                                           [&](const gp_Pnt& q) { return q.Distance(below) <= tolerance; });
+      if (!over_vertex) out.off_column = EdgeAcross{number, p, below};
     }
   }
-  return std::nullopt;
+  std::sort(out.heights.begin(), out.heights.end());
+  return out;
 }
 
 CapTrial try_caps(const CapFace& bottom, const CapFace& top, const std::vector<CapFace>& planar,
@@ -264,16 +306,23 @@ CapTrial try_caps(const CapFace& bottom, const CapFace& top, const std::vector<C
   }
   t.stage = 3;
   // A side face split across the sweep (two faces where one would do, as a fusion of stacked boxes
-  // leaves them): the sweep's layers do not follow the split, and the hexahedra would not meet those
-  // faces' boundaries.
-  if (const auto across = edge_across_sweep(faces, bottom, top, t.sweep, tolerance)) {
-    t.why = face_name(across->face) + " is split across the sweep from " + face_name(bottom.number) + " to " +
-            face_name(top.number) + " (an edge from " + point_text(across->from, tolerance) + " to " +
-            point_text(across->to, tolerance) +
-            " between the caps): the hexahedral sweep cannot follow it; merge the split faces first (FreeCAD: "
-            "Part > Create a copy > Refine shape) or mesh the faces one by one";
+  // leaves them): the layers follow a split at one height over the cap's vertices, and nothing else.
+  const SideSplits splits = side_splits(faces, bottom, top, t.sweep, tolerance);
+  const std::string remedy = "; merge the split faces first (FreeCAD: Part > Create a copy > Refine shape) or mesh the faces one by one";
+  if (const auto& e = splits.slanting) {
+    t.why = face_name(e->face) + " is split across the sweep from " + face_name(bottom.number) + " to " +
+            face_name(top.number) + " by an edge that slants (from " + point_text(e->from, tolerance) + " to " +
+            point_text(e->to, tolerance) + "): the sweep's layers cannot follow it" + remedy;
     return t;
   }
+  if (const auto& e = splits.off_column) {
+    t.why = face_name(e->face) + " is split across the sweep from " + face_name(bottom.number) + " to " +
+            face_name(top.number) + " at a vertex " + point_text(e->from, tolerance) + " over no vertex of " +
+            face_name(bottom.number) + " (it lies over " + point_text(e->to, tolerance) +
+            "): the sweep's columns of nodes cannot meet it" + remedy;
+    return t;
+  }
+  t.splits = splits.heights;
   t.stage = 4;
   return t;
 }
@@ -384,6 +433,7 @@ SweptSolid swept_solid_from_shape(const TopoDS_Shape& shape, const std::string& 
     out.bottom = best->bottom->number;
     out.top = best->top->number;
     out.sweep = best->sweep;
+    out.splits = best->splits;
   } catch (const InputError& e) {
     throw InputError(source + ": " + e.what());
   } catch (const Standard_Failure& e) {

@@ -37,6 +37,9 @@ struct SweptSolid {
   std::vector<TopoDS_Face> faces;  // faces[k - 1] is face k (FreeCAD's numbering of the shape read)
   int bottom = 0, top = 0;         // the caps' face numbers: the sweep runs from bottom to top
   gp_Vec sweep;                    // top = bottom translated by sweep (model coordinates)
+  // The heights, as fractions of the sweep in (0, 1), increasing, where side faces are split across
+  // the sweep (boxes stacked and fused without refining): the layers meet there. Empty in a plain sweep.
+  std::vector<double> splits;
   double volume = 0.0, area = 0.0; // the solid's volume and surface area (OpenCASCADE's GProp)
   bool splines = false;            // a surface or curve of it is a B-spline or Bezier one
   InputFace cap;                   // the bottom cap, checked as the 2-D pipeline checks a face
@@ -50,9 +53,10 @@ struct SweptSolid {
 // shell (a face with a free edge); a solid with more than one shell (a cavity); a curved face other
 // than a cylinder; a cylinder whose axis is not along the sweep; no two
 // parallel opposite faces; caps that are not translated copies of each other; a face not parallel to
-// the sweep; a side face split across the sweep (an edge between the caps that is not straight along
-// the sweep: boxes fused without refining; the layers would not follow it); a cap the 2-D pipeline
-// rejects (its message, the cap named).
+// the sweep; a side face split across the sweep where the layers cannot follow it (an edge between the
+// caps, not straight along the sweep, that slants, or with a vertex over no vertex of the bottom cap;
+// a split at one height over the cap's vertices, as boxes fused without refining leave, is in splits);
+// a cap the 2-D pipeline rejects (its message, the cap named).
 SweptSolid swept_solid_from_shape(const TopoDS_Shape& shape, const std::string& source);
 
 // Inputs: shape. Output: true when it should be meshed as a solid rather than as one face: it holds

@@ -3,12 +3,14 @@
 // every mesh conformal by the independent check, volumes exact, the prism blocks conformal.
 #include "support/catch_torch.h"
 
+#include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <GProp_GProps.hxx>
 #include <TopExp.hxx>
@@ -17,9 +19,11 @@
 #include <gp_Ax1.hxx>
 #include <gp_Trsf.hxx>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -184,6 +188,83 @@ TEST_CASE("swept solids whose cap has a vertex between two edges in line: a colu
     CHECK(m.conformity.conformal);
     CHECK(m.conformity.hex_volume == Approx(e.volume).epsilon(1e-6));
   }
+}
+
+TEST_CASE("swept solids split across the sweep (fused without refining): the layers meet the splits, quads tagged by face",
+          "[solid][hex][api]") {
+  // Boxes stacked and side by side, three slabs, an L stacked and drilled plates stacked: every side
+  // face split where the parts meet. The sweep failed its conformity check on these (a column of side
+  // quads tagged with the face at the bottom cap): now every split is a station, and the side quads
+  // of each stretch are tagged with the face there, which the independent check adds up per face.
+  struct Case {
+    std::string name;
+    TopoDS_Shape shape;
+    std::vector<double> heights;  // the splits' coordinate along the sweep's axis (z, or x for the row)
+    int axis;                     // 2: z, 0: x
+  };
+  const TopoDS_Face l = occt_face_from_polygon(test::polygon_of({{0, 0}, {8, 0}, {8, 3}, {3, 3}, {3, 7}, {0, 7}}), 0, true);
+  const TopoDS_Face plate = plate_with_holes(20, 10, {{7, 5, 2}});
+  auto fuse = [](const std::vector<TopoDS_Shape>& parts) {
+    TopoDS_Shape out = parts[0];
+    for (size_t k = 1; k < parts.size(); ++k) out = BRepAlgoAPI_Fuse(out, parts[k]).Shape();
+    return out;
+  };
+  auto up = [](const TopoDS_Shape& s, double z) {
+    gp_Trsf t;
+    t.SetTranslation(gp_Vec(0, 0, z));
+    return BRepBuilderAPI_Transform(s, t, true).Shape();
+  };
+  const std::vector<Case> cases{
+      {"stacked", fuse({BRepPrimAPI_MakeBox(10, 4, 1.3).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 1.3), 10, 4, 1.7).Shape()}), {1.3}, 2},
+      {"side by side", fuse({BRepPrimAPI_MakeBox(10, 4, 3).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(10, 0, 0), 4, 4, 3).Shape()}), {10}, 0},
+      {"three slabs",
+       fuse({BRepPrimAPI_MakeBox(10, 4, 1).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 1), 10, 4, 1).Shape(),
+             BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 2), 10, 4, 1).Shape()}),
+       {1, 2},
+       2},
+      {"L stacked", fuse({BRepPrimAPI_MakePrism(l, gp_Vec(0, 0, 2)).Shape(), up(BRepPrimAPI_MakePrism(l, gp_Vec(0, 0, 1)).Shape(), 2)}), {2}, 2},
+      {"drilled plates stacked",
+       fuse({BRepPrimAPI_MakePrism(plate, gp_Vec(0, 0, 2)).Shape(), up(BRepPrimAPI_MakePrism(plate, gp_Vec(0, 0, 3)).Shape(), 2)}),
+       {2},
+       2},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.name);
+    GProp_GProps volume;
+    BRepGProp::VolumeProperties(c.shape, volume);
+    const SweptSolid solid = swept_solid_from_shape(c.shape, c.name);
+    REQUIRE(solid.splits.size() == c.heights.size());
+    SolidMeshOptions o;
+    o.cap.size = 0.5;
+    const SolidMeshing m = mesh_swept_solid(solid, DecomposeSettings{}, o);
+    INFO(m.conformity.problem);
+    CHECK(m.conformity.conformal);
+    CHECK(m.conformity.hex_volume == Approx(volume.Mass()).epsilon(1e-6));
+    // A layer of nodes at every split.
+    for (double h : c.heights) {
+      const auto at = std::count_if(m.mesh.nodes.begin(), m.mesh.nodes.end(),
+                                    [&](const Point3& p) { return std::fabs(p[static_cast<size_t>(c.axis)] - h) < 1e-9; });
+      CHECK(static_cast<size_t>(at) == m.cap.result.mesh.nodes.size());
+    }
+    // Every face of the solid has quads, as many as its area holds (the check adds up their areas).
+    std::vector<int> quads(solid.faces.size(), 0);
+    for (const BoundaryQuad& b : m.mesh.boundary) ++quads[static_cast<size_t>(b.face - 1)];
+    CHECK(std::count(quads.begin(), quads.end(), 0) == 0);
+    check_blocks(m, 1e-6);
+  }
+  // The requested layers are shared by the stretches' lengths, at least one each.
+  SolidMeshOptions o;
+  o.cap.size = 1.0;
+  o.layers = 1;
+  const SweptSolid stacked = swept_solid_from_shape(cases[0].shape, "stacked");
+  SolidMeshing m = mesh_swept_solid(stacked, greedy(), o);
+  CHECK(m.mesh.layers == 2);
+  CHECK(m.conformity.conformal);
+  o.layers = 10;
+  o.grading = 1.5;
+  m = mesh_swept_solid(stacked, greedy(), o);
+  CHECK(m.mesh.layers == 10);
+  CHECK(m.conformity.conformal);
 }
 
 TEST_CASE("swept solids with cylinder sides (drilled holes, rounded edges): conformal, nodes on the cylinders",

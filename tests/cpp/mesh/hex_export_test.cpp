@@ -39,7 +39,7 @@ HexMesh sample() {
   w.sweep = {0.5, 0.25, 2};
   w.bottom_face = 1;
   w.top_face = 2;
-  w.side_face = [](const Point3& a, const Point3& b) {
+  w.side_face = [](const Point3& a, const Point3& b, int) {
     const double x = (a[0] + b[0]) / 2, y = (a[1] + b[1]) / 2;
     return y == 0 ? 3 : x == 3 ? 4 : y == 2 ? 5 : 6;
   };

@@ -2,7 +2,9 @@
 // conformity check, on hand-made meshes whose answers are known.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "core/common/error.h"
 #include "core/mesh/hex_conformity.h"
@@ -36,7 +38,7 @@ SweepFrame grid_frame(int nx, int ny, Point3 sweep) {
   w.sweep = sweep;
   w.bottom_face = 1;
   w.top_face = 2;
-  w.side_face = [nx, ny](const Point3& a, const Point3& b) {
+  w.side_face = [nx, ny](const Point3& a, const Point3& b, int) {
     const double x = (a[0] + b[0]) / 2, y = (a[1] + b[1]) / 2;
     if (y == 0) return 3;
     if (x == nx) return 4;
@@ -76,6 +78,62 @@ TEST_CASE("layer stations: uniform and geometric", "[mesh][hex]") {
   CHECK_THROWS_AS(layer_stations(0, 1.0), InputError);
   CHECK_THROWS_AS(layer_stations(2, -1.0), InputError);
   CHECK_THROWS_AS(layer_stations(2, std::nan("")), InputError);
+}
+
+TEST_CASE("layer stations with splits: a station at every split, the layers shared by length, one at least", "[mesh][hex]") {
+  CHECK(layer_stations(4, 1.0, {}) == layer_stations(4, 1.0));
+  // Stretches 0.4 and 0.6 of 5 layers: 2 and 3.
+  std::vector<double> s = layer_stations(5, 1.0, {0.4});
+  REQUIRE(s.size() == 6);
+  CHECK(s[1] == Approx(0.2));
+  CHECK(s[2] == 0.4);
+  CHECK(s[3] == Approx(0.6));
+  CHECK(s[5] == 1.0);
+  // One layer wanted over two stretches: each gets one.
+  CHECK(layer_stations(1, 1.0, {0.65}) == std::vector<double>{0, 0.65, 1});
+  // 6 layers over 0.1, 0.45, 0.45: shares 0.6, 2.7, 2.7 -> 1 (raised), then 2 + 2 and one more to the
+  // first of the equal remainders: 1, 3, 2.
+  s = layer_stations(6, 1.0, {0.1, 0.55});
+  REQUIRE(s.size() == 7);
+  CHECK(s[1] == 0.1);
+  CHECK(s[2] == Approx(0.25));
+  CHECK(s[4] == 0.55);
+  CHECK(s[5] == Approx(0.775));
+  // Graded within each stretch: thicknesses 1 and 2 of 3 in each half.
+  s = layer_stations(4, 2.0, {0.5});
+  REQUIRE(s.size() == 5);
+  CHECK(s[1] == Approx(1.0 / 6));
+  CHECK(s[2] == 0.5);
+  CHECK(s[3] == Approx(0.5 + 1.0 / 6));
+  CHECK(std::is_sorted(s.begin(), s.end()));
+  CHECK_THROWS_AS(layer_stations(0, 1.0, {0.5}), InputError);
+  CHECK_THROWS_AS(layer_stations(2, 0.0, {0.5}), InputError);
+}
+
+TEST_CASE("a swept grid split across the sweep: side quads tagged by the stretch they lie in", "[mesh][hex]") {
+  // The grid's box with its side y = 0 split at a third of the height: face 3 below, face 7 above.
+  const QuadMesh cap = grid_mesh(2, 1, 2);
+  SweepFrame w = grid_frame(2, 1, {0, 0, 3});
+  w.splits = {1.0 / 3};
+  const auto side = w.side_face;
+  w.side_face = [side](const Point3& a, const Point3& b, int stretch) {
+    const int face = side(a, b, stretch);
+    return face == 3 && stretch == 1 ? 7 : face;
+  };
+  const HexMesh m = sweep_quad_mesh(cap, w, layer_stations(3, 1.0, w.splits));
+  REQUIRE(m.layers == 3);
+  std::map<int, int> quads;
+  for (const BoundaryQuad& b : m.boundary) ++quads[b.face];
+  CHECK(quads[3] == 2);  // the bottom layer's two quads on y = 0
+  CHECK(quads[7] == 4);
+  CHECK(quads[4] == 3);
+  std::vector<double> areas = grid_face_areas(2, 1, {0, 0, 3});
+  areas[2] = 2;
+  areas.push_back(4);
+  CHECK(check_hex_conformity(m, figures(6, 22, areas)).conformal);
+  // Tagged as if the side were one face (the stretches ignored), the split solid's faces do not add up.
+  CHECK_FALSE(check_hex_conformity(sweep_quad_mesh(cap, grid_frame(2, 1, {0, 0, 3}), layer_stations(3, 1.0)),
+                                   figures(6, 22, areas)).conformal);
 }
 
 TEST_CASE("a swept grid: nodes, hexahedra, blocks, boundary, quality 1 and no irregular edge", "[mesh][hex]") {

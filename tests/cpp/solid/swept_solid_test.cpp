@@ -195,19 +195,55 @@ TEST_CASE("swept solids: one clear error per class, naming the face", "[solid][e
     check_error(part, "is not parallel to the sweep (");
     check_error(part, "a swept solid's side faces run along the sweep");
   }
-  SECTION("a side split across the sweep: boxes stacked and side by side, fused unrefined") {
-    // The fusion leaves the sides split where the boxes meet (two faces where one would do): the layers
-    // would not follow the split, and the sweep's check failed with an internal error. Every pair of caps
-    // meets one; the best names it and says how to merge them.
+  SECTION("a side split across the sweep: followed at one height over the cap's vertices, refused otherwise") {
+    // Boxes fused without refining leave the sides split where the boxes meet (two faces where one
+    // would do): the sweep's layers meet there (splits). Stacked, the caps are the ends of the stack.
     const TopoDS_Shape stacked =
         BRepAlgoAPI_Fuse(BRepPrimAPI_MakeBox(10, 4, 1.3).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 1.3), 10, 4, 1.7).Shape())
             .Shape();
+    SweptSolid s = swept_solid_from_shape(stacked, "stacked");
+    CHECK(std::fabs(s.sweep.Z()) == Approx(3.0));
+    REQUIRE(s.splits.size() == 1);
+    CHECK(s.splits[0] == Approx(s.sweep.Z() > 0 ? 1.3 / 3 : 1.7 / 3));
+    // Side by side (equal heights), the caps are the ends of the row, x = 0 and x = 14.
     const TopoDS_Shape side_by_side =
         BRepAlgoAPI_Fuse(BRepPrimAPI_MakeBox(10, 4, 3).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(10, 0, 0), 4, 4, 3).Shape()).Shape();
-    for (const TopoDS_Shape& part : {stacked, side_by_side}) {
-      check_error(part, " is split across the sweep from face ");
-      check_error(part, "between the caps): the hexahedral sweep cannot follow it; merge the split faces first");
-    }
+    s = swept_solid_from_shape(side_by_side, "side by side");
+    CHECK(std::fabs(s.sweep.X()) == Approx(14.0));
+    REQUIRE(s.splits.size() == 1);
+    CHECK(s.splits[0] == Approx(s.sweep.X() > 0 ? 10.0 / 14 : 4.0 / 14));
+    // A plain box has none.
+    CHECK(swept_solid_from_shape(BRepPrimAPI_MakeBox(10, 4, 3).Shape(), "box").splits.empty());
+    // Two prisms along y whose shared face slants: the front and back are split by slanting edges.
+    auto y_prism = [](const std::vector<gp_Pnt>& xz) {
+      BRepBuilderAPI_MakePolygon polygon;
+      for (const gp_Pnt& p : xz) polygon.Add(p);
+      polygon.Close();
+      return BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(polygon.Wire()).Face(), gp_Vec(0, 4, 0)).Shape();
+    };
+    const TopoDS_Shape slanted =
+        BRepAlgoAPI_Fuse(y_prism({{0, 0, 0}, {10, 0, 0}, {10, 0, 2}, {0, 0, 1}}), y_prism({{0, 0, 1}, {10, 0, 2}, {10, 0, 3}, {0, 0, 3}}))
+            .Shape();
+    check_error(slanted, " is split across the sweep from face ");
+    check_error(slanted, " by an edge that slants (from (");
+    check_error(slanted, "the sweep's layers cannot follow it; merge the split faces first (FreeCAD: Part > Create a copy > Refine shape)");
+    // A box whose front is split at z = 1.3 by two edges meeting at (5, 0, 1.3): swept along x, that
+    // vertex is on a line along the sweep, and the layers meet it (a split at x = 5).
+    const std::vector<std::vector<int>> box_faces{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 10, 9, 8}, {8, 9, 10, 5, 4},
+                                                  {1, 2, 6, 5, 10}, {2, 3, 7, 6}, {3, 0, 8, 4, 7}};
+    s = swept_solid_from_shape(polyhedron({{0, 0, 0}, {10, 0, 0}, {10, 4, 0}, {0, 4, 0}, {0, 0, 3}, {10, 0, 3}, {10, 4, 3},
+                                           {0, 4, 3}, {0, 0, 1.3}, {5, 0, 1.3}, {10, 0, 1.3}},
+                                          box_faces),
+                               "split front");
+    CHECK(std::fabs(s.sweep.X()) == Approx(10.0));
+    CHECK(s.splits == std::vector<double>{0.5});
+    // With the cap a trapezoid (x faces not parallel), the sweep is along z: the vertex lies over no
+    // vertex of the bottom cap, where the cap's mesh promises no node.
+    const TopoDS_Shape off_column = polyhedron({{0, 0, 0}, {10, 0, 0}, {8, 4, 0}, {0, 4, 0}, {0, 0, 3}, {10, 0, 3}, {8, 4, 3},
+                                                {0, 4, 3}, {0, 0, 1.3}, {5, 0, 1.3}, {10, 0, 1.3}},
+                                               box_faces);
+    check_error(off_column, " at a vertex (5, 0, 1.3) over no vertex of face ");
+    check_error(off_column, "the sweep's columns of nodes cannot meet it");
     // Split along the sweep instead (a side drawn as two collinear lines), it is a sweep.
     BRepBuilderAPI_MakePolygon split;
     for (const gp_Pnt& p : {gp_Pnt(0, 0, 0), gp_Pnt(3.37, 0, 0), gp_Pnt(10, 0, 0), gp_Pnt(10, 4, 0), gp_Pnt(0, 4, 0)}) split.Add(p);
