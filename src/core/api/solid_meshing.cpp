@@ -2,6 +2,7 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Section.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepGProp.hxx>
 #include <BRep_Builder.hxx>
@@ -12,6 +13,7 @@
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <gp_Pln.hxx>
@@ -85,37 +87,56 @@ std::vector<CapEdge> cap_edges(const SweptSolid& s) {
   return out;
 }
 
-// Inputs: s, a swept solid with splits; at, a fraction of the sweep strictly between the caps and no
-// split. Output: the side faces' edges at that height (the solid cut by the cap's plane moved there,
-// OpenCASCADE's section), moved back to the bottom cap's plane, with their faces.
-std::vector<CapEdge> side_edges_at(const SweptSolid& s, double at) {
+// Inputs: s, a swept solid with splits. Output: per stretch between its splits (or a cap), the side
+// faces' edges at the stretch's middle height, moved back to the bottom cap's plane, with their
+// faces: one OpenCASCADE section of the side faces by a plane face at each middle height.
+double longest_side(const TopoDS_Shape& solid);
+
+std::vector<std::vector<CapEdge>> side_edges_by_stretch(const SweptSolid& s) {
+  const TopoDS_Face& bottom = s.faces[static_cast<size_t>(s.bottom - 1)];
   gp_Dir normal;
-  if (!planar_face_normal(s.faces[static_cast<size_t>(s.bottom - 1)], &normal)) {
-    throw std::logic_error("swept solid: the bottom cap is not planar");
+  if (!planar_face_normal(bottom, &normal)) throw std::logic_error("swept solid: the bottom cap is not planar");
+  TopExp_Explorer first(bottom, TopAbs_VERTEX);
+  const gp_Pnt origin = BRep_Tool::Pnt(TopoDS::Vertex(first.Current()));
+  std::vector<double> middles;
+  for (size_t k = 0; k <= s.splits.size(); ++k) {
+    middles.push_back(0.5 * ((k == 0 ? 0.0 : s.splits[k - 1]) + (k == s.splits.size() ? 1.0 : s.splits[k])));
   }
-  TopoDS_Vertex corner;
-  for (TopExp_Explorer it(s.faces[static_cast<size_t>(s.bottom - 1)], TopAbs_VERTEX); it.More() && corner.IsNull(); it.Next()) {
-    corner = TopoDS::Vertex(it.Current());
+  BRep_Builder builder;
+  TopoDS_Compound sides, planes;
+  builder.MakeCompound(sides);
+  builder.MakeCompound(planes);
+  for (size_t k = 0; k < s.faces.size(); ++k) {
+    if (!s.faces[k].IsNull() && static_cast<int>(k) + 1 != s.bottom && static_cast<int>(k) + 1 != s.top) builder.Add(sides, s.faces[k]);
   }
-  const gp_Pln plane(BRep_Tool::Pnt(corner).Translated(s.sweep * at), normal);
-  BRepAlgoAPI_Section section(s.solid, plane, false);
+  const double reach = 2.0 * longest_side(s.solid);
+  std::vector<TopoDS_Face> plane_faces;
+  for (double at : middles) {
+    const gp_Pln plane(origin.Translated(s.sweep * at), normal);
+    plane_faces.push_back(BRepBuilderAPI_MakeFace(plane, -reach, reach, -reach, reach).Face());
+    builder.Add(planes, plane_faces.back());
+  }
+  BRepAlgoAPI_Section section(sides, planes, false);
   section.ComputePCurveOn1(false);
   section.Approximation(false);
   section.Build();
   if (!section.IsDone()) throw std::runtime_error("OpenCASCADE cannot cut the solid across its sweep between its splits");
-  std::vector<CapEdge> out;
+  std::vector<std::vector<CapEdge>> out(middles.size());
   for (TopExp_Explorer it(section.Shape(), TopAbs_EDGE); it.More(); it.Next()) {
     const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
-    TopoDS_Shape face;
-    if (!section.HasAncestorFaceOn1(edge, face)) continue;
+    TopoDS_Shape face, plane;
+    if (!section.HasAncestorFaceOn1(edge, face) || !section.HasAncestorFaceOn2(edge, plane)) continue;
+    size_t stretch = 0;
+    while (stretch < plane_faces.size() && !plane_faces[stretch].IsSame(plane)) ++stretch;
+    if (stretch == plane_faces.size()) continue;
     CapEdge e{edge_points(edge), 0};
     for (size_t k = 0; k < s.faces.size() && e.face == 0; ++k) {
       if (!s.faces[k].IsNull() && s.faces[k].IsSame(face)) e.face = static_cast<int>(k) + 1;
     }
     for (Point3& p : e.points) {
-      for (size_t k = 0; k < 3; ++k) p[k] -= at * s.sweep.Coord(static_cast<int>(k) + 1);
+      for (size_t k = 0; k < 3; ++k) p[k] -= middles[stretch] * s.sweep.Coord(static_cast<int>(k) + 1);
     }
-    out.push_back(e);
+    out[stretch].push_back(e);
   }
   return out;
 }
@@ -274,10 +295,7 @@ SolidMeshing mesh_swept_solid(const SweptSolid& solid, const DecomposeSettings& 
   if (solid.splits.empty()) {
     stretch_edges.push_back(cap_edges(solid));
   } else {
-    std::vector<double> ends{0.0};
-    ends.insert(ends.end(), solid.splits.begin(), solid.splits.end());
-    ends.push_back(1.0);
-    for (size_t k = 0; k + 1 < ends.size(); ++k) stretch_edges.push_back(side_edges_at(solid, 0.5 * (ends[k] + ends[k + 1])));
+    stretch_edges = side_edges_by_stretch(solid);
   }
   where.side_face = [&stretch_edges](const Point3& a, const Point3& b, int stretch) {
     const Point3 m{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
