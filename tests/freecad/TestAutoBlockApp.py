@@ -1763,6 +1763,33 @@ class TestSolids(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "is split across the sweep from face .* slants .* Refine shape"):
             AutoBlock.mesh(slanted, size=1.0)
 
+    def test_a_pad_on_a_pad_meshes_with_layers_at_the_step(self):
+        """PartDesign's everyday way to a taller part: a second Pad of the same outline on the first's top,
+        unrefined (Refine is off by default), so its sides are split at the first Pad's height: the body
+        meshes with a layer of nodes there."""
+        import Sketcher  # noqa: F401
+
+        V = FreeCAD.Vector
+        body, pad = add_rectangle_pad(self.doc)
+        sketch = body.newObject("Sketcher::SketchObject", "UpperSketch")
+        sketch.Placement = FreeCAD.Placement(V(0, 0, 5), FreeCAD.Rotation())
+        corners = [V(0, 0, 0), V(40, 0, 0), V(40, 25, 0), V(0, 25, 0)]
+        for a, b in zip(corners, corners[1:] + corners[:1]):
+            sketch.addGeometry(Part.LineSegment(a, b))
+        upper = body.newObject("PartDesign::Pad", "UpperPad")
+        upper.Profile = sketch
+        upper.Length = 3.0
+        upper.Refine = False
+        self.doc.recompute()
+        self.assertEqual(len(body.Shape.Faces), 10)  # four sides, each in two
+        mesh = AutoBlock.mesh(body, size=2.0)
+        self.assertIsInstance(mesh, AutoBlock.HexMeshResult)
+        self.assertTrue(mesh.conformal)
+        self.assertAlmostEqual(mesh.volume, 40 * 25 * 8)
+        heights = sorted({round(p.z, 9) for p in mesh.nodes})
+        self.assertIn(5.0, heights)
+        self.assertEqual(len(heights), mesh.layers + 1)
+
     def test_a_box_meshes_to_hexahedra(self):
         box = self.doc.addObject("Part::Box", "Box")
         box.Length, box.Width, box.Height = 10, 4, 3

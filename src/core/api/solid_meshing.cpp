@@ -87,11 +87,11 @@ std::vector<CapEdge> cap_edges(const SweptSolid& s) {
   return out;
 }
 
+double longest_side(const TopoDS_Shape& solid);
+
 // Inputs: s, a swept solid with splits. Output: per stretch between its splits (or a cap), the side
 // faces' edges at the stretch's middle height, moved back to the bottom cap's plane, with their
 // faces: one OpenCASCADE section of the side faces by a plane face at each middle height.
-double longest_side(const TopoDS_Shape& solid);
-
 std::vector<std::vector<CapEdge>> side_edges_by_stretch(const SweptSolid& s) {
   const TopoDS_Face& bottom = s.faces[static_cast<size_t>(s.bottom - 1)];
   gp_Dir normal;
