@@ -684,16 +684,23 @@ class TestAutoBlockObject(unittest.TestCase):
         self.assertIsNotNone(self.doc.getObject(obj.Name))
 
 
-def add_rectangle_pad(doc):
-    """A PartDesign Body with a Pad of a 40 x 25 rectangle (corner at the origin), 5 high: returns (body, pad)."""
+def add_rectangle_sketch(body, name, z=0.0):
+    """A sketch in body of the 40 x 25 rectangle with a corner at (0, 0, z)."""
     import Sketcher  # noqa: F401
 
     V = FreeCAD.Vector
-    body = doc.addObject("PartDesign::Body", "Body")
-    sketch = body.newObject("Sketcher::SketchObject", "PadSketch")
+    sketch = body.newObject("Sketcher::SketchObject", name)
+    sketch.Placement = FreeCAD.Placement(V(0, 0, z), FreeCAD.Rotation())
     corners = [V(0, 0, 0), V(40, 0, 0), V(40, 25, 0), V(0, 25, 0)]
     for a, b in zip(corners, corners[1:] + corners[:1]):
         sketch.addGeometry(Part.LineSegment(a, b))
+    return sketch
+
+
+def add_rectangle_pad(doc):
+    """A PartDesign Body with a Pad of a 40 x 25 rectangle (corner at the origin), 5 high: returns (body, pad)."""
+    body = doc.addObject("PartDesign::Body", "Body")
+    sketch = add_rectangle_sketch(body, "PadSketch")
     pad = body.newObject("PartDesign::Pad", "Pad")
     pad.Profile = sketch
     pad.Length = 5.0
@@ -1767,17 +1774,9 @@ class TestSolids(unittest.TestCase):
         """PartDesign's everyday way to a taller part: a second Pad of the same outline on the first's top,
         unrefined (Refine is off by default), so its sides are split at the first Pad's height: the body
         meshes with a layer of nodes there."""
-        import Sketcher  # noqa: F401
-
-        V = FreeCAD.Vector
         body, pad = add_rectangle_pad(self.doc)
-        sketch = body.newObject("Sketcher::SketchObject", "UpperSketch")
-        sketch.Placement = FreeCAD.Placement(V(0, 0, 5), FreeCAD.Rotation())
-        corners = [V(0, 0, 0), V(40, 0, 0), V(40, 25, 0), V(0, 25, 0)]
-        for a, b in zip(corners, corners[1:] + corners[:1]):
-            sketch.addGeometry(Part.LineSegment(a, b))
         upper = body.newObject("PartDesign::Pad", "UpperPad")
-        upper.Profile = sketch
+        upper.Profile = add_rectangle_sketch(body, "UpperSketch", 5.0)
         upper.Length = 3.0
         upper.Refine = False
         self.doc.recompute()
