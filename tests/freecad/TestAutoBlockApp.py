@@ -1770,6 +1770,16 @@ class TestSolids(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "is split across the sweep from face .* slants .* Refine shape"):
             AutoBlock.mesh(slanted, size=1.0)
 
+    def test_boxes_fused_into_an_l_are_refused_with_the_remedy_and_mesh_refined(self):
+        """Two boxes fused into an L without refining split the caps too: no pair of caps as it is, a
+        ValueError that says merging the split faces makes it a sweep, and how; refined, it meshes."""
+        fused = Part.makeBox(10, 4, 3).fuse(Part.makeBox(4, 6, 3, FreeCAD.Vector(0, 4, 0)))
+        with self.assertRaisesRegex(ValueError, r"merging its faces that could be one \(11 faces into 8.*Refine shape"):
+            AutoBlock.mesh(support.add_face(self.doc, fused, "FusedL"), size=1.0)
+        mesh = AutoBlock.mesh(support.add_face(self.doc, fused.removeSplitter(), "RefinedL"), size=1.0)
+        self.assertTrue(mesh.conformal)
+        self.assertAlmostEqual(mesh.volume, 10 * 4 * 3 + 4 * 6 * 3)
+
     def test_a_pad_on_a_pad_meshes_with_layers_at_the_step(self):
         """PartDesign's everyday way to a taller part: a second Pad of the same outline on the first's top,
         unrefined (Refine is off by default), so its sides are split at the first Pad's height: the body

@@ -8,6 +8,7 @@
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
@@ -116,11 +117,16 @@ std::vector<std::vector<CapEdge>> side_edges_by_stretch(const SweptSolid& s) {
     plane_faces.push_back(BRepBuilderAPI_MakeFace(plane, -reach, reach, -reach, reach).Face());
     builder.Add(planes, plane_faces.back());
   }
+  const std::string failed = "OpenCASCADE cannot cut the solid's sides between the splits across its sweep";
   BRepAlgoAPI_Section section(sides, planes, false);
-  section.ComputePCurveOn1(false);
-  section.Approximation(false);
-  section.Build();
-  if (!section.IsDone()) throw std::runtime_error("OpenCASCADE cannot cut the solid across its sweep between its splits");
+  try {
+    section.ComputePCurveOn1(false);
+    section.Approximation(false);
+    section.Build();
+  } catch (const Standard_Failure& e) {
+    throw std::runtime_error(failed + " (" + e.DynamicType()->Name() + ")");
+  }
+  if (!section.IsDone()) throw std::runtime_error(failed);
   std::vector<std::vector<CapEdge>> out(middles.size());
   for (TopExp_Explorer it(section.Shape(), TopAbs_EDGE); it.More(); it.Next()) {
     const TopoDS_Edge& edge = TopoDS::Edge(it.Current());

@@ -10,6 +10,7 @@
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 #include <Precision.hxx>
+#include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -327,6 +328,28 @@ CapTrial try_caps(const CapFace& bottom, const CapFace& top, const std::vector<C
   return t;
 }
 
+// Inputs: solid, one that is no swept solid as it is; faces, its face count.
+// Output: "" or, when merging its faces that could be one (coplanar or co-cylindrical neighbours, as a
+// fusion without refining leaves them; OpenCASCADE's ShapeUpgrade_UnifySameDomain, as FreeCAD's Refine
+// shape) leaves fewer faces and a swept solid, a hint that says so and how.
+std::string refine_hint(const TopoDS_Solid& solid, int faces) {
+  try {
+    ShapeUpgrade_UnifySameDomain unify(solid, true, true, false);
+    unify.Build();
+    const TopoDS_Shape merged = unify.Shape();
+    const int after = count_of(merged, TopAbs_FACE);
+    if (merged.IsNull() || after >= faces) return "";
+    swept_solid_from_shape(merged, "refined");  // throws when merged it is no sweep either
+    return "; merging its faces that could be one (" + std::to_string(faces) + " faces into " + std::to_string(after) +
+           ", as boxes fused without refining leave them split) makes it a swept solid: merge them first (FreeCAD: "
+           "Part > Create a copy > Refine shape)";
+  } catch (const std::exception&) {
+    return "";
+  } catch (const Standard_Failure&) {
+    return "";
+  }
+}
+
 }  // namespace
 
 void surface_properties(const TopoDS_Shape& shape, bool splines, GProp_GProps& properties) {
@@ -427,8 +450,10 @@ SweptSolid swept_solid_from_shape(const TopoDS_Shape& shape, const std::string& 
       }
     }
     if (!best) {
-      if (failed) throw InputError(failed->why);
-      throw InputError("no two faces are parallel and opposite: a swept solid has two parallel caps");
+      // (A split across the sweep that the layers cannot follow names the remedy already.)
+      const std::string hint = failed && failed->stage == 3 ? "" : refine_hint(out.solid, numbers.Extent());
+      if (failed) throw InputError(failed->why + hint);
+      throw InputError("no two faces are parallel and opposite: a swept solid has two parallel caps" + hint);
     }
     out.bottom = best->bottom->number;
     out.top = best->top->number;

@@ -244,6 +244,22 @@ TEST_CASE("swept solids: one clear error per class, naming the face", "[solid][e
                                                box_faces);
     check_error(off_column, " at a vertex (5, 0, 1.3) over no vertex of face ");
     check_error(off_column, "the sweep's columns of nodes cannot meet it");
+  }
+  SECTION("faces split where one would do, and merged a sweep: the error says to merge them") {
+    // Two boxes fused into an L without refining: the caps are split too (two faces each), so no pair
+    // of faces is a pair of caps; merged (ShapeUpgrade_UnifySameDomain, FreeCAD's Refine shape) the
+    // solid is the L's prism.
+    const TopoDS_Shape l =
+        BRepAlgoAPI_Fuse(BRepPrimAPI_MakeBox(10, 4, 3).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(0, 4, 0), 4, 6, 3).Shape()).Shape();
+    check_error(l, "; merging its faces that could be one (11 faces into 8, as boxes fused without refining leave them "
+                   "split) makes it a swept solid: merge them first (FreeCAD: Part > Create a copy > Refine shape)");
+    // A boss on a box is no sweep merged either: no such hint.
+    const TopoDS_Shape boss =
+        BRepAlgoAPI_Fuse(BRepPrimAPI_MakeBox(10, 4, 3).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(3, 1, 3), 2, 2, 2).Shape()).Shape();
+    const std::string message = error_of(boss);
+    INFO(message);
+    CHECK_THAT(message, Contains("a swept solid's side faces run along the sweep"));
+    CHECK_THAT(message, !Contains("merging its faces"));
     // Split along the sweep instead (a side drawn as two collinear lines), it is a sweep.
     BRepBuilderAPI_MakePolygon split;
     for (const gp_Pnt& p : {gp_Pnt(0, 0, 0), gp_Pnt(3.37, 0, 0), gp_Pnt(10, 0, 0), gp_Pnt(10, 4, 0), gp_Pnt(0, 4, 0)}) split.Add(p);
