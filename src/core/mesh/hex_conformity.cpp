@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/mesh/hex_quality.h"
+#include "core/mesh/node_buckets.h"
 
 namespace autoblock {
 namespace {
@@ -102,16 +103,26 @@ HexConformity check_hex_conformity(const HexMesh& mesh, const SolidFigures& soli
   HexConformity c;
   c.solid_volume = solid_volume;
   c.solid_area = solid_area;
-  std::vector<FaceUse> uses;
-  uses.reserve(mesh.hexes.size() * 6);
+  // Grouped by their lowest node (node_buckets.h): counted first, then written in place.
+  NodeBuckets buckets(mesh.nodes.size());
+  for (const auto& hex : mesh.hexes) {
+    for (int side = 0; side < 6; ++side) {
+      const std::array<int, 4> f = hex_face_nodes(hex, side);
+      buckets.count(static_cast<size_t>(*std::min_element(f.begin(), f.end())));
+    }
+  }
+  std::vector<FaceUse> uses(buckets.close());
   for (size_t h = 0; h < mesh.hexes.size(); ++h) {
     const std::array<Point3, 8> p = mesh.corners(h);
     const double v = hex_volume(p);
     c.hex_volume += v;
     if (!(v > 0) || !(hex_quality(p).scaled_jacobian > 0)) ++c.inverted_hexes;
-    for (int side = 0; side < 6; ++side) uses.push_back(face_use(hex_face_nodes(mesh.hexes[h], side)));
+    for (int side = 0; side < 6; ++side) {
+      const FaceUse use = face_use(hex_face_nodes(mesh.hexes[h], side));
+      uses[buckets.place(static_cast<size_t>(use.key[0]))] = use;
+    }
   }
-  std::sort(uses.begin(), uses.end());
+  buckets.sort(uses, [](const FaceUse& a, const FaceUse& b) { return a < b; });
   std::vector<std::array<int, 4>> boundary;  // sorted keys of the faces used once
   for (size_t k = 0; k < uses.size();) {
     size_t end = k;

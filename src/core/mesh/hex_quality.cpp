@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/mesh/node_buckets.h"
+
 namespace autoblock {
 namespace {
 
@@ -107,8 +109,16 @@ HexMeshQuality hex_mesh_quality(const HexMesh& mesh) {
     std::uint64_t key;
     double angle;
   };
-  std::vector<EdgeUse> uses;
-  uses.reserve(mesh.hexes.size() * 12);
+  // Grouped by their lower node (node_buckets.h): counted first, then written in place.
+  NodeBuckets buckets(mesh.nodes.size());
+  for (const auto& hex : mesh.hexes) {
+    for (int a = 0; a < 8; ++a) {
+      for (int b : kNeighbours[a]) {
+        if (b > a) buckets.count(static_cast<size_t>(std::min(hex[static_cast<size_t>(a)], hex[static_cast<size_t>(b)])));
+      }
+    }
+  }
+  std::vector<EdgeUse> uses(buckets.close());
   for (size_t h = 0; h < mesh.hexes.size(); ++h) {
     const std::array<Point3, 8> p = mesh.corners(h);
     const HexQuality q = hex_quality(p);
@@ -120,13 +130,14 @@ HexMeshQuality hex_mesh_quality(const HexMesh& mesh) {
     for (int a = 0; a < 8; ++a) {
       for (int b : kNeighbours[a]) {
         if (b < a) continue;  // each of the 12 edges once
-        uses.push_back({edge_key(mesh.hexes[h][static_cast<size_t>(a)], mesh.hexes[h][static_cast<size_t>(b)]), dihedral(p, a, b)});
+        const int na = mesh.hexes[h][static_cast<size_t>(a)], nb = mesh.hexes[h][static_cast<size_t>(b)];
+        uses[buckets.place(static_cast<size_t>(std::min(na, nb)))] = {edge_key(na, nb), dihedral(p, a, b)};
       }
     }
   }
   out.mean_scaled_jacobian /= static_cast<double>(mesh.hexes.size());
   out.mean_aspect_ratio /= static_cast<double>(mesh.hexes.size());
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) { return x.key < y.key; });
+  buckets.sort(uses, [](const EdgeUse& x, const EdgeUse& y) { return x.key < y.key; });
   // The solid's faces that the boundary quads at each boundary edge lie on.
   std::vector<std::pair<std::uint64_t, int>> edge_faces;
   edge_faces.reserve(mesh.boundary.size() * 4);
