@@ -18,6 +18,8 @@ Console API (freecadcmd or FreeCAD's Python console):
     hexes = AutoBlock.mesh(solid_or_object, size=1.0)           # a swept solid: a HexMeshResult (hexahedra)
     obj = AutoBlock.make_autoblock_solid(pad)                   # prism blocks and a hexa8 FEM mesh object
     AutoBlock.cap_solid(body, "Pad.Face6")                      # the Pad when Face6 is a cap of its swept solid
+    AutoBlock.refines_to_solid(fusion)                          # a swept solid only once its split faces merge
+    AutoBlock.make_autoblock_solid(AutoBlock.refined_copy(fusion))  # then: a Part::Refine copy, meshed
     AutoBlock.stepper_of(obj)                                   # a solid object: its cap's cuts, on the cap
     AutoBlock.write_back(obj, mode="new")                       # or "replace"
     AutoBlock.stepper_of(obj).step(2)                           # the decomposition after 2 cuts, with scores
@@ -46,6 +48,8 @@ _LAZY = {
     "check_solid": ("console", "check_solid"),
     "is_solid": ("console", "is_solid"),
     "cap_solid": ("console", "cap_solid"),
+    "refines_to_solid": ("console", "refines_to_solid"),
+    "refined_copy": ("console", "refined_copy"),
     "HexMeshResult": ("console", "HexMeshResult"),
     "make_autoblock_solid": ("objects.solid_blocks", "make_autoblock_solid"),
     "is_autoblock_solid": ("objects.solid_blocks", "is_autoblock_solid"),

@@ -552,6 +552,49 @@ def check_solid(target, sub=None):
     return dict(native.load().check_solid(shape.exportBrepToString(), label))
 
 
+def refines_to_solid(target, sub=None):
+    """True when `target` (a solid, a shape or an object holding one) is no swept solid as it is but would be
+    with its faces that could be one merged (shape.removeSplitter(), FreeCAD's Part > Create a copy > Refine
+    shape): two boxes fused into an L without refining, say, whose caps are split too. False for anything
+    else (a swept solid already, no solid, or no sweep even refined)."""
+    found = solid_of(target, sub)
+    if found is None:
+        return False
+    shape, label = found
+    core = native.load()
+    try:
+        core.check_solid(shape.exportBrepToString(), label)
+        return False
+    except ValueError:
+        pass
+    refined = shape.removeSplitter()
+    if len(refined.Faces) >= len(shape.Faces):
+        return False
+    try:
+        core.check_solid(refined.exportBrepToString(), label)
+    except ValueError:
+        return False
+    return True
+
+
+def refined_copy(target):
+    """A refined copy of the document object `target` (its faces that could be one merged: FreeCAD's
+    Part::Refine feature, Part > Create a copy > Refine shape), added to its document in one undoable
+    transaction and returned; it follows `target` when that recomputes. Raises ValueError when `target` is
+    no document object with a shape."""
+    from .transactions import transaction
+
+    if not (hasattr(target, "TypeId") and hasattr(target, "Document") and hasattr(target, "Shape")):
+        raise ValueError("refined_copy takes a document object with a shape, not {}".format(type(target).__name__))
+    doc = target.Document
+    with transaction("Refined copy"):
+        copy = doc.addObject("Part::Refine", target.Name + "Refined")
+        copy.Source = target
+        copy.Label = target.Label + " (refined)"
+        doc.recompute()
+    return copy
+
+
 class HexMeshResult:
     """A hexahedral mesh of a swept solid (AutoBlock.mesh_solid, or AutoBlock.mesh of a solid).
 

@@ -26,6 +26,14 @@ def report_error(title, message):
     QtWidgets.QMessageBox.warning(main_window(), "AutoBlock: " + title, message)
 
 
+def ask_yes_no(title, message):
+    """Ask a question in a dialog; True when the user answers Yes (No is the default)."""
+    answer = QtWidgets.QMessageBox.question(main_window(), "AutoBlock: " + title, message,
+                                            QtWidgets.QMessageBox.Yes | QtWidgets.QMessageBox.No,
+                                            QtWidgets.QMessageBox.No)
+    return answer == QtWidgets.QMessageBox.Yes
+
+
 def report_exception(title, error):
     """Report an exception from a command; internal errors also get their traceback in the report view."""
     if not isinstance(error, (ValueError, NotImplementedError, native.NativeModuleMissing, TypeError)):

@@ -1780,6 +1780,39 @@ class TestSolids(unittest.TestCase):
         self.assertTrue(mesh.conformal)
         self.assertAlmostEqual(mesh.volume, 10 * 4 * 3 + 4 * 6 * 3)
 
+    def test_a_fusion_that_is_a_sweep_once_refined_gets_a_refined_copy(self):
+        """Part's Fusion leaves Refine off: two boxes fused into an L keep their caps split, so the fusion is no
+        sweep as it is; refines_to_solid says it would be refined, refined_copy adds the Part::Refine feature
+        (one undoable step) that meshes and follows the fusion."""
+        V = FreeCAD.Vector
+        fusion, long_box, short_box = support.add_l_fusion(self.doc)
+        self.assertFalse(fusion.Refine)
+        self.assertTrue(AutoBlock.is_solid(fusion))
+        with self.assertRaisesRegex(ValueError, "merging its faces that could be one"):
+            AutoBlock.check_solid(fusion)
+        self.assertTrue(AutoBlock.refines_to_solid(fusion))
+        self.assertFalse(AutoBlock.refines_to_solid(long_box))  # a sweep already
+        boss = self.doc.addObject("Part::MultiFuse", "Boss")
+        boss.Shapes = [self.doc.addObject("Part::Box", "Plate"), self.doc.addObject("Part::Box", "Knob")]
+        boss.Shapes[1].Placement.Base = V(2, 2, 10)
+        self.doc.recompute()
+        self.assertFalse(AutoBlock.refines_to_solid(boss))  # no sweep, refined or not
+        self.assertFalse(AutoBlock.refines_to_solid((fusion, "Face1")))  # a face
+        undo_count = self.doc.UndoCount
+        copy = AutoBlock.refined_copy(fusion)
+        self.assertEqual(copy.TypeId, "Part::Refine")
+        self.assertIs(copy.Source, fusion)
+        self.assertEqual(self.doc.UndoCount, undo_count + 1)
+        self.assertLess(len(copy.Shape.Faces), len(fusion.Shape.Faces))
+        mesh = AutoBlock.mesh(copy, size=1.0)
+        self.assertTrue(mesh.conformal)
+        self.assertAlmostEqual(mesh.volume, 10 * 4 * 3 + 4 * 6 * 3)
+        short_box.Width = 8  # the copy follows
+        self.doc.recompute()
+        self.assertAlmostEqual(AutoBlock.mesh(copy, size=1.0).volume, 10 * 4 * 3 + 4 * 8 * 3)
+        with self.assertRaisesRegex(ValueError, "document object"):
+            AutoBlock.refined_copy(fusion.Shape)
+
     def test_a_pad_on_a_pad_meshes_with_layers_at_the_step(self):
         """PartDesign's everyday way to a taller part: a second Pad of the same outline on the first's top,
         unrefined (Refine is off by default), so its sides are split at the first Pad's height: the body

@@ -68,12 +68,13 @@ def top_view():
 
 class DialogCatcher:
     """Records and closes modal dialogs (message boxes) so that the test goes on; screenshot: a name to save
-    the screen under when the first dialog shows."""
+    the screen under when the first dialog shows; answer: "yes" to answer questions Yes (else No)."""
 
     active = 0  # catchers open now (the watchdog leaves their dialogs to them)
 
-    def __init__(self, screenshot=None):
+    def __init__(self, screenshot=None, answer=None):
         self.screenshot = screenshot
+        self.answer = answer  # "yes": a question's Yes button is clicked; else every dialog is rejected
         self.seen = []
         self.timer = QtCore.QTimer()
         self.timer.setInterval(50)
@@ -86,7 +87,11 @@ class DialogCatcher:
             self.seen.append((widget.windowTitle(), widget.text() + "\n" + widget.informativeText()))
             if self.screenshot and len(self.seen) == 1:
                 screenshot(self.screenshot, whole_screen=True)
-            widget.reject()
+            yes = widget.button(QtWidgets.QMessageBox.Yes)
+            if self.answer == "yes" and yes is not None:
+                yes.click()
+            else:
+                widget.reject()
             self.timer.start()
 
     def __enter__(self):
@@ -411,6 +416,42 @@ class TestAutoBlockCommand(GuiTestCase):
         pump()
         self.assertEqual([o for o in self.doc.Objects if AutoBlock.is_autoblock_solid(o) or o in meshes], [])
         self.assertTrue(box.ViewObject.Visibility)
+
+    def test_a_fusion_that_is_a_sweep_once_refined_asks_and_meshes_a_refined_copy(self):
+        """Two boxes fused into an L by Part's Fusion (Refine off, its default) keep their caps split: Auto-Block
+        asks whether to mesh a refined copy. No changes nothing; Yes makes the copy (Part::Refine) and its
+        prism blocks and hexahedra, in one undoable step."""
+        fusion = support.add_l_fusion(self.doc)[0]
+        pump()
+        names = [o.Name for o in self.doc.Objects]
+        undo_count = self.doc.UndoCount
+        with DialogCatcher() as dialogs:  # No
+            self.auto_block(fusion)
+            pump(0.5)
+        self.assertEqual(len(dialogs.seen), 1)
+        self.assertIn("split faces merged", dialogs.seen[0][1])
+        self.assertEqual([o.Name for o in self.doc.Objects], names)
+        self.assertEqual(self.doc.UndoCount, undo_count)
+        with DialogCatcher(answer="yes") as dialogs:
+            self.auto_block(fusion)
+            pump(0.5)
+        self.assertEqual(len(dialogs.seen), 1)
+        copies = [o for o in self.doc.Objects if o.TypeId == "Part::Refine"]
+        self.assertEqual(len(copies), 1)
+        self.assertIs(copies[0].Source, fusion)
+        solids = [o for o in self.doc.Objects if AutoBlock.is_autoblock_solid(o)]
+        self.assertEqual(len(solids), 1)
+        self.assertIs(solids[0].Source, copies[0])
+        meshes = AutoBlock.hex_mesh_objects_of(solids[0])
+        self.assertEqual(len(meshes), 1)
+        self.assertGreater(meshes[0].FemMesh.HexaCount, 0)
+        self.assertEqual(self.doc.UndoCount, undo_count + 1)
+        self.assertFalse(fusion.ViewObject.Visibility)
+        self.assertFalse(copies[0].ViewObject.Visibility)
+        self.doc.undo()
+        pump()
+        self.assertEqual(sorted(o.Name for o in self.doc.Objects), sorted(names))
+        self.assertTrue(fusion.ViewObject.Visibility)
 
     def test_an_unsupported_face_gets_a_dialog_and_changes_nothing(self):
         sphere = self.doc.addObject("Part::Sphere", "Sphere")

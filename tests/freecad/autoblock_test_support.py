@@ -52,6 +52,20 @@ def add_face(doc, face, name="Face"):
     return obj
 
 
+def add_l_fusion(doc):
+    """Part's Fusion (Refine off, its default) of a 10 x 4 x 3 box and a 4 x 6 x 3 one on its end: an L whose
+    caps stay split where the boxes meet. Returns (fusion, long box, short box)."""
+    long_box = doc.addObject("Part::Box", "LongBox")
+    long_box.Length, long_box.Width, long_box.Height = 10, 4, 3
+    short_box = doc.addObject("Part::Box", "ShortBox")
+    short_box.Length, short_box.Width, short_box.Height = 4, 6, 3
+    short_box.Placement.Base = FreeCAD.Vector(0, 4, 0)
+    fusion = doc.addObject("Part::MultiFuse", "Fusion")
+    fusion.Shapes = [long_box, short_box]
+    doc.recompute()
+    return fusion, long_box, short_box
+
+
 def l_points(width=4.0, height=4.0, notch=2.0):
     """An L-shape's corners, counter-clockwise, in the XY plane."""
     V = FreeCAD.Vector

@@ -41,7 +41,7 @@ class AutoBlockCommand(BaseCommand):
 
     def run(self):
         from .. import console, preferences
-        from ..gui_utils import busy, echo, object_ref, report_error
+        from ..gui_utils import ask_yes_no, busy, echo, object_ref, report_error
         from ..objects.autoblock_feature import is_autoblock
         from ..objects.fem_mesh import is_autoblock_hex_mesh, is_autoblock_mesh
         from ..objects.solid_blocks import is_autoblock_solid
@@ -55,13 +55,22 @@ class AutoBlockCommand(BaseCommand):
         # shape holds a solid is a solid (split into prisms and meshed with hexahedra); so is a selected cap face
         # of a sweepable solid (console.cap_solid: the object holding it, e.g. the Pad of "Pad.Face6"), unless the
         # preferences say to mesh the face alone; any other face is a face. Several caps of one solid: one solid.
+        # A solid that is a sweep only once its split faces are merged (boxes fused into an L without refining)
+        # is a problem too, unless it is the only kind: then the user is asked whether to mesh refined copies.
         problems = []
+        refinable = []  # (object, its problem)
         solids = {}  # (object name, sub) -> the object holding the solid (whole, or a cap of it selected)
         caps_mean_solids = preferences.cap_face() == "solid"
         for obj, sub, _ in targets:
             try:
                 if console.is_solid(obj, sub):
-                    console.check_solid(obj)
+                    try:
+                        console.check_solid(obj)
+                    except ValueError as error:
+                        if not console.refines_to_solid(obj):
+                            raise
+                        refinable.append((obj, str(error)))
+                        continue
                     solids[(obj.Name, sub)] = obj
                     continue
                 holder = console.cap_solid(obj, sub) if sub and caps_mean_solids else None
@@ -72,15 +81,31 @@ class AutoBlockCommand(BaseCommand):
             except (ValueError, TypeError) as error:
                 problems.append(str(error))
         if problems:
+            problems += [problem for _, problem in refinable]
             report_error("Auto-Block", "Unsupported face{}; nothing was changed:\n\n{}".format(
                 "s" if len(problems) > 1 else "", "\n\n".join(problems)))
+            return
+        refine = list({obj.Name: obj for obj, _ in refinable}.values())
+        if refine and not ask_yes_no("Auto-Block", "{} {} no swept solid as {}, but would be with {} split faces "
+                                     "merged (as Part > Create a copy > Refine shape merges them).\n\nMesh a refined "
+                                     "copy of {}?".format(
+                                         ", ".join(obj.Label for obj in refine), "is" if len(refine) == 1 else "are",
+                                         "it is" if len(refine) == 1 else "they are",
+                                         "its" if len(refine) == 1 else "their",
+                                         "it" if len(refine) == 1 else "each")):
             return
         doc = targets[0][0].Document
         before = set(o.Name for o in doc.Objects)
         with busy(), transaction("Auto-Block"):
             echo("import AutoBlock")
             made = set()
+            for obj in refine:
+                echo("refined = AutoBlock.refined_copy({})".format(object_ref(obj)))
+                echo("AutoBlock.make_autoblock_solid(refined)")
+                echo("if refined.ViewObject is not None: refined.ViewObject.Visibility = False")
             for obj, sub, _ in targets:
+                if any(obj is r for r in refine):
+                    continue
                 solid = solids.get((obj.Name, sub))
                 if solid is not None:
                     if (solid.Document.Name, solid.Name) not in made:
