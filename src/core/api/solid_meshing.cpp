@@ -35,6 +35,7 @@
 #include "core/mesh/mesh_pipeline.h"
 #include "core/geometry/edge_curve.h"
 #include "core/geometry/occt_face.h"
+#include "core/geometry/occt_properties.h"
 
 namespace autoblock {
 namespace {
@@ -346,9 +347,16 @@ PrismBlocks swept_blocks(const SweptSolid& solid, const FaceDecomposition& decom
 }
 
 void require_conformal(const SolidMeshing& m) {
-  if (!m.conformity.conformal) {
-    throw std::runtime_error("the hexahedral mesh failed the conformity check: " + m.conformity.problem);
+  if (m.conformity.conformal) return;
+  // A solid whose faces disagree with their edges (OpenCASCADE's checker finds it invalid: a curve off its
+  // vertices, a face's curves on its surface not matching its edges) passes the sweep's checks and fails the
+  // mesh's: the input's fault, said so. (Checked only here: every solid that meshes is spared the cost.)
+  if (!occt_shape_valid(m.solid.solid)) {
+    throw InputError(m.solid.source + ": OpenCASCADE's checker finds the solid invalid (a face or an edge off its "
+                     "neighbours' geometry), and its hexahedral mesh does not match it (" + m.conformity.problem +
+                     "); repair the shape first (FreeCAD: Part > Check geometry)");
   }
+  throw std::runtime_error("the hexahedral mesh failed the conformity check: " + m.conformity.problem);
 }
 
 nlohmann::json solid_meshing_json(const std::string& input, const SolidMeshing& m) {

@@ -68,8 +68,9 @@ PrismBlocks solid_meshing_blocks(const SolidMeshing& meshing);
 // Output: the blocks (and any part left unfinished) swept into prisms sharing their faces.
 PrismBlocks swept_blocks(const SweptSolid& solid, const FaceDecomposition& decomposition);
 
-// Inputs: meshing. Throws std::runtime_error ("the hexahedral mesh failed the conformity check: ...")
-// when the independent check failed.
+// Inputs: meshing. Throws when the independent check failed: InputError ("<source>: OpenCASCADE's checker
+// finds the solid invalid ...") when BRepCheck_Analyzer finds the solid invalid (the input's fault), else
+// std::runtime_error ("the hexahedral mesh failed the conformity check: ...").
 void require_conformal(const SolidMeshing& meshing);
 
 // Inputs: input, the file name; meshing.

@@ -66,6 +66,27 @@ TEST_CASE("every hostile input is refused by the CLI with exit 2 and one line", 
   CHECK_FALSE(fs::exists(folder + "/b.brep"));
 }
 
+TEST_CASE("hostile solids are refused by the CLI's mesh with exit 2 and one line, no mesh written", "[io][hostile][cli]") {
+  // tests/data/hostile/solids: swept solids mutated (mutated-file runs on fused solids) so that a face
+  // disagrees with its edges (a plane's origin moved within it, a hole's circle moved off its cylinder):
+  // the sweep's checks pass, the mesh's fail; OpenCASCADE's checker finds them invalid. Before: exit 1,
+  // "internal: the hexahedral mesh failed the conformity check".
+  const std::string folder = test::temporary_folder("hostile-solids");
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(std::string(AUTOBLOCK_SOURCE_DIR) + "/tests/data/hostile/solids")) {
+    const std::string file = entry.path().string();
+    ++files;
+    const auto r = test::run_autoblock("mesh " + quoted(file) + " --out " + quoted(folder + "/m.msh"));
+    INFO(file << ": " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, StartsWith("error: " + file + ": OpenCASCADE's checker finds the solid invalid"));
+    CHECK_THAT(r.err, Contains("repair the shape first"));
+    CHECK(test::line_count(r.err) == 1);
+  }
+  CHECK(files == 2);
+  CHECK_FALSE(fs::exists(folder + "/m.msh"));
+}
+
 TEST_CASE("hostile BREP text is refused with an InputError, as FreeCAD's text crosses the binding", "[io][hostile]") {
   for (const std::string& file : hostile_files()) {
     const std::string text = test::slurp_file(file);
