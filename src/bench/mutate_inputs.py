@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Hostile input experiment: mutated copies of valid face files through `autoblock decompose`.
+"""Hostile input experiment: mutated copies of valid face files through `autoblock decompose` (or mesh).
 
 Usage:
   python3 src/bench/mutate_inputs.py --autoblock build/bin/autoblock --count 1000 --seed 1 \
@@ -12,6 +12,13 @@ runs `autoblock decompose FILE --policy greedy --out OUT.brep` with a timeout. M
   bytes     1-8 random bytes replaced
   truncate  the file cut at a random byte
   lines     a random line deleted or duplicated (counts no longer match)
+  shift     (only asked for, --kinds) a number of the geometry sections moved a little or a lot (times
+            1.0001 or 1.1 plus a bit, or negated): plausible numbers, the geometry no longer agreeing with
+            the topology (a plane's origin moved within it, a circle off its cylinder)
+With --mesh, each run is `autoblock mesh FILE --out OUT.msh` instead (swept solids and faces: the
+whole meshing pipeline), e.g. over fused solids (src/bench/fused_solids.py):
+  python3 src/bench/mutate_inputs.py --autoblock build/bin/autoblock --mesh --inputs '/tmp/fused/*.brep' \
+      --kinds shift,coord,number,lines --count 240 --seed 55 --timeout 120 --slow 20
 The outcome of each run is one of:
   ok        exit 0
   input     exit 2 with exactly one line "error: ..." on stderr
@@ -58,6 +65,24 @@ def replace_number(data, rng, values):
 
 
 def mutate(data, kind, rng):
+    if kind == "shift":
+        head = data.find(b"Curves")
+        tail = data.find(b"TShapes")
+        if head < 0:
+            return data
+        body = data[head:tail] if tail > head else data[head:]
+        matches = [m for m in NUMBER.finditer(body) if b"." in m.group() or m.group() not in (b"0", b"1", b"-1")]
+        matches = matches or list(NUMBER.finditer(body))
+        if not matches:
+            return data
+        m = rng.choice(matches)
+        try:
+            value = float(m.group())
+        except ValueError:
+            return data
+        moved = rng.choice([value * 1.0001 + 1e-4, value * 1.1 + 0.5, -value, value + 0.5])
+        body = body[:m.start()] + repr(moved).encode() + body[m.end():]
+        return data[:head] + body + (data[tail:] if tail > head else b"")
     if kind == "number":
         values = [b"0", b"-1", b"1", b"2", b"3", b"7", b"100", b"65536", b"2147483647", b"-2147483648",
                   b"99999999999", b"1e-300", b"0.5", b"1.5e", b"-", b"1..2", b"+", b"e5", b"3x", b"0x10"]
@@ -91,14 +116,15 @@ def mutate(data, kind, rng):
     raise ValueError(kind)
 
 
-def make_cases(sources, count, seed, work):
+def make_cases(sources, count, seed, work, kinds=None):
     """Writes the mutated files into work; returns [(i, kind, source, path)]. Same seed, same files."""
+    kinds = kinds or KINDS
     originals = {p: open(p, "rb").read() for p in sources}
     rng = random.Random(seed)
     cases = []
     for i in range(count):
         source = rng.choice(sources)
-        kind = KINDS[i % len(KINDS)]
+        kind = kinds[i % len(kinds)]
         data = mutate(originals[source], kind, rng)
         path = os.path.join(work, f"m{i:05d}_{kind}.brep")
         with open(path, "wb") as f:
@@ -122,10 +148,10 @@ def classify(returncode, stderr, timed_out):
     return "other"
 
 
-def run_one(binary, path, out, timeout, write_out):
-    command = [binary, "decompose", path, "--policy", "greedy"]
+def run_one(binary, path, out, timeout, write_out, mesh=False):
+    command = [binary, "mesh", path] if mesh else [binary, "decompose", path, "--policy", "greedy"]
     if write_out:
-        command += ["--out", out]
+        command += ["--out", out + (".msh" if mesh else "")]
     start = time.monotonic()
     process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, start_new_session=True)
     timed_out = False
@@ -152,13 +178,20 @@ def main():
     parser.add_argument("--keep", help="folder for the inputs whose outcome is internal, signal, hang or other")
     parser.add_argument("--slow", type=float, default=5.0, help="runs longer than this many seconds are listed (and kept)")
     parser.add_argument("--no-out", action="store_true", help="do not pass --out (skip cutting and writing the blocks)")
+    parser.add_argument("--mesh", action="store_true", help="run `autoblock mesh` (the mesh, .msh) instead of decompose")
+    parser.add_argument("--kinds", help="comma-separated mutations to take in turn (default: " + ",".join(KINDS) +
+                        "; also: shift)")
     args = parser.parse_args()
 
     sources = sorted(glob.glob(args.inputs))
     if not sources:
         sys.exit(f"error: no files match {args.inputs}")
     work = tempfile.mkdtemp(prefix="autoblock-mutate-")
-    cases = make_cases(sources, args.count, args.seed, work)
+    kinds = args.kinds.split(",") if args.kinds else KINDS
+    unknown = [k for k in kinds if k not in KINDS + ["shift"]]
+    if unknown:
+        sys.exit(f"error: unknown mutation {unknown[0]} (choose from {', '.join(KINDS + ['shift'])})")
+    cases = make_cases(sources, args.count, args.seed, work, kinds)
 
     table = collections.defaultdict(collections.Counter)
     slowest = (0.0, None)
@@ -168,7 +201,7 @@ def main():
     started = time.monotonic()
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
         futures = {pool.submit(run_one, args.autoblock, path, os.path.join(work, f"out{i}.brep"), args.timeout,
-                               not args.no_out): (i, kind, source, path) for i, kind, source, path in cases}
+                               not args.no_out, args.mesh): (i, kind, source, path) for i, kind, source, path in cases}
         for future in concurrent.futures.as_completed(futures):
             i, kind, source, path = futures[future]
             outcome, code, stderr, seconds = future.result()
@@ -194,7 +227,7 @@ def main():
     header = f"{'mutation':<10}" + "".join(f"{o:>10}" for o in OUTCOMES) + f"{'total':>10}"
     print(header)
     totals = collections.Counter()
-    for kind in KINDS:
+    for kind in kinds:
         row = table[kind]
         totals.update(row)
         print(f"{kind:<10}" + "".join(f"{row[o]:>10}" for o in OUTCOMES) + f"{sum(row.values()):>10}")

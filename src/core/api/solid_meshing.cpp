@@ -1,23 +1,18 @@
 #include "core/api/solid_meshing.h"
 
 #include <BRepAdaptor_Curve.hxx>
-#include <BRepAlgoAPI_Section.hxx>
-#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepGProp.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
-#include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
-#include <TopoDS_Compound.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Vertex.hxx>
-#include <gp_Pln.hxx>
 
 #include <algorithm>
 #include <chrono>
@@ -52,16 +47,10 @@ struct CapEdge {
   int face = 0;
 };
 
-// Points along edge: its ends when it is a line, else kEdgeSamples + 1 points evenly in its parameter.
-constexpr int kEdgeSamples = 96;
+// Points along edge (edge_samples, swept_solid.h).
 std::vector<Point3> edge_points(const TopoDS_Edge& edge) {
-  const BRepAdaptor_Curve curve(edge);
-  const int n = curve.GetType() == GeomAbs_Line ? 1 : kEdgeSamples;
   std::vector<Point3> points;
-  for (int i = 0; i <= n; ++i) {
-    const double u = curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n;
-    points.push_back(point_of(curve.Value(u)));
-  }
+  for (const gp_Pnt& p : edge_samples(edge)) points.push_back(point_of(p));
   return points;
 }
 
@@ -85,65 +74,6 @@ std::vector<CapEdge> cap_edges(const SweptSolid& s) {
       }
     }
     out.push_back(e);
-  }
-  return out;
-}
-
-double longest_side(const TopoDS_Shape& solid);
-
-// Inputs: s, a swept solid with splits. Output: per stretch between its splits (or a cap), the side
-// faces' edges at the stretch's middle height, moved back to the bottom cap's plane, with their
-// faces: one OpenCASCADE section of the side faces by a plane face at each middle height.
-std::vector<std::vector<CapEdge>> side_edges_by_stretch(const SweptSolid& s) {
-  const TopoDS_Face& bottom = s.faces[static_cast<size_t>(s.bottom - 1)];
-  gp_Dir normal;
-  if (!planar_face_normal(bottom, &normal)) throw std::logic_error("swept solid: the bottom cap is not planar");
-  TopExp_Explorer first(bottom, TopAbs_VERTEX);
-  const gp_Pnt origin = BRep_Tool::Pnt(TopoDS::Vertex(first.Current()));
-  std::vector<double> middles;
-  for (size_t k = 0; k <= s.splits.size(); ++k) {
-    middles.push_back(0.5 * ((k == 0 ? 0.0 : s.splits[k - 1]) + (k == s.splits.size() ? 1.0 : s.splits[k])));
-  }
-  BRep_Builder builder;
-  TopoDS_Compound sides, planes;
-  builder.MakeCompound(sides);
-  builder.MakeCompound(planes);
-  for (size_t k = 0; k < s.faces.size(); ++k) {
-    if (!s.faces[k].IsNull() && static_cast<int>(k) + 1 != s.bottom && static_cast<int>(k) + 1 != s.top) builder.Add(sides, s.faces[k]);
-  }
-  const double reach = 2.0 * longest_side(s.solid);
-  std::vector<TopoDS_Face> plane_faces;
-  for (double at : middles) {
-    const gp_Pln plane(origin.Translated(s.sweep * at), normal);
-    plane_faces.push_back(BRepBuilderAPI_MakeFace(plane, -reach, reach, -reach, reach).Face());
-    builder.Add(planes, plane_faces.back());
-  }
-  const std::string failed = "OpenCASCADE cannot cut the solid's sides between the splits across its sweep";
-  BRepAlgoAPI_Section section(sides, planes, false);
-  try {
-    section.ComputePCurveOn1(false);
-    section.Approximation(false);
-    section.Build();
-  } catch (const Standard_Failure& e) {
-    throw std::runtime_error(failed + " (" + e.DynamicType()->Name() + ")");
-  }
-  if (!section.IsDone()) throw std::runtime_error(failed);
-  std::vector<std::vector<CapEdge>> out(middles.size());
-  for (TopExp_Explorer it(section.Shape(), TopAbs_EDGE); it.More(); it.Next()) {
-    const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
-    TopoDS_Shape face, plane;
-    if (!section.HasAncestorFaceOn1(edge, face) || !section.HasAncestorFaceOn2(edge, plane)) continue;
-    size_t stretch = 0;
-    while (stretch < plane_faces.size() && !plane_faces[stretch].IsSame(plane)) ++stretch;
-    if (stretch == plane_faces.size()) continue;
-    CapEdge e{edge_points(edge), 0};
-    for (size_t k = 0; k < s.faces.size() && e.face == 0; ++k) {
-      if (!s.faces[k].IsNull() && s.faces[k].IsSame(face)) e.face = static_cast<int>(k) + 1;
-    }
-    for (Point3& p : e.points) {
-      for (size_t k = 0; k < 3; ++k) p[k] -= middles[stretch] * s.sweep.Coord(static_cast<int>(k) + 1);
-    }
-    out[stretch].push_back(e);
   }
   return out;
 }
@@ -302,7 +232,14 @@ SolidMeshing mesh_swept_solid(const SweptSolid& solid, const DecomposeSettings& 
   if (solid.splits.empty()) {
     stretch_edges.push_back(cap_edges(solid));
   } else {
-    stretch_edges = side_edges_by_stretch(solid);
+    for (const std::vector<SideEdge>& sides : side_edges_by_stretch(solid)) {
+      stretch_edges.emplace_back();
+      for (const SideEdge& e : sides) {
+        CapEdge c{{}, e.face};
+        for (const gp_Pnt& p : e.points) c.points.push_back(point_of(p));
+        stretch_edges.back().push_back(c);
+      }
+    }
   }
   where.side_face = [&stretch_edges](const Point3& a, const Point3& b, int stretch) {
     const Point3 m{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
@@ -346,15 +283,44 @@ PrismBlocks swept_blocks(const SweptSolid& solid, const FaceDecomposition& decom
   return prism_blocks(blocks, Placement{}, solid.sweep);
 }
 
+namespace {
+
+// Inputs: s. Output: "" or what is wrong with the solid itself where its mesh failed the check: OpenCASCADE's
+// checker finds it invalid (a curve off its vertices, a face's curves on its surface not matching its
+// edges), or a face's tolerance is not small against its shortest edge (within it, the face's geometry may
+// disagree with its edges and the checker still pass).
+std::string solid_defect(const SweptSolid& s) {
+  if (!occt_shape_valid(s.solid)) {
+    return "OpenCASCADE's checker finds the solid invalid (a face or an edge off its neighbours' geometry)";
+  }
+  for (size_t k = 0; k < s.faces.size(); ++k) {
+    if (s.faces[k].IsNull()) continue;
+    const double tolerance = check_finite_geometry(s.faces[k]);
+    double shortest = std::numeric_limits<double>::infinity();
+    for (TopExp_Explorer it(s.faces[k], TopAbs_EDGE); it.More(); it.Next()) {
+      if (BRep_Tool::Degenerated(TopoDS::Edge(it.Current()))) continue;
+      GProp_GProps length;
+      BRepGProp::LinearProperties(it.Current(), length);
+      shortest = std::min(shortest, length.Mass());
+    }
+    if (!(tolerance < 0.5 * shortest)) {
+      return "face " + std::to_string(k + 1) + "'s OpenCASCADE tolerance " + format_number(tolerance) +
+             " is not small against its shortest edge " + format_number(shortest) + " (it must be below half of it)";
+    }
+  }
+  return "";
+}
+
+}  // namespace
+
 void require_conformal(const SolidMeshing& m) {
   if (m.conformity.conformal) return;
-  // A solid whose faces disagree with their edges (OpenCASCADE's checker finds it invalid: a curve off its
-  // vertices, a face's curves on its surface not matching its edges) passes the sweep's checks and fails the
-  // mesh's: the input's fault, said so. (Checked only here: every solid that meshes is spared the cost.)
-  if (!occt_shape_valid(m.solid.solid)) {
-    throw InputError(m.solid.source + ": OpenCASCADE's checker finds the solid invalid (a face or an edge off its "
-                     "neighbours' geometry), and its hexahedral mesh does not match it (" + m.conformity.problem +
-                     "); repair the shape first (FreeCAD: Part > Check geometry)");
+  // A solid that passes the sweep's checks but whose own geometry is at fault fails the mesh's: the input's
+  // fault, said so. (Looked for only here: every solid that meshes is spared the cost.)
+  const std::string defect = solid_defect(m.solid);
+  if (!defect.empty()) {
+    throw InputError(m.solid.source + ": " + defect + ", and its hexahedral mesh does not match it (" +
+                     m.conformity.problem + "); repair the shape first (FreeCAD: Part > Check geometry)");
   }
   throw std::runtime_error("the hexahedral mesh failed the conformity check: " + m.conformity.problem);
 }

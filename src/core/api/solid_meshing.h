@@ -69,8 +69,10 @@ PrismBlocks solid_meshing_blocks(const SolidMeshing& meshing);
 PrismBlocks swept_blocks(const SweptSolid& solid, const FaceDecomposition& decomposition);
 
 // Inputs: meshing. Throws when the independent check failed: InputError ("<source>: OpenCASCADE's checker
-// finds the solid invalid ...") when BRepCheck_Analyzer finds the solid invalid (the input's fault), else
-// std::runtime_error ("the hexahedral mesh failed the conformity check: ...").
+// finds the solid invalid ..." or "<source>: face N's OpenCASCADE tolerance T is not small against its
+// shortest edge ...") when the solid itself is at fault (BRepCheck_Analyzer, or a face's tolerance at
+// least half its shortest edge), else std::runtime_error ("the hexahedral mesh failed the conformity
+// check: ...").
 void require_conformal(const SolidMeshing& meshing);
 
 // Inputs: input, the file name; meshing.

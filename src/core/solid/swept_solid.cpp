@@ -2,10 +2,14 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepAlgoAPI_Section.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepCheck_Analyzer.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepGProp.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
@@ -17,16 +21,20 @@
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
 #include <TopoDS_Edge.hxx>
-#include <TopoDS_Vertex.hxx>
 #include <TopoDS_Shell.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <gp_Cylinder.hxx>
 #include <gp_Dir.hxx>
+#include <gp_Pln.hxx>
 #include <gp_Pnt.hxx>
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 
 #include "core/common/error.h"
@@ -352,6 +360,14 @@ std::string refine_hint(const TopoDS_Solid& solid, int faces) {
 
 }  // namespace
 
+std::vector<gp_Pnt> edge_samples(const TopoDS_Edge& edge) {
+  const BRepAdaptor_Curve curve(edge);
+  const int n = curve.GetType() == GeomAbs_Line ? 1 : kEdgeSamples;
+  std::vector<gp_Pnt> points;
+  for (int i = 0; i <= n; ++i) points.push_back(curve.Value(curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / n));
+  return points;
+}
+
 void surface_properties(const TopoDS_Shape& shape, bool splines, GProp_GProps& properties) {
   if (splines) {
     BRepGProp::SurfaceProperties(shape, properties, kPropertiesPrecision);
@@ -366,6 +382,61 @@ void volume_properties(const TopoDS_Shape& shape, bool splines, GProp_GProps& pr
   } else {
     BRepGProp::VolumeProperties(shape, properties);
   }
+}
+
+std::vector<std::vector<SideEdge>> side_edges_by_stretch(const SweptSolid& s) {
+  const TopoDS_Face& bottom = s.faces[static_cast<size_t>(s.bottom - 1)];
+  gp_Dir normal;
+  if (!planar_face_normal(bottom, &normal)) throw std::logic_error("swept solid: the bottom cap is not planar");
+  TopExp_Explorer first(bottom, TopAbs_VERTEX);
+  const gp_Pnt origin = BRep_Tool::Pnt(TopoDS::Vertex(first.Current()));
+  std::vector<double> middles;
+  for (size_t k = 0; k <= s.splits.size(); ++k) {
+    middles.push_back(0.5 * ((k == 0 ? 0.0 : s.splits[k - 1]) + (k == s.splits.size() ? 1.0 : s.splits[k])));
+  }
+  BRep_Builder builder;
+  TopoDS_Compound sides, planes;
+  builder.MakeCompound(sides);
+  builder.MakeCompound(planes);
+  for (size_t k = 0; k < s.faces.size(); ++k) {
+    if (!s.faces[k].IsNull() && static_cast<int>(k) + 1 != s.bottom && static_cast<int>(k) + 1 != s.top) builder.Add(sides, s.faces[k]);
+  }
+  // Plane faces reaching past the solid: twice its bounding box's diagonal.
+  Bnd_Box box;
+  BRepBndLib::Add(s.solid, box);
+  const double reach = 2.0 * std::sqrt(box.SquareExtent());
+  std::vector<TopoDS_Face> plane_faces;
+  for (double at : middles) {
+    const gp_Pln plane(origin.Translated(s.sweep * at), normal);
+    plane_faces.push_back(BRepBuilderAPI_MakeFace(plane, -reach, reach, -reach, reach).Face());
+    builder.Add(planes, plane_faces.back());
+  }
+  BRepAlgoAPI_Section section(sides, planes, false);
+  section.ComputePCurveOn1(false);
+  section.Approximation(false);
+  const std::string failed = s.source + ": OpenCASCADE cannot cut the solid's sides between the splits across its sweep";
+  try {
+    section.Build();
+  } catch (const Standard_Failure& e) {
+    throw std::runtime_error(failed + " (" + e.DynamicType()->Name() + ")");
+  }
+  if (!section.IsDone()) throw std::runtime_error(failed);
+  std::vector<std::vector<SideEdge>> out(middles.size());
+  for (TopExp_Explorer it(section.Shape(), TopAbs_EDGE); it.More(); it.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+    TopoDS_Shape face, plane;
+    if (!section.HasAncestorFaceOn1(edge, face) || !section.HasAncestorFaceOn2(edge, plane)) continue;
+    size_t stretch = 0;
+    while (stretch < plane_faces.size() && !plane_faces[stretch].IsSame(plane)) ++stretch;
+    if (stretch == plane_faces.size()) continue;
+    SideEdge e{edge_samples(edge), 0};
+    for (size_t k = 0; k < s.faces.size() && e.face == 0; ++k) {
+      if (!s.faces[k].IsNull() && s.faces[k].IsSame(face)) e.face = static_cast<int>(k) + 1;
+    }
+    for (gp_Pnt& p : e.points) p.Translate(-s.sweep * middles[stretch]);
+    out[stretch].push_back(e);
+  }
+  return out;
 }
 
 bool holds_one_solid(const TopoDS_Shape& shape) {
@@ -459,6 +530,16 @@ SweptSolid swept_solid_from_shape(const TopoDS_Shape& shape, const std::string& 
     out.top = best->top->number;
     out.sweep = best->sweep;
     out.splits = best->splits;
+    if (!out.splits.empty()) {
+      // OpenCASCADE's section of the sides (side_edges_by_stretch) may never end on an invalid solid (a
+      // face's curve run a billion times round its circle): its checker first. (Here, so that the
+      // reading process meets it first too.)
+      if (!BRepCheck_Analyzer(out.solid).IsValid()) {
+        throw InputError("its sides are split across the sweep, and OpenCASCADE's checker finds the solid invalid (a "
+                         "face or an edge off its neighbours' geometry): repair the shape first (FreeCAD: Part > Check "
+                         "geometry) or merge the split faces (Part > Create a copy > Refine shape)");
+      }
+    }
   } catch (const InputError& e) {
     throw InputError(source + ": " + e.what());
   } catch (const Standard_Failure& e) {

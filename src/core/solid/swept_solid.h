@@ -10,9 +10,11 @@
 #include <vector>
 
 #include <GProp_GProps.hxx>
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Solid.hxx>
+#include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>
 
 #include "core/io/input_face.h"
@@ -30,6 +32,18 @@ constexpr double kPropertiesPrecision = 1e-9;
 // splines, to kPropertiesPrecision.
 void surface_properties(const TopoDS_Shape& shape, bool splines, GProp_GProps& properties);
 void volume_properties(const TopoDS_Shape& shape, bool splines, GProp_GProps& properties);
+
+// An edge of a side face seen at one height: points along it moved to the bottom cap's plane, and the
+// side face (its number).
+struct SideEdge {
+  std::vector<gp_Pnt> points;
+  int face = 0;
+};
+
+// Inputs: edge. Output: points along it: its ends when it is a line, else kEdgeSamples + 1 points evenly
+// in its parameter.
+constexpr int kEdgeSamples = 96;
+std::vector<gp_Pnt> edge_samples(const TopoDS_Edge& edge);
 
 struct SweptSolid {
   std::string source;              // file name or description, for messages and reports
@@ -55,9 +69,16 @@ struct SweptSolid {
 // parallel opposite faces; caps that are not translated copies of each other; a face not parallel to
 // the sweep; a side face split across the sweep where the layers cannot follow it (an edge between the
 // caps, not straight along the sweep, that slants, or with a vertex over no vertex of the bottom cap;
-// a split at one height over the cap's vertices, as boxes fused without refining leave, is in splits);
+// a split at one height over the cap's vertices, as boxes fused without refining leave, is in splits,
+// and such a solid must pass OpenCASCADE's checker before its sides are cut between the splits);
 // a cap the 2-D pipeline rejects (its message, the cap named).
 SweptSolid swept_solid_from_shape(const TopoDS_Shape& shape, const std::string& source);
+
+// Inputs: solid, with splits (swept_solid_from_shape has checked it: OpenCASCADE's checker passes it).
+// Output: per stretch between the splits (or a cap), the side faces' edges at its middle height (the side
+// faces cut there by a plane along the cap: one OpenCASCADE section for all), moved to the bottom cap's
+// plane: which face a side quad of that stretch lies on.
+std::vector<std::vector<SideEdge>> side_edges_by_stretch(const SweptSolid& solid);
 
 // Inputs: shape. Output: true when it should be meshed as a solid rather than as one face: it holds
 // exactly one solid, or no solid and a shell of more than one face.
