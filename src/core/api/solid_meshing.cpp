@@ -41,12 +41,6 @@ double since(std::chrono::steady_clock::time_point start) {
 
 Point3 point_of(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
-// An edge of the bottom cap (a line or a circular arc) and the side face that meets it.
-struct CapEdge {
-  std::vector<Point3> points;  // the edge's ends (a line), or points along it (an arc)
-  int face = 0;
-};
-
 // Points along edge (edge_samples, swept_solid.h).
 std::vector<Point3> edge_points(const TopoDS_Edge& edge) {
   std::vector<Point3> points;
@@ -55,7 +49,7 @@ std::vector<Point3> edge_points(const TopoDS_Edge& edge) {
 }
 
 // The bottom cap's edges with their side faces.
-std::vector<CapEdge> cap_edges(const SweptSolid& s) {
+std::vector<SideEdge> cap_edges(const SweptSolid& s) {
   TopTools_IndexedMapOfShape numbers;
   for (size_t k = 0; k < s.faces.size(); ++k) {
     if (!s.faces[k].IsNull()) numbers.Add(s.faces[k]);
@@ -63,10 +57,10 @@ std::vector<CapEdge> cap_edges(const SweptSolid& s) {
   TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
   TopExp::MapShapesAndUniqueAncestors(s.solid, TopAbs_EDGE, TopAbs_FACE, edge_faces);
   const TopoDS_Face& bottom = s.faces[static_cast<size_t>(s.bottom - 1)];
-  std::vector<CapEdge> out;
+  std::vector<SideEdge> out;
   for (TopExp_Explorer it(bottom, TopAbs_EDGE); it.More(); it.Next()) {
     const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
-    CapEdge e{edge_points(edge), 0};
+    SideEdge e{edge_points(edge), 0};
     for (const TopoDS_Shape& f : edge_faces.FindFromKey(edge)) {
       if (f.IsSame(bottom)) continue;
       for (size_t k = 0; k < s.faces.size(); ++k) {
@@ -228,24 +222,13 @@ SolidMeshing mesh_swept_solid(const SweptSolid& solid, const DecomposeSettings& 
   where.splits = solid.splits;
   // The side faces' edges per stretch between splits: the bottom cap's, or the solid's section in
   // the stretch's middle.
-  std::vector<std::vector<CapEdge>> stretch_edges;
-  if (solid.splits.empty()) {
-    stretch_edges.push_back(cap_edges(solid));
-  } else {
-    for (const std::vector<SideEdge>& sides : side_edges_by_stretch(solid)) {
-      stretch_edges.emplace_back();
-      for (const SideEdge& e : sides) {
-        CapEdge c{{}, e.face};
-        for (const gp_Pnt& p : e.points) c.points.push_back(point_of(p));
-        stretch_edges.back().push_back(c);
-      }
-    }
-  }
+  const std::vector<std::vector<SideEdge>> stretch_edges =
+      solid.splits.empty() ? std::vector<std::vector<SideEdge>>{cap_edges(solid)} : side_edges_by_stretch(solid);
   where.side_face = [&stretch_edges](const Point3& a, const Point3& b, int stretch) {
     const Point3 m{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
     int best = 0;
     double nearest = std::numeric_limits<double>::infinity();
-    for (const CapEdge& e : stretch_edges[static_cast<size_t>(stretch)]) {
+    for (const SideEdge& e : stretch_edges[static_cast<size_t>(stretch)]) {
       for (size_t i = 0; i + 1 < e.points.size(); ++i) {
         const double d = distance_to_segment(m, e.points[i], e.points[i + 1]);
         if (d < nearest) {

@@ -49,15 +49,14 @@ std::vector<double> layer_stations(int layers, double grading, const std::vector
   ends.push_back(1.0);
   const size_t stretches = ends.size() - 1;
   // Each stretch its share of the layers, at least one; the rest by the largest remainders.
-  std::vector<int> count(stretches, 1);
+  std::vector<int> count(stretches);
   std::vector<std::pair<double, size_t>> remainders;
-  int given = static_cast<int>(stretches);
+  int given = 0;
   for (size_t k = 0; k < stretches; ++k) {
     const double share = layers * (ends[k + 1] - ends[k]);
-    const int whole = std::max(1, static_cast<int>(std::floor(share)));
-    count[k] = whole;
-    given += whole - 1;
-    remainders.push_back({share - whole, k});  // below 0 when raised to one
+    count[k] = std::max(1, static_cast<int>(std::floor(share)));
+    given += count[k];
+    remainders.push_back({share - count[k], k});  // below 0 when raised to one
   }
   std::stable_sort(remainders.begin(), remainders.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
   for (size_t i = 0; given < layers && i < remainders.size(); ++i, ++given) ++count[remainders[i].second];

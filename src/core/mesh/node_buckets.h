@@ -5,9 +5,10 @@
 // O(records + nodes) and the buckets' small sorts rather than records x log(records): a hexahedral
 // mesh's checks sort millions of uses (12 edges and 6 faces of every hexahedron).
 //
-// Inputs:  nodes, how many nodes the records' nodes are below; count(node) once per record; then
-//          place(node) once per record, the index its record goes to.
-// Outputs: size() records' places; sort(records, less) sorts each bucket.
+// Inputs:  nodes, how many nodes the records' nodes are below; count(node) once per record; close();
+//          then place(node) once per record, the index its record goes to.
+// Outputs: close(), the number of records (the vector to place them in); sort(records, less) sorts
+//          each bucket.
 #pragma once
 
 #include <algorithm>

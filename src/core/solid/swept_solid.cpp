@@ -6,7 +6,6 @@
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
-#include <BRepCheck_Analyzer.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepGProp.hxx>
 #include <BRep_Builder.hxx>
@@ -41,6 +40,7 @@
 #include "core/common/format.h"
 #include "core/geometry/edge_curve.h"
 #include "core/geometry/occt_face.h"
+#include "core/geometry/occt_properties.h"
 
 namespace autoblock {
 namespace {
@@ -429,11 +429,14 @@ std::vector<std::vector<SideEdge>> side_edges_by_stretch(const SweptSolid& s) {
     size_t stretch = 0;
     while (stretch < plane_faces.size() && !plane_faces[stretch].IsSame(plane)) ++stretch;
     if (stretch == plane_faces.size()) continue;
-    SideEdge e{edge_samples(edge), 0};
+    SideEdge e;
+    for (gp_Pnt p : edge_samples(edge)) {
+      p.Translate(-s.sweep * middles[stretch]);
+      e.points.push_back({p.X(), p.Y(), p.Z()});
+    }
     for (size_t k = 0; k < s.faces.size() && e.face == 0; ++k) {
       if (!s.faces[k].IsNull() && s.faces[k].IsSame(face)) e.face = static_cast<int>(k) + 1;
     }
-    for (gp_Pnt& p : e.points) p.Translate(-s.sweep * middles[stretch]);
     out[stretch].push_back(e);
   }
   return out;
@@ -534,7 +537,7 @@ SweptSolid swept_solid_from_shape(const TopoDS_Shape& shape, const std::string& 
       // OpenCASCADE's section of the sides (side_edges_by_stretch) may never end on an invalid solid (a
       // face's curve run a billion times round its circle): its checker first. (Here, so that the
       // reading process meets it first too.)
-      if (!BRepCheck_Analyzer(out.solid).IsValid()) {
+      if (!occt_shape_valid(out.solid)) {
         throw InputError("its sides are split across the sweep, and OpenCASCADE's checker finds the solid invalid (a "
                          "face or an edge off its neighbours' geometry): repair the shape first (FreeCAD: Part > Check "
                          "geometry) or merge the split faces (Part > Create a copy > Refine shape)");

@@ -6,6 +6,7 @@
 // Face k of `autoblock faces`).
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -33,10 +34,10 @@ constexpr double kPropertiesPrecision = 1e-9;
 void surface_properties(const TopoDS_Shape& shape, bool splines, GProp_GProps& properties);
 void volume_properties(const TopoDS_Shape& shape, bool splines, GProp_GProps& properties);
 
-// An edge of a side face seen at one height: points along it moved to the bottom cap's plane, and the
-// side face (its number).
+// An edge of a side face seen at one height: points along it moved to the bottom cap's plane (model
+// coordinates; the bottom cap's own edges are such edges as they are), and the side face (its number).
 struct SideEdge {
-  std::vector<gp_Pnt> points;
+  std::vector<std::array<double, 3>> points;
   int face = 0;
 };
 
